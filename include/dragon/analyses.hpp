@@ -1,0 +1,43 @@
+// The contest's questions as library calls: the coiling-in table, first contact (Q2) and the
+// minimum pitch (Q3). The turnaround questions (Q4, Q5) are in turnaround.hpp.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dragon/chain.hpp"
+#include "dragon/collision.hpp"
+
+namespace dragon {
+
+// Frames at t0, t0 + dt, ..., t1 (inclusive, by index so no float drift).
+std::vector<Frame> simulate_table(const Simulation& sim, double t0, double t1, double dt);
+
+// Q2: the first moment two non-adjacent benches touch, searched over [t_from, t_to].
+struct Contact {
+    double time;
+    int bench_a, bench_b;
+    double head_radius;
+    Vec2 point;     // contact witness point
+    Frame frame;    // the whole chain at that moment
+    int steps = 0;  // clearance evaluations the search used
+};
+std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to);
+
+// Q3: smallest pitch for which the head reaches the turning-space boundary without a collision.
+struct PitchInterval {
+    double lo, hi;
+    bool feasible;
+};
+struct MinPitch {
+    double pitch;                          // the smallest feasible pitch found
+    std::vector<PitchInterval> intervals;  // alternating feasible / infeasible over the range
+    double search_lo, search_hi;
+    std::string guarantee;                 // how the search avoids stepping over a window
+};
+// Is the run to the boundary collision-free at this pitch? Returns the first contact if not.
+std::optional<Contact> contact_before_boundary(Scenario s, double pitch);
+MinPitch min_pitch(const Scenario& s, double lo, double hi);
+
+}  // namespace dragon

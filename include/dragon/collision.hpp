@@ -1,0 +1,44 @@
+// Exact collision tests between bench rectangles, and the whole-dragon clearance.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "dragon/chain.hpp"
+#include "dragon/geometry.hpp"
+
+namespace dragon {
+
+// Signed separation of two rectangles: the distance between them when apart (> 0), minus the
+// penetration depth when they overlap (< 0), along `axis` (unit, pointing from a towards b).
+// The distance is exact Euclidean distance when apart (corner-to-corner gaps included).
+struct Separation {
+    double distance;
+    Vec2 axis;
+    Vec2 point;  // a witness: the point of b nearest to a (apart) or deepest in a (overlapping)
+};
+Separation separation(const Rect& a, const Rect& b);
+
+// The smallest separation between two benches that do not share a handle.
+// Benches are numbered 1..N; bench_a < bench_b. With fewer than 3 benches there is no such pair
+// and distance is +infinity.
+struct Clearance {
+    double distance;
+    int bench_a = 0;
+    int bench_b = 0;
+    Vec2 axis;
+    Vec2 point;
+};
+
+// Broad phase: every pair of non-adjacent benches whose rectangles might be within `margin` of
+// each other (never misses one); pairs of bench numbers, first < second.
+std::vector<std::pair<int, int>> candidate_pairs(const Frame& f, double margin);
+
+// Clearance over all non-adjacent pairs, through the broad phase. Pairs farther apart than
+// `cutoff` may be reported as cutoff (only the minimum matters).
+Clearance clearance(const Frame& f, double cutoff = 1e300);
+
+// Reference: clearance by checking every pair (for tests and the broad phase's proof).
+Clearance clearance_all_pairs(const Frame& f);
+
+}  // namespace dragon

@@ -1,0 +1,74 @@
+// Paths the head travels along, parameterised by arc length in the direction of travel.
+//
+// A path is a chain of pieces (one for the plain spiral; coil-in spiral, two arcs and the
+// coil-out spiral for the turnaround). Each piece has its own natural parameter u (the polar
+// angle theta on a spiral, the angle about the centre on an arc); a Place names the piece and u,
+// so hot loops never convert to arc length and back. Arc position s grows in the direction
+// of travel; the handles of the chain sit at smaller s than the head.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "dragon/geometry.hpp"
+
+namespace dragon {
+
+struct Place {
+    int piece = 0;
+    double u = 0.0;
+};
+
+// A place with its point and unit tangent (pointing in the direction of travel).
+struct Located {
+    Place place;
+    Vec2 pos;
+    Vec2 tangent;
+};
+
+class Path {
+public:
+    virtual ~Path() = default;
+
+    virtual Located at(Place p) const = 0;
+    // Arc position of a place, and its inverse. at_arc requires s_min() <= s <= s_max().
+    virtual double arc(Place p) const = 0;
+    virtual Located at_arc(double s) const = 0;
+    virtual double s_min() const = 0;  // may be -infinity
+    virtual double s_max() const = 0;  // may be +infinity
+    // Signed curvature at a place (positive when the path turns counter-clockwise).
+    virtual double curvature(Place p) const = 0;
+
+    // The nearest place behind `from` (largest s' < s(from)) whose straight-line distance
+    // from from.pos is exactly `chord`; nullopt when the path ends first.
+    virtual std::optional<Located> behind(const Located& from, double chord) const = 0;
+};
+
+// The Archimedean spiral r = b theta, b = pitch / 2pi, travelled inward (clockwise, theta
+// decreasing) and ending at the centre. u = theta; s = -L(theta), where
+// L(theta) = (b/2) (theta sqrt(1 + theta^2) + asinh theta) is the arc length from the centre.
+class Spiral final : public Path {
+public:
+    explicit Spiral(double pitch);
+
+    double pitch() const { return pitch_; }
+    double b() const { return b_; }
+
+    Located at(Place p) const override;
+    double arc(Place p) const override;
+    Located at_arc(double s) const override;
+    double s_min() const override;
+    double s_max() const override { return 0.0; }
+    double curvature(Place p) const override;
+    std::optional<Located> behind(const Located& from, double chord) const override;
+
+    // Arc length from the centre to theta, and its inverse (safeguarded Newton).
+    double length_to(double theta) const;
+    double theta_at_length(double length) const;
+
+private:
+    double pitch_;
+    double b_;
+};
+
+}  // namespace dragon

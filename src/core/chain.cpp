@@ -1,0 +1,69 @@
+#include "dragon/chain.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "core/make_path.hpp"
+
+namespace dragon {
+
+Rect bench_rect(const BenchSpec& spec, int bench, Vec2 front, Vec2 rear) {
+    const Vec2 axis = normalized(front - rear);
+    return {0.5 * (front + rear), axis, 0.5 * spec.board_length(bench), 0.5 * spec.width};
+}
+
+void solve_chain(const Path& path, const BenchSpec& spec, double head_arc, double head_speed,
+                 Frame& out) {
+    const int n = spec.handle_count();
+    out.head_arc = head_arc;
+    out.handles.resize(static_cast<size_t>(n));
+    out.benches.resize(static_cast<size_t>(spec.bench_count));
+
+    Located cur = path.at_arc(head_arc);
+    out.handles[0] = {cur.pos, cur.tangent, head_speed, cur.place};
+    for (int i = 0; i + 1 < n; ++i) {
+        const double d = spec.link_after(i);
+        const std::optional<Located> next = path.behind(cur, d);
+        if (!next) {
+            throw InputError(fmt::format("handle {} does not fit on the path behind handle {} "
+                                         "(link {} m): the chain runs off the path's end",
+                                         i + 1, i, d));
+        }
+        // Rigid link: equal velocity components along u; both tangents point along the travel.
+        const Vec2 u = (cur.pos - next->pos) / d;
+        const double along_front = dot(cur.tangent, u);
+        const double along_rear = dot(next->tangent, u);
+        const double v = out.handles[static_cast<size_t>(i)].speed * along_front / along_rear;
+        out.handles[static_cast<size_t>(i + 1)] = {next->pos, next->tangent, v, next->place};
+        out.benches[static_cast<size_t>(i)] = bench_rect(spec, i + 1, cur.pos, next->pos);
+        cur = *next;
+    }
+}
+
+Simulation::Simulation(const Scenario& s) : scenario_(s) {
+    validate(s);
+    PathBuild built = make_path(s);
+    path_ = std::move(built.path);
+    start_arc_ = built.start_arc;
+}
+
+double Simulation::end_time() const {
+    const double smax = path_->s_max();
+    if (std::isinf(smax)) return std::numeric_limits<double>::infinity();
+    return (smax - start_arc_) / scenario_.head_speed;
+}
+
+void Simulation::frame_into(double t, Frame& out) const {
+    out.time = t;
+    solve_chain(*path_, scenario_.bench, head_arc(t), scenario_.head_speed, out);
+}
+
+Frame Simulation::frame(double t) const {
+    Frame f;
+    frame_into(t, f);
+    return f;
+}
+
+}  // namespace dragon

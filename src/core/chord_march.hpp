@@ -1,0 +1,59 @@
+// The general "nearest chord root" search along one smooth path piece.
+//
+// Given a piece P(u), a point q and a chord d, find the first u reached from u0 (moving in
+// direction dir = +1 or -1) where |P(u) - q| = d. With h(u) = |P(u) - q|^2 - d^2 < 0 at the
+// current point a and M >= |h''| wherever |P - q| <= d on the step, Taylor's bound
+//     h(a + dir*delta) <= h(a) + p delta + M delta^2 / 2,   p = dir * h'(a),
+// stays negative for every delta below the positive root delta* of the right-hand side. So the
+// march a <- a + dir*delta* can never step over a root (it only approaches the first one), and
+// near a simple root delta* tends to the Newton step, so convergence is quadratic.
+// h'' = 2 (|P'|^2 + (P - q) . P''), hence M = 2 (max |P'|^2 + d max |P''|) on the step.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "dragon/constants.hpp"
+#include "dragon/geometry.hpp"
+
+namespace dragon {
+
+struct PieceSample {
+    Vec2 p;   // P(u)
+    Vec2 du;  // P'(u)
+};
+
+// eval(u) -> PieceSample; bound(ua, ub) -> max over [min, max] of |P'|^2 and |P''| as
+// {first, second}. Precondition: u0 lies on the piece; the search stops at u_end.
+// Returns nullopt when |P(u) - q| < d all the way to u_end.
+template <class Eval, class Bound>
+std::optional<double> march_to_chord(Eval eval, Bound bound, Vec2 q, double chord, double u0,
+                                     double dir, double u_end, double max_step) {
+    const double d2 = chord * chord;
+    double a = u0;
+    for (int it = 0; it < tol::max_march; ++it) {
+        const PieceSample s = eval(a);
+        const Vec2 w = s.p - q;
+        const double h = dot(w, w) - d2;
+        if (h >= 0.0) return a;  // at (or, from a join, already past) the chord
+        const double p = dir * 2.0 * dot(w, s.du);
+        const double room = dir * (u_end - a);
+        if (room <= 0.0) return std::nullopt;
+        const double span = std::min(max_step, room);
+        const auto [d1sq, d2abs] = bound(a, a + dir * span);
+        const double m = 2.0 * (d1sq + chord * d2abs);
+        // Positive root of (m/2) x^2 + p x + h = 0, in the cancellation-free form.
+        double delta = -2.0 * h / (p + std::sqrt(p * p - 2.0 * m * h));
+        // Past the span the bound is unproven: stop there and take a fresh bound. At the end
+        // of the piece the next pass either finds h >= 0 there or runs out of room.
+        if (delta >= span) delta = span;
+        const double next = a + dir * delta;
+        if (delta <= 4.0 * std::numeric_limits<double>::epsilon() * (1.0 + std::abs(a))) return next;
+        a = next;
+    }
+    return a;
+}
+
+}  // namespace dragon

@@ -1,0 +1,106 @@
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "dragon/constants.hpp"
+#include "dragon/path.hpp"
+#include "dragon/scenario.hpp"
+#include "core/chord_march.hpp"
+
+namespace dragon {
+
+namespace {
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+constexpr double kPi = 3.141592653589793238462643383279;
+}  // namespace
+
+Spiral::Spiral(double pitch) : pitch_(pitch), b_(pitch / kTwoPi) {}
+
+double Spiral::length_to(double theta) const {
+    return 0.5 * b_ * (theta * std::sqrt(1.0 + theta * theta) + std::asinh(theta));
+}
+
+// Inverts length_to by Newton's method on L(theta) - length, L' = b sqrt(1 + theta^2) > 0.
+// L is convex and increasing, so Newton from a point right of the root stays right of it and
+// converges monotonically; start from the upper bound theta0 = sqrt(2 length / b) + 1 >= root
+// (L(theta) >= b theta^2 / 2 gives root <= sqrt(2 length / b)).
+double Spiral::theta_at_length(double length) const {
+    if (length <= 0.0) return 0.0;
+    double theta = std::sqrt(2.0 * length / b_) + 1.0;
+    for (int it = 0; it < tol::max_newton; ++it) {
+        const double f = length_to(theta) - length;
+        const double step = f / (b_ * std::sqrt(1.0 + theta * theta));
+        theta = std::max(0.0, theta - step);
+        if (std::abs(step) <= tol::arc_relative * (1.0 + theta)) break;
+    }
+    return theta;
+}
+
+Located Spiral::at(Place p) const {
+    const double th = p.u;
+    const double c = std::cos(th), s = std::sin(th);
+    const double r = b_ * th;
+    // Travel is towards decreasing theta: tangent = -dP/dtheta / |dP/dtheta|.
+    const double inv = 1.0 / std::sqrt(1.0 + th * th);
+    return {p, {r * c, r * s}, {-(c - th * s) * inv, -(s + th * c) * inv}};
+}
+
+double Spiral::arc(Place p) const { return -length_to(p.u); }
+
+Located Spiral::at_arc(double s) const { return at({0, theta_at_length(-s)}); }
+
+double Spiral::s_min() const { return -std::numeric_limits<double>::infinity(); }
+
+double Spiral::curvature(Place p) const {
+    const double th = p.u;
+    const double q = 1.0 + th * th;
+    // Clockwise travel: the path turns right, so the signed curvature is negative.
+    return -(th * th + 2.0) / (b_ * q * std::sqrt(q));
+}
+
+// The next handle out along the spiral. With phi = theta' - theta, the squared chord over b^2 is
+//   g(phi) = theta^2 + (theta + phi)^2 - 2 theta (theta + phi) cos(phi),
+//   g'(phi) = 2 [(theta + phi) - theta cos(phi) + theta (theta + phi) sin(phi)] > 0 on (0, pi],
+// so when g(pi) = (2 theta + pi)^2 >= (chord / b)^2 there is exactly one root in (0, pi]: the
+// nearest one. Safeguarded Newton on that bracket finds it. Closer to the centre the chord may
+// reach round past the far side; the general curvature-bounded march handles that case.
+std::optional<Located> Spiral::behind(const Located& from, double chord) const {
+    const double th = from.place.u;
+    const double k = chord / b_;
+    if (2.0 * th + kPi < k) {
+        const double b = b_;
+        auto eval = [b](double u) {
+            const double c = std::cos(u), s = std::sin(u);
+            return PieceSample{{b * u * c, b * u * s}, {b * (c - u * s), b * (s + u * c)}};
+        };
+        // |P'|^2 = b^2 (1 + theta^2) and |P''| = b sqrt(4 + theta^2) grow with theta.
+        auto bound = [b](double ua, double ub) {
+            const double t = std::max(ua, ub);
+            return std::pair{b * b * (1.0 + t * t), b * std::sqrt(4.0 + t * t)};
+        };
+        auto u = march_to_chord(eval, bound, from.pos, chord, th, +1.0,
+                                std::numeric_limits<double>::infinity(), 0.5);
+        if (!u) return std::nullopt;
+        return at({0, *u});
+    }
+    const double k2 = k * k;
+    double lo = 0.0, hi = kPi;
+    // Start from the circle approximation: a chord k at radius ~theta subtends 2 asin(k / 2 theta).
+    const double rad = std::sqrt(th * th + 1.0);
+    double phi = (k < 2.0 * rad) ? 2.0 * std::asin(k / (2.0 * rad)) : 0.5 * kPi;
+    for (int it = 0; it < tol::max_newton; ++it) {
+        const double t2 = th + phi;
+        const double c = std::cos(phi), s = std::sin(phi);
+        const double g = th * th + t2 * t2 - 2.0 * th * t2 * c - k2;
+        if (g < 0.0) lo = phi; else hi = phi;
+        const double dg = 2.0 * (t2 - th * c + th * t2 * s);
+        double next = phi - g / dg;
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        const double step = next - phi;
+        phi = next;
+        if (std::abs(step) <= tol::newton_step || hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * (th + kPi)) break;
+    }
+    return at({0, th + phi});
+}
+
+}  // namespace dragon
