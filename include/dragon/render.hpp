@@ -1,0 +1,174 @@
+// Drawing the dragon with Cairo. make_scene turns a simulated moment into a display list in
+// world coordinates (metres); draw() paints it onto any Cairo context. PNG, SVG and video
+// frames differ only in the surface.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <cairo.h>
+
+#include "dragon/chain.hpp"
+#include "dragon/geometry.hpp"
+
+namespace dragon {
+
+// A colour, components in [0, 1] (straight, not premultiplied).
+struct Rgba {
+    double r = 0, g = 0, b = 0, a = 1;
+};
+
+// Colours and type of a picture. The defaults are the light theme, so a Theme{} is usable
+// without any asset file.
+struct Theme {
+    std::string name = "light";
+    std::string font = "DejaVu Sans";
+    Rgba background{1, 1, 1};
+    Rgba text{0.13, 0.13, 0.15};
+    Rgba grid{0.85, 0.86, 0.88};
+    Rgba guide{0.62, 0.66, 0.72};          // the coil-in spiral
+    Rgba guide_out{0.55, 0.70, 0.62};      // the coil-out spiral (turnaround path)
+    Rgba s_curve{0.80, 0.45, 0.10};        // the two arcs of the turnaround
+    Rgba turning_space{0.35, 0.55, 0.85};  // outline of the turning-space disk
+    Rgba turning_fill{0.35, 0.55, 0.85, 0.07};
+    Rgba head{0.80, 0.16, 0.16};
+    Rgba body{0.96, 0.72, 0.30};
+    Rgba tail{0.30, 0.45, 0.75};
+    Rgba outline{0.25, 0.18, 0.10};
+    Rgba handle{0.12, 0.12, 0.14};
+    Rgba highlight{0.55, 0.30, 0.85};      // benches singled out (e.g. the broad phase's picks)
+    Rgba collision{0.90, 0.05, 0.35};      // the touching benches
+    Rgba contact{0.05, 0.05, 0.05};        // the contact point marker
+    // Colour map for speeds, low to high, evenly spaced stops (at least two).
+    std::vector<Rgba> speed_ramp{{0.27, 0.00, 0.33}, {0.23, 0.32, 0.55}, {0.13, 0.57, 0.55},
+                                 {0.37, 0.79, 0.38}, {0.99, 0.91, 0.14}};
+};
+
+// Where to find assets (themes, scenarios): `hint` if not empty, else $DRAGON_ASSETS, else the
+// install dir (<prefix>/share/benchdragon), else the source tree's assets/. Throws
+// std::runtime_error if none holds a themes/ folder.
+std::string find_asset_dir(const std::string& hint = "");
+// "light", "dark" (assets/themes/<name>.toml) or a path to a .toml file. Keys missing from the
+// file keep the light theme's values. Throws InputError for an unknown name or a bad file.
+Theme load_theme(const std::string& name_or_path, const std::string& asset_dir = "");
+
+// What part of the plane the picture shows. The view keeps the aspect ratio: the given extent
+// fits inside the image along both directions (y up, metres).
+struct Camera {
+    enum class Mode {
+        fit_dragon,   // the bounding box of all benches, plus a margin
+        fixed,        // centre and extent as given
+        follow_head,  // centred on the head front handle, extent as given
+    };
+    Mode mode = Mode::fit_dragon;
+    Vec2 centre;          // fixed mode
+    double extent = 0.0;  // fixed / follow_head: width and height of the square that must fit, m
+    double margin = 0.04; // fit_dragon: fraction of the box added on every side
+
+    static Camera fit() { return {}; }
+    static Camera at(Vec2 c, double extent_m) { return {Mode::fixed, c, extent_m}; }
+    static Camera follow(double extent_m) { return {Mode::follow_head, {}, extent_m}; }
+};
+
+// Two benches that touch and where (from first_contact / clearance).
+struct CollisionMark {
+    int bench_a = 0;  // 1..N
+    int bench_b = 0;
+    Vec2 point;
+};
+
+struct SceneOptions {
+    Camera camera;
+    Theme theme;
+    bool colour_by_speed = false;
+    // Speed range of the colour map, m/s; unset: the frame's own minimum and maximum.
+    std::optional<double> speed_min, speed_max;
+    bool show_guides = true;         // the path: spiral(s) and S-curve
+    bool show_turning_space = true;  // the turning-space circle
+    bool show_handles = true;
+    bool show_scale_bar = true;
+    bool show_colour_bar = true;     // only drawn when colouring by speed
+    // All text (annotation, scale-bar and colour-bar labels). Golden tests switch it off.
+    bool show_text = true;
+    // Top-left annotation. Unset: "t = 300.000 s   pitch = 0.55 m" from the frame and scenario;
+    // an empty string: none.
+    std::optional<std::string> annotation;
+    std::optional<CollisionMark> collision;
+    std::vector<int> highlight_benches;  // drawn in the theme's highlight colour
+};
+
+// Overlays figures add on top of the dragon (world coordinates; sizes in pixels at 800 px,
+// scaled with the image).
+struct Polyline {
+    std::vector<Vec2> points;
+    Rgba colour;
+    double width_px = 1.5;
+    bool dashed = false;
+    bool closed = false;
+};
+struct Marker {
+    Vec2 pos;
+    Rgba colour;
+    double radius_px = 4.0;
+    bool ring = false;  // an open circle instead of a dot
+};
+struct Label {
+    Vec2 pos;  // the text's left end of the baseline, offset by (dx, dy) pixels
+    std::string text;
+    Rgba colour;
+    double size_px = 13.0;
+    double dx_px = 4.0, dy_px = -4.0;
+};
+
+// A display list: everything draw() needs, already resolved (no solver calls while drawing).
+struct Scene {
+    enum class Style { head, body, tail, highlight, collision };
+    struct Bench {
+        Rect rect;
+        Style style;
+        double speed;  // mean of its two handles, m/s
+    };
+    struct Guide {
+        // Cubic Bezier segments (world): start, control 1, control 2, end; consecutive segments
+        // share their ends.
+        std::vector<Vec2> beziers;  // 1 + 3k points
+        Rgba colour;
+        double width_px = 1.0;
+        bool dashed = false;
+    };
+
+    Theme theme;
+    // The view: world box that must fit (centre, extent in x and y).
+    Vec2 view_centre;
+    double view_width = 1.0, view_height = 1.0;
+
+    std::vector<Bench> benches;  // bench k at index k-1
+    std::vector<Vec2> handles;
+    double handle_radius = 0.0275;  // m (hole radius); drawn at least ~1 px
+    std::vector<Guide> guides;
+    std::optional<double> turning_radius;  // circle about the origin, m
+    std::optional<CollisionMark> collision;
+
+    bool colour_by_speed = false;
+    double speed_min = 0.0, speed_max = 1.0;
+    bool show_handles = true, show_scale_bar = true, show_colour_bar = true, show_text = true;
+    std::string annotation;
+
+    std::vector<Polyline> polylines;
+    std::vector<Marker> markers;
+    std::vector<Label> labels;
+};
+
+Scene make_scene(const Simulation& sim, const Frame& frame, const SceneOptions& opt);
+
+// Paints the scene over the whole width_px x height_px area of `cr` (its current transform is
+// taken as device pixels), starting with an opaque background. Leaves cr's state unchanged.
+void draw(cairo_t* cr, const Scene& scene, int width_px, int height_px);
+
+// Whole files, written all-or-nothing (AtomicFile). Throw InputError for a bad size or path,
+// std::runtime_error if Cairo fails.
+void render_png(const Scene& scene, int width_px, int height_px, const std::string& path);
+void render_svg(const Scene& scene, int width_px, int height_px, const std::string& path);
+
+}  // namespace dragon
