@@ -1,0 +1,63 @@
+// Which container and codec a file name asks for, and which options each can take.
+#include <array>
+#include <cmath>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "dragon/atomic_file.hpp"
+#include "dragon/scenario.hpp"
+#include "dragon/video.hpp"
+
+namespace dragon {
+
+namespace {
+constexpr std::array<std::string_view, 10> x264_presets = {
+    "ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow", "placebo"};
+constexpr double max_fps = 240.0;
+constexpr int max_side = 8192;  // px; H.264 level limits and memory, not taste
+}  // namespace
+
+VideoFormat video_format_for(const std::string& path) {
+    const std::string ext = extension_of(path);
+    if (ext == ".mp4") return VideoFormat::mp4;
+    if (ext == ".webm") return VideoFormat::webm;
+    if (ext == ".gif") return VideoFormat::gif;
+    throw InputError(fmt::format("output '{}' has extension '{}': videos are .mp4 (H.264), .webm (VP9) or .gif",
+                                 path, ext));
+}
+
+const char* to_string(VideoFormat f) {
+    switch (f) {
+        case VideoFormat::mp4: return "mp4";
+        case VideoFormat::webm: return "webm";
+        case VideoFormat::gif: return "gif";
+    }
+    return "?";
+}
+
+void validate(const VideoOptions& opt, VideoFormat format) {
+    if (opt.width < 2 || opt.height < 2 || opt.width > max_side || opt.height > max_side)
+        throw InputError(fmt::format("video size {}x{} is not allowed: each side must be 2 to {} pixels",
+                                     opt.width, opt.height, max_side));
+    if (format != VideoFormat::gif && (opt.width % 2 != 0 || opt.height % 2 != 0))
+        throw InputError(fmt::format("video size {}x{} is not allowed for {}: yuv420p needs an even width "
+                                     "and height", opt.width, opt.height, to_string(format)));
+    if (!(opt.fps > 0.0) || !(opt.fps <= max_fps))
+        throw InputError(fmt::format("--fps {} is not allowed: use a rate above 0 and at most {}", opt.fps, max_fps));
+    if (format == VideoFormat::mp4 && (opt.crf < -1 || opt.crf > 51))
+        throw InputError(fmt::format("--crf {} is not allowed for H.264: use 0 (lossless) to 51", opt.crf));
+    if (format == VideoFormat::webm && (opt.crf < -1 || opt.crf > 63))
+        throw InputError(fmt::format("--crf {} is not allowed for VP9: use 0 to 63", opt.crf));
+    if (format == VideoFormat::mp4) {
+        bool known = false;
+        for (auto p : x264_presets) known = known || p == opt.preset;
+        if (!known)
+            throw InputError(fmt::format("--preset {} is not allowed: use one of ultrafast, superfast, veryfast, "
+                                         "faster, fast, medium, slow, slower, veryslow", opt.preset));
+    }
+    if (opt.threads < 0 || opt.threads > 64)
+        throw InputError(fmt::format("--threads {} is not allowed: use 0 (automatic) to 64", opt.threads));
+}
+
+}  // namespace dragon

@@ -1,0 +1,232 @@
+// The streaming encoder: frames in, packets straight out to the muxer.
+#include <cmath>
+#include <cstring>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
+
+extern "C" {
+#include <libavutil/imgutils.h>
+#include <libavutil/opt.h>
+}
+
+#include "dragon/atomic_file.hpp"
+#include "dragon/av_handles.hpp"
+#include "dragon/scenario.hpp"
+#include "dragon/video.hpp"
+#include "video/av_error.hpp"
+#include "video/palette.hpp"
+
+namespace dragon {
+
+namespace {
+
+struct CodecChoice {
+    const char* encoder;
+    AVPixelFormat pix_fmt;
+    int default_crf;  // -1: no crf
+};
+
+CodecChoice codec_for(VideoFormat f) {
+    switch (f) {
+        case VideoFormat::mp4: return {"libx264", AV_PIX_FMT_YUV420P, 23};
+        case VideoFormat::webm: return {"libvpx-vp9", AV_PIX_FMT_YUV420P, 32};
+        case VideoFormat::gif: return {"gif", AV_PIX_FMT_PAL8, -1};
+    }
+    throw std::logic_error("unknown video format");
+}
+
+// Encoder-private options: speed first (this runs on two cores), quality by crf.
+av::Dictionary encoder_options(VideoFormat f, const VideoOptions& opt, const CodecChoice& c) {
+    AVDictionary* d = nullptr;
+    const int crf = opt.crf >= 0 ? opt.crf : c.default_crf;
+    if (f == VideoFormat::mp4) {
+        av_dict_set(&d, "preset", opt.preset.c_str(), 0);
+        av_dict_set_int(&d, "crf", crf, 0);
+    } else if (f == VideoFormat::webm) {
+        // Realtime mode at the fastest speed: offline VP9 ("good") is ~20x slower here.
+        av_dict_set(&d, "deadline", "realtime", 0);
+        av_dict_set_int(&d, "cpu-used", 8, 0);
+        av_dict_set_int(&d, "row-mt", 1, 0);
+        av_dict_set_int(&d, "crf", crf, 0);
+    }
+    return av::Dictionary(d);
+}
+
+// Complains about the first option the encoder did not take (a typo would otherwise be silent).
+void require_all_used(const av::Dictionary& left, const char* encoder) {
+    if (const AVDictionaryEntry* e = av_dict_get(left.get(), "", nullptr, AV_DICT_IGNORE_SUFFIX))
+        throw std::runtime_error(fmt::format("encoder {} does not take option {}={}", encoder, e->key, e->value));
+}
+
+}  // namespace
+
+struct VideoWriter::Impl {
+    VideoFormat format;
+    VideoOptions opt;
+    AtomicFile file;  // declared first: destroyed last, after the muxer has closed the file
+    av::OutputFormatContext mux;
+    AVStream* stream = nullptr;
+    av::CodecContext enc;
+    av::Frame frame;
+    av::Packet packet;
+    av::Sws sws;                           // mp4, webm: ARGB32 -> yuv420p
+    video::PaletteBuilder palette_samples;  // gif
+    std::optional<video::Palette> palette;  // gif, fixed at the first frame
+    std::int64_t next_pts = 0;
+    bool finished = false;
+
+    Impl(const std::string& path, const VideoOptions& o)
+        : format(video_format_for(path)), opt((validate(o, format), o)), file(path) {
+        const CodecChoice choice = codec_for(format);
+        // The muxer by the target's name: the temporary file's name is not the user's choice.
+        const AVOutputFormat* oformat = av_guess_format(nullptr, path.c_str(), nullptr);
+        if (!oformat) throw std::runtime_error(fmt::format("no muxer for '{}'", path));
+        AVFormatContext* raw_mux = nullptr;
+        av::check(avformat_alloc_output_context2(&raw_mux, oformat, nullptr, file.temp_path().c_str()),
+                  "cannot set up the muxer");
+        mux.reset(raw_mux);
+
+        const AVCodec* codec = avcodec_find_encoder_by_name(choice.encoder);
+        if (!codec)
+            throw std::runtime_error(fmt::format("this FFmpeg has no {} encoder (needed for .{} files)",
+                                                 choice.encoder, to_string(format)));
+        enc.reset(avcodec_alloc_context3(codec));
+        if (!enc) throw std::bad_alloc();
+        const AVRational rate = av_d2q(opt.fps, 100000);
+        enc->width = opt.width;
+        enc->height = opt.height;
+        enc->pix_fmt = choice.pix_fmt;
+        enc->time_base = av_inv_q(rate);
+        enc->framerate = rate;
+        enc->thread_count = opt.threads;
+        if (format != VideoFormat::gif) {
+            enc->gop_size = std::max(1, static_cast<int>(std::lround(4.0 * opt.fps)));  // a key frame every 4 s
+            enc->bit_rate = 0;  // quality by crf alone
+            // Tag what the converter below produces: BT.709, limited range.
+            enc->colorspace = AVCOL_SPC_BT709;
+            enc->color_primaries = AVCOL_PRI_BT709;
+            enc->color_trc = AVCOL_TRC_BT709;
+            enc->color_range = AVCOL_RANGE_MPEG;
+        }
+        if (mux->oformat->flags & AVFMT_GLOBALHEADER) enc->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+        av::Dictionary codec_opts = encoder_options(format, opt, choice);
+        {
+            AVDictionary* d = codec_opts.release();
+            const int ret = avcodec_open2(enc.get(), codec, &d);
+            codec_opts.reset(d);
+            av::check(ret, fmt::format("cannot open the {} encoder", choice.encoder));
+        }
+        require_all_used(codec_opts, choice.encoder);
+
+        stream = avformat_new_stream(mux.get(), nullptr);
+        if (!stream) throw std::bad_alloc();
+        stream->time_base = enc->time_base;
+        stream->avg_frame_rate = rate;
+        av::check(avcodec_parameters_from_context(stream->codecpar, enc.get()), "cannot set the stream up");
+
+        frame.reset(av_frame_alloc());
+        packet.reset(av_packet_alloc());
+        if (!frame || !packet) throw std::bad_alloc();
+        frame->format = enc->pix_fmt;
+        frame->width = enc->width;
+        frame->height = enc->height;
+        av::check(av_frame_get_buffer(frame.get(), 0), "cannot allocate a video frame");
+
+        if (format != VideoFormat::gif) {
+            sws.reset(sws_getContext(opt.width, opt.height, AV_PIX_FMT_RGB32, opt.width, opt.height,
+                                     AV_PIX_FMT_YUV420P, SWS_BILINEAR, nullptr, nullptr, nullptr));
+            if (!sws) throw std::runtime_error("cannot set up the ARGB32 -> yuv420p converter");
+            // Full-range RGB in, limited-range BT.709 out, as tagged above.
+            const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
+            sws_setColorspaceDetails(sws.get(), bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
+        }
+
+        av::check(avio_open(&mux->pb, file.temp_path().c_str(), AVIO_FLAG_WRITE),
+                  fmt::format("cannot write '{}'", file.temp_path()));
+        AVDictionary* mux_opts = nullptr;
+        // The index at the front: browsers start playing before the download ends.
+        if (format == VideoFormat::mp4) av_dict_set(&mux_opts, "movflags", "+faststart", 0);
+        const int ret = avformat_write_header(mux.get(), &mux_opts);
+        av_dict_free(&mux_opts);
+        av::check(ret, "cannot write the video header");
+    }
+
+    void write(const std::uint8_t* argb, int stride) {
+        if (finished) throw std::logic_error("VideoWriter::write after finish");
+        av::check(av_frame_make_writable(frame.get()), "cannot reuse the video frame");
+        if (format == VideoFormat::gif) {
+            if (!palette) {
+                if (palette_samples.empty()) palette_samples.add(argb, opt.width, opt.height, stride);
+                palette = palette_samples.build();
+            }
+            palette->map(argb, opt.width, opt.height, stride, frame->data[0], frame->linesize[0]);
+            std::memcpy(frame->data[1], palette->colours.data(), 256 * sizeof(std::uint32_t));
+        } else {
+            const std::uint8_t* src[1] = {argb};
+            const int src_stride[1] = {stride};
+            sws_scale(sws.get(), src, src_stride, 0, opt.height, frame->data, frame->linesize);
+        }
+        frame->pts = next_pts++;
+        av::check(avcodec_send_frame(enc.get(), frame.get()), "cannot encode a frame");
+        drain();
+    }
+
+    // Moves every packet the encoder has ready to the muxer.
+    void drain() {
+        for (;;) {
+            const int ret = avcodec_receive_packet(enc.get(), packet.get());
+            if (ret == AVERROR(EAGAIN) || ret == AVERROR_EOF) return;
+            av::check(ret, "cannot encode a frame");
+            av_packet_rescale_ts(packet.get(), enc->time_base, stream->time_base);
+            packet->stream_index = stream->index;
+            av::check(av_interleaved_write_frame(mux.get(), packet.get()),
+                      fmt::format("cannot write '{}'", file.temp_path()));
+        }
+    }
+
+    void finish() {
+        if (finished) return;
+        if (next_pts == 0) throw std::runtime_error("a video needs at least one frame");
+        av::check(avcodec_send_frame(enc.get(), nullptr), "cannot flush the encoder");
+        drain();
+        av::check(av_write_trailer(mux.get()), fmt::format("cannot finish '{}'", file.temp_path()));
+        av::check(avio_closep(&mux->pb), fmt::format("cannot close '{}'", file.temp_path()));
+        file.commit();
+        finished = true;
+    }
+};
+
+VideoWriter::VideoWriter(const std::string& path, const VideoOptions& opt)
+    : impl_(std::make_unique<Impl>(path, opt)) {}
+
+VideoWriter::~VideoWriter() = default;
+
+VideoFormat VideoWriter::format() const { return impl_->format; }
+const VideoOptions& VideoWriter::options() const { return impl_->opt; }
+int VideoWriter::frames_written() const { return static_cast<int>(impl_->next_pts); }
+
+void VideoWriter::add_palette_sample(const std::uint8_t* argb32, int stride) {
+    if (impl_->format != VideoFormat::gif || impl_->palette) return;
+    impl_->palette_samples.add(argb32, impl_->opt.width, impl_->opt.height, stride);
+}
+
+void VideoWriter::write(const std::uint8_t* argb32, int stride) { impl_->write(argb32, stride); }
+
+void VideoWriter::write(cairo_surface_t* surface) {
+    if (cairo_surface_get_type(surface) != CAIRO_SURFACE_TYPE_IMAGE ||
+        (cairo_image_surface_get_format(surface) != CAIRO_FORMAT_ARGB32 &&
+         cairo_image_surface_get_format(surface) != CAIRO_FORMAT_RGB24))
+        throw std::logic_error("VideoWriter::write needs an ARGB32 or RGB24 image surface");
+    if (cairo_image_surface_get_width(surface) != impl_->opt.width ||
+        cairo_image_surface_get_height(surface) != impl_->opt.height)
+        throw std::logic_error("VideoWriter::write: the surface is not the video's size");
+    cairo_surface_flush(surface);
+    write(cairo_image_surface_get_data(surface), cairo_image_surface_get_stride(surface));
+}
+
+void VideoWriter::finish() { impl_->finish(); }
+
+}  // namespace dragon

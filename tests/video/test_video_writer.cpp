@@ -1,0 +1,141 @@
+// The encoder round trip: write synthetic frames, decode the file back, compare.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "dragon/scenario.hpp"
+#include "dragon/video.hpp"
+#include "video/cairo_handles.hpp"
+#include "video/decode.hpp"
+#include "video/synthetic.hpp"
+
+namespace fs = std::filesystem;
+using namespace dragon;
+
+namespace {
+
+std::string scratch(const std::string& name) {
+    const fs::path dir = fs::path(DRAGON_TEST_TMP) / "video";
+    fs::create_directories(dir);
+    const fs::path p = dir / name;
+    fs::remove(p);
+    return p.string();
+}
+
+// Leftover temporary files of the AtomicFile in the target's folder.
+int temp_files_beside(const std::string& target) {
+    int n = 0;
+    const std::string stem = "." + fs::path(target).stem().string() + ".tmp";
+    for (const auto& e : fs::directory_iterator(fs::path(target).parent_path()))
+        n += e.path().filename().string().rfind(stem, 0) == 0;
+    return n;
+}
+
+test::Rgb reference(int index, int width, int height) {
+    video::CairoSurface s(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
+    video::Cairo cr(cairo_create(s.get()));
+    test::paint_synthetic(index, cr.get(), width, height);
+    cairo_surface_flush(s.get());
+    return test::rgb_from_argb32(cairo_image_surface_get_data(s.get()), width, height,
+                                 cairo_image_surface_get_stride(s.get()));
+}
+
+struct Case {
+    const char* file;
+    const char* codec;
+    double min_psnr;  // dB
+};
+
+class RoundTrip : public ::testing::TestWithParam<Case> {};
+
+TEST_P(RoundTrip, FrameCountSizeDurationAndPicture) {
+    const Case c = GetParam();
+    const std::string path = scratch(c.file);
+    VideoOptions opt;
+    opt.width = 320;
+    opt.height = 240;
+    opt.fps = 25;
+    const int frames = 30;
+    const auto paint = [&](int i, cairo_t* cr) { test::paint_synthetic(i, cr, opt.width, opt.height); };
+    int last_done = 0;
+    const EncodeStats stats = encode_frames(path, opt, frames, paint, [&](const Progress& p) {
+        EXPECT_EQ(p.total, frames);
+        EXPECT_EQ(p.done, last_done + 1);
+        last_done = p.done;
+    });
+    EXPECT_EQ(stats.frames, frames);
+    EXPECT_EQ(last_done, frames);
+    ASSERT_TRUE(fs::exists(path));
+    EXPECT_EQ(temp_files_beside(path), 0);
+
+    const int keep = 17;
+    const test::DecodedVideo v = test::decode_video(path, keep);
+    EXPECT_EQ(v.codec, c.codec);
+    EXPECT_EQ(v.frames, frames);
+    EXPECT_EQ(v.width, opt.width);
+    EXPECT_EQ(v.height, opt.height);
+    EXPECT_NEAR(v.duration, frames / opt.fps, 0.5 / opt.fps + 0.011);  // GIF delays are centiseconds
+    const double db = test::psnr(v.kept, reference(keep, opt.width, opt.height));
+    EXPECT_GT(db, c.min_psnr) << c.file;
+    RecordProperty("psnr_db", std::to_string(db));
+    std::printf("PSNR %s %.2f dB\n", c.file, db);
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, RoundTrip,
+                         ::testing::Values(Case{"round.mp4", "h264", 30.0}, Case{"round.webm", "vp9", 30.0},
+                                           Case{"round.gif", "gif", 25.0}),
+                         [](const auto& info) { return std::string(fs::path(info.param.file).extension()).substr(1); });
+
+TEST(VideoWriter, DestroyedWithoutFinishLeavesNothing) {
+    const std::string path = scratch("unfinished.mp4");
+    {
+        VideoOptions opt;
+        opt.width = 64;
+        opt.height = 48;
+        VideoWriter w(path, opt);
+        video::CairoSurface s(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, opt.width, opt.height));
+        video::Cairo cr(cairo_create(s.get()));
+        test::paint_synthetic(0, cr.get(), opt.width, opt.height);
+        w.write(s.get());
+        EXPECT_EQ(temp_files_beside(path), 1);
+    }
+    EXPECT_FALSE(fs::exists(path));
+    EXPECT_EQ(temp_files_beside(path), 0);
+}
+
+TEST(VideoWriter, PaintErrorStopsBothThreadsAndLeavesNothing) {
+    const std::string path = scratch("paint-error.mp4");
+    VideoOptions opt;
+    opt.width = 64;
+    opt.height = 48;
+    const auto paint = [&](int i, cairo_t* cr) {
+        if (i == 7) throw std::runtime_error("boom");
+        test::paint_synthetic(i, cr, opt.width, opt.height);
+    };
+    EXPECT_THROW(encode_frames(path, opt, 20, paint), std::runtime_error);
+    EXPECT_FALSE(fs::exists(path));
+    EXPECT_EQ(temp_files_beside(path), 0);
+}
+
+TEST(VideoWriter, BadOptionsAreInputErrors) {
+    VideoOptions odd;
+    odd.width = 321;
+    EXPECT_THROW(validate(odd, VideoFormat::mp4), InputError);
+    EXPECT_NO_THROW(validate(odd, VideoFormat::gif));  // GIF has no chroma planes to halve
+    VideoOptions still;
+    still.fps = 0;
+    EXPECT_THROW(validate(still, VideoFormat::webm), InputError);
+    VideoOptions slow;
+    slow.preset = "glacial";
+    EXPECT_THROW(validate(slow, VideoFormat::mp4), InputError);
+    EXPECT_THROW(video_format_for("film.avi"), InputError);
+    EXPECT_THROW(video_format_for("film"), InputError);
+    EXPECT_EQ(video_format_for("Film.MP4"), VideoFormat::mp4);
+    EXPECT_THROW(VideoWriter(scratch("no-such-dir") + "/x/film.mp4", VideoOptions{}), InputError);
+}
+
+}  // namespace
