@@ -1,0 +1,319 @@
+// draw(): paints a Scene onto any Cairo context. Raster surfaces get one fill per style group
+// (a few path operations for the whole dragon); vector surfaces get one shape per bench so an
+// SVG stays editable bench by bench.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "dragon/render.hpp"
+#include "render/paint.hpp"
+
+namespace dragon {
+
+namespace {
+
+using render::set_colour;
+
+// World (metres, y up) to device pixels (y down), aspect ratio kept.
+struct View {
+    double cx, cy, scale, ox, oy;
+    Vec2 px(Vec2 p) const { return {ox + (p.x - cx) * scale, oy - (p.y - cy) * scale}; }
+};
+
+// Space kept free on the right for the colour bar, in units of u.
+constexpr double colour_bar_room = 110.0;
+
+View make_view(const Scene& s, double w, double h, double right_room) {
+    const double avail = std::max(1.0, w - right_room);
+    const double scale = std::min(avail / s.view_width, h / s.view_height);
+    return {s.view_centre.x, s.view_centre.y, scale, 0.5 * avail, 0.5 * h};
+}
+
+void rect_path(cairo_t* cr, const View& v, const Rect& r) {
+    const Corners c = corners(r);
+    Vec2 p = v.px(c.p[0]);
+    cairo_move_to(cr, p.x, p.y);
+    for (int i = 1; i < 4; ++i) {
+        p = v.px(c.p[i]);
+        cairo_line_to(cr, p.x, p.y);
+    }
+    cairo_close_path(cr);
+}
+
+void circle_path(cairo_t* cr, Vec2 p, double r) {
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, p.x, p.y, r, 0, 2 * std::numbers::pi);
+}
+
+void set_dash(cairo_t* cr, bool dashed, double u) {
+    if (dashed) {
+        const double d[2] = {6 * u, 4 * u};
+        cairo_set_dash(cr, d, 2, 0);
+    } else {
+        cairo_set_dash(cr, nullptr, 0, 0);
+    }
+}
+
+Rgba style_colour(const Scene& s, const Scene::Bench& b, int speed_bins) {
+    switch (b.style) {
+    case Scene::Style::highlight: return s.theme.highlight;
+    case Scene::Style::collision: return s.theme.collision;
+    default: break;
+    }
+    if (s.colour_by_speed) {
+        double t = (b.speed - s.speed_min) / (s.speed_max - s.speed_min);
+        t = std::clamp(t, 0.0, 1.0);
+        if (speed_bins > 0) t = (std::floor(t * (speed_bins - 1) + 0.5)) / (speed_bins - 1);
+        return render::ramp_colour(s.theme.speed_ramp, t);
+    }
+    switch (b.style) {
+    case Scene::Style::head: return s.theme.head;
+    case Scene::Style::tail: return s.theme.tail;
+    default: return s.theme.body;
+    }
+}
+
+void draw_turning_space(cairo_t* cr, const Scene& s, const View& v, double u) {
+    if (!s.turning_radius) return;
+    const Vec2 c = v.px({0, 0});
+    const double r = *s.turning_radius * v.scale;
+    circle_path(cr, c, r);
+    set_colour(cr, s.theme.turning_fill);
+    cairo_fill_preserve(cr);
+    set_colour(cr, s.theme.turning_space);
+    cairo_set_line_width(cr, 1.5 * u);
+    set_dash(cr, true, u);
+    cairo_stroke(cr);
+    set_dash(cr, false, u);
+}
+
+void draw_guides(cairo_t* cr, const Scene& s, const View& v, double u) {
+    for (const auto& g : s.guides) {
+        if (g.beziers.size() < 4) continue;
+        Vec2 p = v.px(g.beziers[0]);
+        cairo_move_to(cr, p.x, p.y);
+        for (std::size_t i = 1; i + 2 < g.beziers.size(); i += 3) {
+            const Vec2 a = v.px(g.beziers[i]), b = v.px(g.beziers[i + 1]), c = v.px(g.beziers[i + 2]);
+            cairo_curve_to(cr, a.x, a.y, b.x, b.y, c.x, c.y);
+        }
+        set_colour(cr, g.colour);
+        cairo_set_line_width(cr, g.width_px * u);
+        set_dash(cr, g.dashed, u);
+        cairo_stroke(cr);
+    }
+    set_dash(cr, false, u);
+}
+
+void draw_benches(cairo_t* cr, const Scene& s, const View& v, double u, bool per_shape) {
+    if (s.benches.empty()) return;
+    const double bench_px = 2 * s.benches.front().rect.half_width * v.scale;
+    const double outline_px = std::clamp(0.15 * bench_px, 0.25 * u, 1.0 * u);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
+    cairo_set_line_width(cr, outline_px);
+
+    if (per_shape) {
+        for (const auto& b : s.benches) {
+            rect_path(cr, v, b.rect);
+            set_colour(cr, style_colour(s, b, 0));
+            cairo_fill_preserve(cr);
+            set_colour(cr, s.theme.outline);
+            cairo_stroke(cr);
+        }
+    } else {
+        // Group benches by colour: a few fills instead of one per bench. Speed colours are
+        // quantised to 64 levels, finer than the eye tells apart on a colour map.
+        constexpr int bins = 64;
+        std::vector<std::pair<std::array<double, 4>, int>> keyed;
+        keyed.reserve(s.benches.size());
+        for (std::size_t i = 0; i < s.benches.size(); ++i) {
+            const Rgba c = style_colour(s, s.benches[i], bins);
+            keyed.push_back({{c.r, c.g, c.b, c.a}, static_cast<int>(i)});
+        }
+        std::stable_sort(keyed.begin(), keyed.end(),
+                         [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (std::size_t i = 0; i < keyed.size();) {
+            std::size_t j = i;
+            for (; j < keyed.size() && keyed[j].first == keyed[i].first; ++j)
+                rect_path(cr, v, s.benches[keyed[j].second].rect);
+            const auto& c = keyed[i].first;
+            cairo_set_source_rgba(cr, c[0], c[1], c[2], c[3]);
+            cairo_fill(cr);
+            i = j;
+        }
+        for (const auto& b : s.benches) rect_path(cr, v, b.rect);
+        set_colour(cr, s.theme.outline);
+        cairo_stroke(cr);
+    }
+    // Touching and highlighted benches drawn again on top: they must never hide under a
+    // neighbour's outline.
+    for (const auto& b : s.benches) {
+        if (b.style != Scene::Style::collision && b.style != Scene::Style::highlight) continue;
+        rect_path(cr, v, b.rect);
+        set_colour(cr, style_colour(s, b, 0));
+        cairo_fill_preserve(cr);
+        set_colour(cr, s.theme.outline);
+        cairo_stroke(cr);
+    }
+    if (s.colour_by_speed) {  // the head stays recognisable under the colour map
+        rect_path(cr, v, s.benches.front().rect);
+        set_colour(cr, s.theme.head);
+        cairo_set_line_width(cr, 2 * outline_px);
+        cairo_stroke(cr);
+    }
+}
+
+// One path for all handles, in every surface: they are markers, not objects to edit.
+void draw_handles(cairo_t* cr, const Scene& s, const View& v, double u) {
+    if (!s.show_handles || s.handles.empty()) return;
+    const double bench_px = s.benches.empty() ? 4 * u : 2 * s.benches.front().rect.half_width * v.scale;
+    const double r = std::min(std::max(s.handle_radius * v.scale, 1.1 * u), 0.3 * bench_px);
+    set_colour(cr, s.theme.handle);
+    for (Vec2 h : s.handles) circle_path(cr, v.px(h), r);
+    cairo_fill(cr);
+}
+
+void draw_marker(cairo_t* cr, const Marker& m, Vec2 p, double u) {
+    set_colour(cr, m.colour);
+    circle_path(cr, p, m.radius_px * u);
+    if (m.ring) {
+        cairo_set_line_width(cr, 1.5 * u);
+        cairo_stroke(cr);
+    } else {
+        cairo_fill(cr);
+    }
+}
+
+void draw_collision(cairo_t* cr, const Scene& s, const View& v, double u) {
+    if (!s.collision) return;
+    const Vec2 p = v.px(s.collision->point);
+    draw_marker(cr, {s.collision->point, s.theme.contact, 9.0, true}, p, u);
+    draw_marker(cr, {s.collision->point, s.theme.contact, 2.2, false}, p, u);
+}
+
+void draw_overlays(cairo_t* cr, const Scene& s, const View& v, double u) {
+    for (const auto& pl : s.polylines) {
+        if (pl.points.empty()) continue;
+        for (std::size_t i = 0; i < pl.points.size(); ++i) {
+            const Vec2 p = v.px(pl.points[i]);
+            if (i == 0) cairo_move_to(cr, p.x, p.y);
+            else cairo_line_to(cr, p.x, p.y);
+        }
+        if (pl.closed) cairo_close_path(cr);
+        set_colour(cr, pl.colour);
+        cairo_set_line_width(cr, pl.width_px * u);
+        set_dash(cr, pl.dashed, u);
+        cairo_stroke(cr);
+    }
+    set_dash(cr, false, u);
+    for (const auto& m : s.markers) draw_marker(cr, m, v.px(m.pos), u);
+    if (!s.show_text) return;
+    for (const auto& l : s.labels) {
+        const Vec2 p = v.px(l.pos);
+        set_colour(cr, l.colour);
+        render::text(cr, s.theme.font, l.size_px * u, p.x + l.dx_px * u, p.y + l.dy_px * u, l.text);
+    }
+}
+
+// A backdrop behind screen-space text so it stays readable over the drawing.
+void backdrop(cairo_t* cr, const Scene& s, double x, double y, double w, double h) {
+    Rgba bg = s.theme.background;
+    bg.a = 0.82;
+    set_colour(cr, bg);
+    cairo_rectangle(cr, x, y, w, h);
+    cairo_fill(cr);
+}
+
+void draw_scale_bar(cairo_t* cr, const Scene& s, const View& v, double u, double h) {
+    if (!s.show_scale_bar) return;
+    const double metres = render::nice_floor(0.2 * s.view_width);
+    const double len = metres * v.scale;
+    const double x0 = 16 * u, y0 = h - 16 * u, tick = 5 * u;
+    backdrop(cr, s, x0 - 6 * u, y0 - (s.show_text ? 26 : 12) * u, len + 12 * u, (s.show_text ? 32 : 18) * u);
+    set_colour(cr, s.theme.text);
+    cairo_set_line_width(cr, 2 * u);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_SQUARE);
+    cairo_move_to(cr, x0, y0 - tick);
+    cairo_line_to(cr, x0, y0);
+    cairo_line_to(cr, x0 + len, y0);
+    cairo_line_to(cr, x0 + len, y0 - tick);
+    cairo_stroke(cr);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+    if (s.show_text)
+        render::text(cr, s.theme.font, 13 * u, x0 + 0.5 * len, y0 - 9 * u,
+                     render::format_tick(metres, metres < 1 ? 2 : 0) + " m", 0.5);
+}
+
+void draw_colour_bar(cairo_t* cr, const Scene& s, double u, double w, double h) {
+    if (!s.colour_by_speed || !s.show_colour_bar) return;
+    const double bar_w = 16 * u, x = w - colour_bar_room * u + 18 * u;
+    const double y0 = 0.18 * h, y1 = 0.82 * h;  // y0 top (fast), y1 bottom (slow)
+    cairo_pattern_t* grad = cairo_pattern_create_linear(0, y1, 0, y0);
+    const auto& stops = s.theme.speed_ramp;
+    for (std::size_t i = 0; i < stops.size(); ++i) {
+        const double t = stops.size() > 1 ? double(i) / double(stops.size() - 1) : 0.0;
+        cairo_pattern_add_color_stop_rgba(grad, t, stops[i].r, stops[i].g, stops[i].b, stops[i].a);
+    }
+    cairo_rectangle(cr, x, y0, bar_w, y1 - y0);
+    cairo_set_source(cr, grad);
+    cairo_fill_preserve(cr);
+    cairo_pattern_destroy(grad);
+    set_colour(cr, s.theme.text);
+    cairo_set_line_width(cr, 1 * u);
+    cairo_stroke(cr);
+    if (!s.show_text) return;
+    const auto ticks = render::nice_ticks(s.speed_min, s.speed_max, 5);
+    for (double t : ticks.values) {
+        const double y = y1 - (t - s.speed_min) / (s.speed_max - s.speed_min) * (y1 - y0);
+        cairo_move_to(cr, x + bar_w, y);
+        cairo_line_to(cr, x + bar_w + 4 * u, y);
+        cairo_stroke(cr);
+        render::text(cr, s.theme.font, 11 * u, x + bar_w + 6 * u, y, render::format_tick(t, ticks.decimals),
+                     0.0, 0.5);
+    }
+    render::text(cr, s.theme.font, 12 * u, x + 0.5 * bar_w, y0 - 12 * u, "speed (m/s)", 0.5);
+}
+
+void draw_annotation(cairo_t* cr, const Scene& s, double u) {
+    if (!s.show_text || s.annotation.empty()) return;
+    const double size = 15 * u;
+    const double tw = render::text_width(cr, s.theme.font, size, s.annotation);
+    backdrop(cr, s, 8 * u, 8 * u, tw + 16 * u, size + 14 * u);
+    set_colour(cr, s.theme.text);
+    render::text(cr, s.theme.font, size, 16 * u, 15 * u + 0.5 * size, s.annotation, 0.0, 0.5);
+}
+
+}  // namespace
+
+void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
+    const double w = width_px, h = height_px;
+    // Sizes are given for an 800 px picture and scale with the shorter side, so a 4K frame
+    // looks like a large 800 px one rather than a thin sketch.
+    const double u = std::max(0.25, std::min(w, h) / 800.0);
+    cairo_save(cr);
+    cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
+    set_colour(cr, {s.theme.background.r, s.theme.background.g, s.theme.background.b, 1.0});
+    cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
+    cairo_paint(cr);
+    cairo_set_operator(cr, CAIRO_OPERATOR_OVER);
+    cairo_new_path(cr);
+
+    const bool per_shape = cairo_surface_get_type(cairo_get_target(cr)) != CAIRO_SURFACE_TYPE_IMAGE;
+    const double right = (s.colour_by_speed && s.show_colour_bar) ? colour_bar_room * u : 0.0;
+    const View v = make_view(s, w, h, right);
+
+    draw_turning_space(cr, s, v, u);
+    draw_guides(cr, s, v, u);
+    draw_benches(cr, s, v, u, per_shape);
+    draw_handles(cr, s, v, u);
+    draw_collision(cr, s, v, u);
+    draw_overlays(cr, s, v, u);
+    draw_scale_bar(cr, s, v, u, h);
+    draw_colour_bar(cr, s, u, w, h);
+    draw_annotation(cr, s, u);
+    cairo_restore(cr);
+}
+
+}  // namespace dragon

@@ -1,0 +1,60 @@
+// Whole-file outputs: the same draw() onto an image surface (PNG) or a vector surface (SVG).
+#include <cairo-svg.h>
+#include <fmt/format.h>
+
+#include "dragon/atomic_file.hpp"
+#include "dragon/cairo_handles.hpp"
+#include "dragon/render.hpp"
+#include "dragon/scenario.hpp"
+
+namespace dragon {
+
+namespace {
+
+void check_size(int w, int h) {
+    // 16K on a side is far beyond any screen and keeps an ARGB32 surface under 1 GiB.
+    constexpr int max_side = 16384;
+    if (w < 16 || h < 16 || w > max_side || h > max_side)
+        throw InputError(fmt::format("image size {} x {} px is not allowed: each side must be 16..{}",
+                                     w, h, max_side));
+}
+
+void check(cairo_status_t st, const char* what) {
+    if (st != CAIRO_STATUS_SUCCESS)
+        throw std::runtime_error(fmt::format("{}: {}", what, cairo_status_to_string(st)));
+}
+
+}  // namespace
+
+void render_png(const Scene& scene, int w, int h, const std::string& path) {
+    check_size(w, h);
+    AtomicFile out(path);
+    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h));
+    check(cairo_surface_status(surface.get()), "creating the image surface");
+    {
+        cairo::Context cr = cairo::make_context(surface.get());
+        draw(cr.get(), scene, w, h);
+        check(cairo_status(cr.get()), "drawing");
+    }
+    check(cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()), "writing the PNG");
+    out.commit();
+}
+
+void render_svg(const Scene& scene, int w, int h, const std::string& path) {
+    check_size(w, h);
+    AtomicFile out(path);
+    {
+        // SVG user units are points; one pixel of the layout is one unit.
+        cairo::Surface surface(cairo_svg_surface_create(out.temp_path().c_str(), w, h));
+        check(cairo_surface_status(surface.get()), "creating the SVG surface");
+        cairo::Context cr = cairo::make_context(surface.get());
+        draw(cr.get(), scene, w, h);
+        check(cairo_status(cr.get()), "drawing");
+        cr.reset();
+        cairo_surface_finish(surface.get());  // writes the file
+        check(cairo_surface_status(surface.get()), "writing the SVG");
+    }
+    out.commit();
+}
+
+}  // namespace dragon

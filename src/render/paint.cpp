@@ -1,0 +1,83 @@
+#include "render/paint.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace dragon::render {
+
+Rgba ramp_colour(const std::vector<Rgba>& stops, double t) {
+    if (stops.empty()) return {};
+    if (stops.size() == 1 || !(t > 0)) return stops.front();
+    if (t >= 1) return stops.back();
+    const double x = t * static_cast<double>(stops.size() - 1);
+    const auto i = static_cast<std::size_t>(x);
+    const double f = x - static_cast<double>(i);
+    const Rgba& a = stops[i];
+    const Rgba& b = stops[std::min(i + 1, stops.size() - 1)];
+    return {a.r + f * (b.r - a.r), a.g + f * (b.g - a.g), a.b + f * (b.b - a.b), a.a + f * (b.a - a.a)};
+}
+
+namespace {
+void select_font(cairo_t* cr, const std::string& font, double size_px, bool bold) {
+    cairo_select_font_face(cr, font.c_str(), CAIRO_FONT_SLANT_NORMAL,
+                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, size_px);
+}
+}  // namespace
+
+void text(cairo_t* cr, const std::string& font, double size_px, double x, double y,
+          const std::string& s, double align, double valign, bool bold) {
+    if (s.empty()) return;
+    select_font(cr, font, size_px, bold);
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, s.c_str(), &e);
+    // Cap height of DejaVu Sans is 0.73 em; aligning on it keeps a row of labels level
+    // whatever letters they hold.
+    const double cap = 0.73 * size_px;
+    cairo_move_to(cr, x - align * e.x_advance, y + valign * cap);
+    cairo_show_text(cr, s.c_str());
+    cairo_new_path(cr);
+}
+
+double text_width(cairo_t* cr, const std::string& font, double size_px, const std::string& s, bool bold) {
+    select_font(cr, font, size_px, bold);
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, s.c_str(), &e);
+    return e.x_advance;
+}
+
+double nice_floor(double x) {
+    const double p = std::pow(10.0, std::floor(std::log10(x)));
+    const double m = x / p;
+    return (m >= 5 ? 5 : m >= 2 ? 2 : 1) * p;
+}
+
+Ticks nice_ticks(double lo, double hi, int target) {
+    Ticks t;
+    if (!(hi > lo)) hi = lo + 1;
+    const double raw = (hi - lo) / std::max(target, 1);
+    const double p = std::pow(10.0, std::floor(std::log10(raw)));
+    const double m = raw / p;
+    t.step = (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
+    t.decimals = std::max(0, -static_cast<int>(std::floor(std::log10(t.step) + 1e-9)));
+    const double first = std::ceil(lo / t.step - 1e-9);
+    for (double k = first;; k += 1) {
+        const double v = k * t.step;
+        if (v > hi + 1e-9 * t.step) break;
+        t.values.push_back(std::abs(v) < 1e-12 * t.step ? 0.0 : v);
+        if (t.values.size() > 1000) break;
+    }
+    return t;
+}
+
+std::string format_tick(double v, int decimals) {
+    std::string s = fmt::format("{:.{}f}", v, decimals);
+    if (s.starts_with('-') && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);  // no "-0.0"
+    // A proper minus sign reads better than a hyphen.
+    if (!s.empty() && s[0] == '-') s = "\u2212" + s.substr(1);
+    return s;
+}
+
+}  // namespace dragon::render

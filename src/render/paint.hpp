@@ -1,0 +1,36 @@
+// Small Cairo helpers shared by the scene renderer and the plots: colours, text, nice numbers.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <cairo.h>
+
+#include "dragon/render.hpp"
+
+namespace dragon::render {
+
+inline void set_colour(cairo_t* cr, const Rgba& c) { cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a); }
+
+// The colour at t in [0, 1] along evenly spaced stops (clamped), linear in sRGB.
+Rgba ramp_colour(const std::vector<Rgba>& stops, double t);
+
+// Text with Cairo's toy API (DejaVu Sans by default): `align` 0 = left, 0.5 = centre, 1 = right
+// of x; `valign` 0 = baseline at y, 0.5 = middle of the capitals at y, 1 = capitals' top at y.
+void text(cairo_t* cr, const std::string& font, double size_px, double x, double y,
+          const std::string& s, double align = 0.0, double valign = 0.0, bool bold = false);
+double text_width(cairo_t* cr, const std::string& font, double size_px, const std::string& s,
+                  bool bold = false);
+
+// Tick positions for [lo, hi]: about `target` steps of 1, 2 or 5 times a power of ten.
+struct Ticks {
+    double step = 1.0;
+    std::vector<double> values;
+    int decimals = 0;  // enough to tell neighbouring ticks apart
+};
+Ticks nice_ticks(double lo, double hi, int target = 5);
+// The largest 1, 2 or 5 times a power of ten not above x (> 0).
+double nice_floor(double x);
+std::string format_tick(double v, int decimals);
+
+}  // namespace dragon::render

@@ -1,0 +1,131 @@
+// make_scene: a simulated moment turned into a display list in world coordinates.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "dragon/render.hpp"
+#include "render/guide.hpp"
+
+namespace dragon {
+
+namespace {
+
+struct Box {
+    double x0 = std::numeric_limits<double>::infinity(), y0 = x0;
+    double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
+    void add(Vec2 p) {
+        x0 = std::min(x0, p.x), y0 = std::min(y0, p.y);
+        x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+    }
+};
+
+Scene::Style style_of(int bench, int bench_count) {
+    if (bench == 1) return Scene::Style::head;
+    if (bench == bench_count) return Scene::Style::tail;
+    return Scene::Style::body;
+}
+
+void place_camera(Scene& scene, const Frame& frame, const Camera& cam) {
+    switch (cam.mode) {
+    case Camera::Mode::fit_dragon: {
+        Box box;
+        for (const Rect& r : frame.benches)
+            for (Vec2 p : corners(r).p) box.add(p);
+        if (frame.benches.empty()) box.add({-1, -1}), box.add({1, 1});
+        const double w = box.x1 - box.x0, h = box.y1 - box.y0;
+        const double pad = cam.margin * std::max(w, h);
+        scene.view_centre = {0.5 * (box.x0 + box.x1), 0.5 * (box.y0 + box.y1)};
+        scene.view_width = w + 2 * pad;
+        scene.view_height = h + 2 * pad;
+        return;
+    }
+    case Camera::Mode::fixed:
+        scene.view_centre = cam.centre;
+        break;
+    case Camera::Mode::follow_head:
+        scene.view_centre = frame.handles.empty() ? Vec2{} : frame.handles.front().pos;
+        break;
+    }
+    if (!(cam.extent > 0)) throw InputError(fmt::format("camera extent {} m must be positive", cam.extent));
+    scene.view_width = scene.view_height = cam.extent;
+}
+
+Rgba guide_colour(const Theme& theme, PathKind kind, int piece) {
+    if (kind == PathKind::spiral || piece == 0) return theme.guide;
+    // Turnaround: coil-in spiral, the two arcs of the S-curve, then the coil-out spiral.
+    return piece <= 2 ? theme.s_curve : theme.guide_out;
+}
+
+void add_guides(Scene& scene, const Simulation& sim, const Frame& frame) {
+    const Path& path = sim.path();
+    const BenchSpec& spec = sim.scenario().bench;
+    double chain_length = 0;
+    for (int k = 1; k <= spec.bench_count; ++k) chain_length += spec.link_length(k);
+    const Vec2 tail = frame.handles.empty() ? Vec2{} : frame.handles.back().pos;
+    const double tail_arc = frame.handles.empty() ? frame.head_arc : path.arc(frame.handles.back().place);
+    // Out past the tail by one more turn, and on ahead of the head by a dragon's length (to the
+    // centre on the plain spiral), so the guide frames the dragon.
+    const double s0 = tail_arc - 2 * std::numbers::pi * norm(tail) - 1.0;
+    const double s1 = std::isinf(path.s_max()) ? frame.head_arc + chain_length : path.s_max();
+    const double view = std::max(scene.view_width, scene.view_height);
+    const PathKind kind = sim.scenario().path.kind;
+    for (auto& run : render::path_beziers(path, s0, s1, view / 40.0)) {
+        Scene::Guide g;
+        g.beziers = std::move(run.beziers);
+        g.colour = guide_colour(scene.theme, kind, run.piece);
+        g.width_px = (kind == PathKind::turnaround && run.piece >= 1 && run.piece <= 2) ? 2.0 : 1.0;
+        scene.guides.push_back(std::move(g));
+    }
+}
+
+}  // namespace
+
+Scene make_scene(const Simulation& sim, const Frame& frame, const SceneOptions& opt) {
+    Scene scene;
+    scene.theme = opt.theme;
+    const Scenario& sc = sim.scenario();
+    const int n = static_cast<int>(frame.benches.size());
+
+    place_camera(scene, frame, opt.camera);
+
+    scene.benches.reserve(n);
+    double vmin = std::numeric_limits<double>::infinity(), vmax = -vmin;
+    for (int k = 1; k <= n; ++k) {
+        const double v = 0.5 * (frame.handles[k - 1].speed + frame.handles[k].speed);
+        vmin = std::min(vmin, v), vmax = std::max(vmax, v);
+        scene.benches.push_back({frame.benches[k - 1], style_of(k, n), v});
+    }
+    for (int k : opt.highlight_benches)
+        if (k >= 1 && k <= n) scene.benches[k - 1].style = Scene::Style::highlight;
+    if (opt.collision) {
+        for (int k : {opt.collision->bench_a, opt.collision->bench_b})
+            if (k >= 1 && k <= n) scene.benches[k - 1].style = Scene::Style::collision;
+        scene.collision = opt.collision;
+    }
+
+    scene.handles.reserve(frame.handles.size());
+    for (const Handle& h : frame.handles) scene.handles.push_back(h.pos);
+    // The hole radius of the board, m: the handle is a pin through it.
+    scene.handle_radius = 0.5 * 0.055;
+
+    if (opt.show_guides && !frame.handles.empty()) add_guides(scene, sim, frame);
+    if (opt.show_turning_space) scene.turning_radius = sc.path.turn_radius;
+
+    scene.colour_by_speed = opt.colour_by_speed;
+    scene.speed_min = opt.speed_min.value_or(n ? vmin : 0.0);
+    scene.speed_max = opt.speed_max.value_or(n ? vmax : 1.0);
+    if (!(scene.speed_max > scene.speed_min)) scene.speed_max = scene.speed_min + 1e-6;
+
+    scene.show_handles = opt.show_handles;
+    scene.show_scale_bar = opt.show_scale_bar;
+    scene.show_colour_bar = opt.show_colour_bar;
+    scene.show_text = opt.show_text;
+    scene.annotation = opt.annotation.value_or(
+        fmt::format("t = {:.3f} s   pitch = {:.3g} m", frame.time, sc.coil_pitch()));
+    return scene;
+}
+
+}  // namespace dragon
