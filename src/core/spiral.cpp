@@ -95,7 +95,8 @@ std::optional<Located> Spiral::behind(const Located& from, double chord) const {
         if (g < 0.0) lo = phi; else hi = phi;
         const double dg = 2.0 * (t2 - th * c + th * t2 * s);
         double next = phi - g / dg;
-        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        // Closed bracket: at (or a rounding step from) the root, phi itself is an end of it.
+        if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi);
         const double step = next - phi;
         phi = next;
         if (std::abs(step) <= tol::newton_step || hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * (th + kPi)) break;
