@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "dragon/turnaround.hpp"
+
 namespace dragon {
 
 PathBuild make_path(const Scenario& s) {
@@ -11,7 +13,9 @@ PathBuild make_path(const Scenario& s) {
         const double start = -spiral->length_to(kTwoPi * s.path.start_turn);
         return {spiral, start};
     }
-    throw InputError("--path turnaround is not available yet");
+    // The turnaround path's arc position is 0 where the head enters arc 1: t = 0 there.
+    auto path = std::make_shared<TurnaroundPath>(design_s_curve(s));
+    return {path, path->join_arc(1)};
 }
 
 }  // namespace dragon

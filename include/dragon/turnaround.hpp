@@ -1,0 +1,132 @@
+// The turnaround (Q4, Q5): the coil-in spiral, an S-curve of two tangent circular arcs inside the
+// turning space, and the coil-out spiral (the coil-in spiral turned by pi), as one Path; the
+// S-curve's exact design, the study of its length, and the largest head speed under a limit.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "dragon/geometry.hpp"
+#include "dragon/path.hpp"
+#include "dragon/scenario.hpp"
+
+namespace dragon {
+
+// The S-curve from the entry point A on the coil-in spiral to the exit point B = -A on the
+// coil-out spiral. Arc 1 (centre c1, radius r1) leaves A tangent to the coil-in spiral turning
+// clockwise; arc 2 (c2, r2) turns counter-clockwise and reaches B tangent to the coil-out spiral;
+// the arcs touch at `joint`, |c1 - c2| = r1 + r2, and r1 = ratio * r2.
+struct SCurve {
+    double pitch = 0;         // of both spirals, m
+    double entry_radius = 0;  // |A|, m
+    double entry_theta = 0;   // polar angle of A on the coil-in spiral r = b theta (and of B on the coil-out one)
+    double ratio = 0;         // r1 / r2
+    Vec2 entry;               // A
+    Vec2 exit;                // B = -A
+    Vec2 direction;           // unit direction of travel at A; the same at B (the spirals are point-symmetric)
+    Vec2 c1, c2;
+    double r1 = 0, r2 = 0;
+    double angle1 = 0;        // clockwise angle arc 1 sweeps, rad
+    double angle2 = 0;        // counter-clockwise angle arc 2 sweeps, rad
+    Vec2 joint;               // where arc 1 meets arc 2
+    double length1 = 0, length2 = 0, length = 0;  // arc lengths and their sum, m
+    double max_radius = 0;    // farthest point of the S-curve from the centre, m
+};
+
+// Solves the S-curve exactly. Throws InputError for a non-positive pitch, radius or ratio.
+SCurve design_s_curve(double pitch, double entry_radius, double ratio);
+// The S-curve of a scenario: turn_pitch, turn_radius and arc_ratio.
+SCurve design_s_curve(const Scenario& s);
+
+// The composite path. Pieces: 0 coil-in spiral (u = theta, decreasing along the travel),
+// 1 arc 1 (u = angle of the point about c1, decreasing), 2 arc 2 (u = angle about c2,
+// increasing), 3 coil-out spiral (u = theta of the point -b theta (cos theta, sin theta),
+// increasing). Arc position s = 0 at A (where the turn begins), so s < 0 on the coil-in spiral
+// and s > length on the coil-out one; the path is unbounded both ways.
+class TurnaroundPath final : public Path {
+public:
+    explicit TurnaroundPath(const SCurve& design);
+
+    const SCurve& design() const { return design_; }
+    // Arc positions where pieces 1, 2 and 3 begin: 0, length1, length.
+    double join_arc(int piece) const;
+    // The range of u on a piece, as {u at the piece's start, u at its end} in the travel order.
+    std::pair<double, double> piece_range(int piece) const;
+
+    Located at(Place p) const override;
+    double arc(Place p) const override;
+    Located at_arc(double s) const override;
+    double s_min() const override;
+    double s_max() const override;
+    double curvature(Place p) const override;
+    std::optional<Located> behind(const Located& from, double chord) const override;
+
+private:
+    std::optional<Located> behind_on_arc(int piece, const Located& from, double chord) const;
+    std::optional<Located> behind_on_coil_in(const Located& from, double chord) const;
+    std::optional<Located> behind_on_coil_out(const Located& from, double chord) const;
+
+    SCurve design_;
+    Spiral coil_in_;
+    double length_at_entry_;  // spiral length from the centre to A (and to B)
+    double u1_start_, u1_end_, u2_start_, u2_end_;
+};
+
+// Q4: can the turning curve be shorter? One row per S-curve studied.
+struct TurnStudyRow {
+    double ratio;
+    double entry_radius;    // where the turn starts, m (the turning space's radius by default)
+    double r1, r2;
+    double angle;           // each arc's angle, rad (the S-curve's two arcs sweep the same angle)
+    double s_curve_length;  // m
+    // The head's whole way inside the turning space: coil-in spiral from the turning-space
+    // boundary to the entry, the S-curve, and the coil-out spiral back out to the boundary, m.
+    double inside_length;
+    double max_radius;      // m; at most the turning-space radius for a turn that fits inside
+};
+// Length against the radius ratio, entry at the turning-space boundary.
+std::vector<TurnStudyRow> length_vs_ratio(double pitch, double turn_radius,
+                                          const std::vector<double>& ratios);
+// Length against the entry radius (<= turn_radius: the turn starts deeper inside), fixed ratio.
+std::vector<TurnStudyRow> length_vs_entry_radius(double pitch, double turn_radius, double ratio,
+                                                 const std::vector<double>& entry_radii);
+
+struct TurnaroundStudy {
+    SCurve design;
+    std::vector<TurnStudyRow> by_ratio;
+    std::vector<TurnStudyRow> by_entry;
+    double ratio_spread;    // largest minus smallest S-curve length over by_ratio, m
+    std::string conclusion; // one paragraph answering Q4's question from the numbers
+};
+// The default study: ratios 0.5..5 and entry radii from the boundary in to half of it.
+TurnaroundStudy study_turnaround(const Scenario& s);
+// The study as CSV (header study,ratio,entry_radius,r1,r2,angle,s_curve_length,inside_length,
+// max_radius), written all-or-nothing.
+void write_study_csv(const TurnaroundStudy& study, const std::string& path);
+
+// Q5: the largest head speed with every handle at or under `limit`. The speed ratio
+// (largest handle speed over the head's) does not depend on the head speed, so it is maximised
+// over the head's arc position once; the answer is limit / ratio.
+struct MaxSpeed {
+    double max_head_speed;
+    double ratio;       // largest handle speed / head speed over the range
+    int handle;         // the handle reaching it (0..N)
+    double time;        // when, on the scenario's own timeline (head at head_speed, t = 0 at the turn), s
+    double head_arc;    // head's arc position then (= time * head_speed), m
+    double scan_step;   // coarse scan step in time, s
+    int candidates;     // local maxima of the coarse scan refined
+    int evaluations;    // chains solved
+};
+// Searches t in [t0, t1] on the scenario's timeline (the scenario's kind is taken as turnaround).
+MaxSpeed max_head_speed(const Scenario& s, double limit, double t0 = -100.0, double t1 = 100.0);
+
+// The largest handle speed over the head speed at one head arc position, and which handle.
+struct SpeedRatio {
+    double ratio;
+    int handle;
+};
+SpeedRatio speed_ratio_at(const Path& path, const BenchSpec& spec, double head_arc);
+
+}  // namespace dragon

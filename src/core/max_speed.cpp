@@ -1,0 +1,124 @@
+// Q5: the largest head speed that keeps every handle at or under a speed limit.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "core/make_path.hpp"
+#include "dragon/chain.hpp"
+#include "dragon/turnaround.hpp"
+
+namespace dragon {
+
+namespace {
+
+// Golden-section stop: bracket width in head arc position, m. The speed ratio's maxima are
+// either smooth (the value is then flat to ~1e-18 at this width) or kinks where a handle crosses a
+// join (the location is then found to this width).
+constexpr double kArcTolerance = 1e-9;
+
+// Coarse scan step over the shortest link: with 32 samples per link length no handle moves more
+// than ~1/32 of a link (speed ratios stay near 1) between samples, so every bump of the ratio,
+// whose width is set by the time a handle needs to cross a link or a join, spans many samples.
+constexpr double kSamplesPerLink = 32.0;
+
+class RatioProbe {
+public:
+    RatioProbe(const Path& path, const BenchSpec& spec) : path_(path), spec_(spec) {}
+    SpeedRatio operator()(double s) {
+        ++evaluations;
+        solve_chain(path_, spec_, s, 1.0, frame_);
+        SpeedRatio best{frame_.handles[0].speed, 0};
+        for (size_t i = 1; i < frame_.handles.size(); ++i)
+            if (frame_.handles[i].speed > best.ratio) best = {frame_.handles[i].speed, static_cast<int>(i)};
+        return best;
+    }
+    int evaluations = 0;
+
+private:
+    const Path& path_;
+    const BenchSpec& spec_;
+    Frame frame_;
+};
+
+// Golden-section search for the largest ratio on [a, b] (a unimodal bracket around a coarse
+// maximum; kinks are fine, no derivative is used).
+std::pair<double, SpeedRatio> golden_max(RatioProbe& probe, double a, double b) {
+    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+    double x1 = b - g * (b - a), x2 = a + g * (b - a);
+    SpeedRatio f1 = probe(x1), f2 = probe(x2);
+    while (b - a > kArcTolerance) {
+        if (f1.ratio >= f2.ratio) {
+            b = x2; x2 = x1; f2 = f1;
+            x1 = b - g * (b - a); f1 = probe(x1);
+        } else {
+            a = x1; x1 = x2; f1 = f2;
+            x2 = a + g * (b - a); f2 = probe(x2);
+        }
+    }
+    return f1.ratio >= f2.ratio ? std::pair{x1, f1} : std::pair{x2, f2};
+}
+
+}  // namespace
+
+SpeedRatio speed_ratio_at(const Path& path, const BenchSpec& spec, double head_arc) {
+    RatioProbe probe(path, spec);
+    return probe(head_arc);
+}
+
+MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, double t1) {
+    if (!std::isfinite(limit) || limit <= 0.0)
+        throw InputError(fmt::format("--limit {} is not allowed: it must be a finite speed > 0 m/s", limit));
+    if (!std::isfinite(t0) || !std::isfinite(t1) || t1 <= t0)
+        throw InputError(fmt::format("time range {}..{} is not allowed: it must be finite and "
+                                     "non-empty", t0, t1));
+    Scenario s = scenario;
+    s.path.kind = PathKind::turnaround;
+    validate(s);
+    const PathBuild built = make_path(s);
+    RatioProbe probe(*built.path, s.bench);
+
+    // Work in head arc position: the ratio depends on where the chain is, not how fast it goes.
+    const double v = s.head_speed;
+    const double s0 = built.start_arc + v * t0, s1 = built.start_arc + v * t1;
+    double shortest = s.bench.link_length(1);
+    if (s.bench.bench_count > 1) shortest = std::min(shortest, s.bench.link_length(2));
+    const int steps = std::max(2, static_cast<int>(std::ceil((s1 - s0) * kSamplesPerLink / shortest)));
+    const double ds = (s1 - s0) / steps;
+
+    std::vector<double> rho(static_cast<size_t>(steps) + 1);
+    for (int k = 0; k <= steps; ++k) rho[static_cast<size_t>(k)] = probe(s0 + k * ds).ratio;
+
+    // Refine every coarse local maximum that could still beat the best sample: between samples
+    // the ratio rises at most ~slope * ds, with the slope estimated from the scan and doubled.
+    double slope = 0.0, best_coarse = 0.0;
+    for (int k = 0; k < steps; ++k)
+        slope = std::max(slope, std::abs(rho[static_cast<size_t>(k) + 1] - rho[static_cast<size_t>(k)]) / ds);
+    for (double r : rho) best_coarse = std::max(best_coarse, r);
+    const double reach = 2.0 * slope * ds;
+
+    MaxSpeed out{};
+    out.ratio = -1.0;
+    out.scan_step = ds / v;
+    for (int k = 0; k <= steps; ++k) {
+        const size_t i = static_cast<size_t>(k);
+        const bool up = k == 0 || rho[i] >= rho[i - 1];
+        const bool down = k == steps || rho[i] >= rho[i + 1];
+        if (!up || !down || rho[i] + reach < best_coarse) continue;
+        ++out.candidates;
+        const double a = s0 + std::max(0, k - 1) * ds, b = s0 + std::min(steps, k + 1) * ds;
+        const auto [at, r] = golden_max(probe, a, b);
+        if (r.ratio > out.ratio) {
+            out.ratio = r.ratio;
+            out.handle = r.handle;
+            out.head_arc = at;
+        }
+    }
+    out.time = (out.head_arc - built.start_arc) / v;
+    out.max_head_speed = limit / out.ratio;
+    out.evaluations = probe.evaluations;
+    return out;
+}
+
+}  // namespace dragon

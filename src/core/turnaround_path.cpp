@@ -1,0 +1,206 @@
+// The turnaround path: coil-in spiral, arc 1, arc 2, coil-out spiral, and its chord search.
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "core/chord_march.hpp"
+#include "dragon/turnaround.hpp"
+
+namespace dragon {
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A chord root this close (in radians of arc angle) outside an arc's range still counts as on
+// it: the root is then at the join, and rounding put it a hair past the piece's end. Both sides
+// of a join are searched with this slack, so a root at a join is never missed by both.
+constexpr double kJoinSlack = 1e-12;
+
+// Largest step of the spiral march, rad: keeps the curvature bound local (it is taken at the
+// step's far end, where |P'| and |P''| are largest).
+constexpr double kMarchStep = 0.5;
+
+}  // namespace
+
+TurnaroundPath::TurnaroundPath(const SCurve& design)
+    : design_(design), coil_in_(design.pitch), length_at_entry_(coil_in_.length_to(design.entry_theta)) {
+    u1_start_ = std::atan2(design_.entry.y - design_.c1.y, design_.entry.x - design_.c1.x);
+    u1_end_ = u1_start_ - design_.angle1;
+    u2_start_ = std::atan2(design_.c1.y - design_.c2.y, design_.c1.x - design_.c2.x);
+    u2_end_ = u2_start_ + design_.angle2;
+}
+
+double TurnaroundPath::join_arc(int piece) const {
+    switch (piece) {
+        case 1: return 0.0;
+        case 2: return design_.length1;
+        case 3: return design_.length;
+        default: return piece <= 0 ? -kInf : kInf;
+    }
+}
+
+std::pair<double, double> TurnaroundPath::piece_range(int piece) const {
+    switch (piece) {
+        case 0: return {kInf, design_.entry_theta};
+        case 1: return {u1_start_, u1_end_};
+        case 2: return {u2_start_, u2_end_};
+        default: return {design_.entry_theta, kInf};
+    }
+}
+
+Located TurnaroundPath::at(Place p) const {
+    switch (p.piece) {
+        case 0: return coil_in_.at(p);
+        case 1: {
+            const double c = std::cos(p.u), s = std::sin(p.u);
+            return {p, design_.c1 + design_.r1 * Vec2{c, s}, {s, -c}};  // clockwise
+        }
+        case 2: {
+            const double c = std::cos(p.u), s = std::sin(p.u);
+            return {p, design_.c2 + design_.r2 * Vec2{c, s}, {-s, c}};  // counter-clockwise
+        }
+        default: {
+            // -P(theta) travelled with theta increasing: the tangent -P'/|P'| is the coil-in one.
+            const Located in = coil_in_.at({0, p.u});
+            return {p, -in.pos, in.tangent};
+        }
+    }
+}
+
+double TurnaroundPath::arc(Place p) const {
+    switch (p.piece) {
+        case 0: return length_at_entry_ - coil_in_.length_to(p.u);
+        case 1: return design_.r1 * (u1_start_ - p.u);
+        case 2: return design_.length1 + design_.r2 * (p.u - u2_start_);
+        default: return design_.length + (coil_in_.length_to(p.u) - length_at_entry_);
+    }
+}
+
+Located TurnaroundPath::at_arc(double s) const {
+    if (s < 0.0) return at({0, coil_in_.theta_at_length(length_at_entry_ - s)});
+    if (s < design_.length1) return at({1, u1_start_ - s / design_.r1});
+    if (s < design_.length) return at({2, u2_start_ + (s - design_.length1) / design_.r2});
+    return at({3, coil_in_.theta_at_length(length_at_entry_ + (s - design_.length))});
+}
+
+double TurnaroundPath::s_min() const { return -kInf; }
+double TurnaroundPath::s_max() const { return kInf; }
+
+double TurnaroundPath::curvature(Place p) const {
+    switch (p.piece) {
+        case 0: return coil_in_.curvature(p);
+        case 1: return -1.0 / design_.r1;
+        case 2: return 1.0 / design_.r2;
+        // Turned by pi (orientation kept) but travelled the other way: the sign flips.
+        default: return -coil_in_.curvature({0, p.u});
+    }
+}
+
+// Walks back piece by piece from `from`'s piece: the first piece holding a root holds the
+// nearest one, and each piece's search returns its root nearest the search's start.
+std::optional<Located> TurnaroundPath::behind(const Located& from, double chord) const {
+    const int piece = from.place.piece;
+    if (piece >= 3) {
+        if (auto r = behind_on_coil_out(from, chord)) return r;
+    }
+    if (piece >= 2) {
+        if (auto r = behind_on_arc(2, from, chord)) return r;
+    }
+    if (piece >= 1) {
+        if (auto r = behind_on_arc(1, from, chord)) return r;
+    }
+    return behind_on_coil_in(from, chord);
+}
+
+// Circle-circle intersection in closed form. The chord circle (centre q, radius d) meets the
+// arc's circle (centre c, radius r) at angles psi +- beta about c. Each root is measured as the
+// backward angle from where the search starts on this arc (from's u if from is on it, else the
+// arc's end); the smallest one within the arc's range is the nearest behind.
+std::optional<Located> TurnaroundPath::behind_on_arc(int piece, const Located& from,
+                                                     double chord) const {
+    const bool first = piece == 1;
+    const Vec2 c = first ? design_.c1 : design_.c2;
+    const double r = first ? design_.r1 : design_.r2;
+    const double u_begin = first ? u1_start_ : u2_start_;
+    const double u_end = first ? u1_end_ : u2_end_;
+    // Going back along the travel: u increases on arc 1 (clockwise), decreases on arc 2.
+    const double back = first ? 1.0 : -1.0;
+    const bool same = from.place.piece == piece;
+    const double u0 = same ? from.place.u : u_end;
+    const double room = back * (u_begin - u0);
+
+    double psi, beta;
+    if (same) {
+        // from is on this circle: the chord subtends 2 asin(d / 2r) at the centre.
+        if (chord > 2.0 * r) return std::nullopt;
+        psi = u0;
+        beta = 2.0 * std::asin(chord / (2.0 * r));
+    } else {
+        const Vec2 w = from.pos - c;
+        const double dist = norm(w);
+        if (dist > r + chord || dist < std::abs(r - chord) || dist == 0.0) return std::nullopt;
+        // Foot of the common chord along w, and the half-width across it.
+        const double x = (r * r + dist * dist - chord * chord) / (2.0 * dist);
+        const double y2 = (r - x) * (r + x);
+        psi = std::atan2(w.y, w.x);
+        beta = std::atan2(std::sqrt(std::max(y2, 0.0)), x);
+    }
+
+    double best = kInf;
+    for (const double root : {psi + beta, psi - beta}) {
+        // Backward angle from u0, wrapped into [-slack, 2 pi - slack).
+        double delta = std::fmod(back * (root - u0), kTwoPi);
+        if (delta < -kJoinSlack) delta += kTwoPi;
+        if (delta >= kTwoPi - kJoinSlack) delta -= kTwoPi;
+        if (same && delta <= 0.0) continue;  // strictly behind from
+        if (delta <= room + kJoinSlack && delta < best) best = delta;
+    }
+    if (best == kInf) return std::nullopt;
+    return at({piece, u0 + back * best});
+}
+
+namespace {
+
+// The coil-in spiral P(theta) = b theta (cos theta, sin theta) as a march piece, with the bounds
+// |P'|^2 = b^2 (1 + theta^2) and |P''| = b sqrt(4 + theta^2), both increasing in theta, so their
+// maxima over a step are at its larger end.
+struct CoilPiece {
+    double b;
+    PieceSample operator()(double u) const {
+        const double c = std::cos(u), s = std::sin(u);
+        return {{b * u * c, b * u * s}, {b * (c - u * s), b * (s + u * c)}};
+    }
+};
+struct CoilBound {
+    double b;
+    std::pair<double, double> operator()(double ua, double ub) const {
+        const double t = std::max(std::abs(ua), std::abs(ub));
+        return {b * b * (1.0 + t * t), b * std::sqrt(4.0 + t * t)};
+    }
+};
+
+}  // namespace
+
+std::optional<Located> TurnaroundPath::behind_on_coil_in(const Located& from, double chord) const {
+    if (from.place.piece == 0) return coil_in_.behind(from, chord);
+    // From a later piece: march outward from A, which never steps over the first root.
+    const double b = coil_in_.b();
+    const auto u = march_to_chord(CoilPiece{b}, CoilBound{b}, from.pos, chord, design_.entry_theta,
+                                  +1.0, kInf, kMarchStep);
+    if (!u) return std::nullopt;
+    return at({0, *u});
+}
+
+// On the coil-out spiral -P(theta), |-P(theta) - q| = |P(theta) + q|: march down the coil-in
+// spiral towards A with the mirrored point -q.
+std::optional<Located> TurnaroundPath::behind_on_coil_out(const Located& from, double chord) const {
+    const double b = coil_in_.b();
+    const auto u = march_to_chord(CoilPiece{b}, CoilBound{b}, -from.pos, chord, from.place.u, -1.0,
+                                  design_.entry_theta, kMarchStep);
+    if (!u) return std::nullopt;
+    return at({3, *u});
+}
+
+}  // namespace dragon

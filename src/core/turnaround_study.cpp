@@ -1,0 +1,97 @@
+// Q4's question, "can the turning curve be made shorter?", answered by computing the S-curve
+// against the radius ratio and against where the turn starts.
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "dragon/atomic_file.hpp"
+#include "dragon/turnaround.hpp"
+
+namespace dragon {
+
+namespace {
+
+TurnStudyRow row_of(const SCurve& d, double turn_radius) {
+    const Spiral spiral(d.pitch);
+    // Coil-in spiral from the boundary to A, and (by symmetry) coil-out from B to the boundary.
+    const double approach = spiral.length_to(turn_radius / spiral.b()) - spiral.length_to(d.entry_theta);
+    return {d.ratio, d.entry_radius, d.r1, d.r2, d.angle1, d.length, d.length + 2.0 * approach,
+            d.max_radius};
+}
+
+}  // namespace
+
+std::vector<TurnStudyRow> length_vs_ratio(double pitch, double turn_radius,
+                                          const std::vector<double>& ratios) {
+    std::vector<TurnStudyRow> rows;
+    for (double k : ratios) rows.push_back(row_of(design_s_curve(pitch, turn_radius, k), turn_radius));
+    return rows;
+}
+
+std::vector<TurnStudyRow> length_vs_entry_radius(double pitch, double turn_radius, double ratio,
+                                                 const std::vector<double>& entry_radii) {
+    std::vector<TurnStudyRow> rows;
+    for (double r : entry_radii) {
+        if (r > turn_radius)
+            throw InputError(fmt::format("entry radius {} is not allowed: the turn must start inside "
+                                         "the turning space (radius {})", r, turn_radius));
+        rows.push_back(row_of(design_s_curve(pitch, r, ratio), turn_radius));
+    }
+    return rows;
+}
+
+TurnaroundStudy study_turnaround(const Scenario& s) {
+    const double pitch = s.path.turn_pitch, radius = s.path.turn_radius, ratio = s.path.arc_ratio;
+    TurnaroundStudy st;
+    st.design = design_s_curve(pitch, radius, ratio);
+    std::vector<double> ratios = {0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 10.0};
+    if (std::find(ratios.begin(), ratios.end(), ratio) == ratios.end()) ratios.push_back(ratio);
+    std::sort(ratios.begin(), ratios.end());
+    st.by_ratio = length_vs_ratio(pitch, radius, ratios);
+    std::vector<double> radii;
+    for (int k = 0; k <= 10; ++k) radii.push_back(radius * (1.0 - 0.05 * k));
+    st.by_entry = length_vs_entry_radius(pitch, radius, ratio, radii);
+
+    auto [lo, hi] = std::minmax_element(st.by_ratio.begin(), st.by_ratio.end(),
+                                        [](const TurnStudyRow& a, const TurnStudyRow& b) {
+                                            return a.s_curve_length < b.s_curve_length;
+                                        });
+    st.ratio_spread = hi->s_curve_length - lo->s_curve_length;
+    const TurnStudyRow& inner = st.by_entry.back();
+    st.conclusion = fmt::format(
+        "Not by changing the ratio: tangent at A and B, r1 + r2 = R sqrt(1 + theta^2) / theta and "
+        "both arcs sweep the same angle whatever r1 / r2 is, so the S-curve is {:.6f} m for every "
+        "ratio (spread {:.1e} m over ratios {}..{}). It gets shorter only if the turn starts "
+        "deeper inside the turning space ({:.6f} m from radius {:.4g} m), but then the head coils in "
+        "and out further along the spirals: its whole way inside the turning space grows from "
+        "{:.6f} m to {:.6f} m. With the turn tangent at the boundary the curve is as short as it "
+        "gets for the way through the turning space.",
+        st.design.length, st.ratio_spread, st.by_ratio.front().ratio, st.by_ratio.back().ratio,
+        inner.s_curve_length, inner.entry_radius, st.by_entry.front().inside_length,
+        inner.inside_length);
+    return st;
+}
+
+void write_study_csv(const TurnaroundStudy& study, const std::string& path) {
+    AtomicFile file(path);
+    {
+        std::unique_ptr<FILE, int (*)(FILE*)> out(std::fopen(file.temp_path().c_str(), "w"), &std::fclose);
+        if (!out) throw std::runtime_error(fmt::format("cannot write {}", file.temp_path()));
+        fmt::print(out.get(), "study,ratio,entry_radius,r1,r2,angle,s_curve_length,inside_length,max_radius\n");
+        auto rows = [&](const char* name, const std::vector<TurnStudyRow>& rs) {
+            for (const TurnStudyRow& r : rs)
+                fmt::print(out.get(), "{},{:.6f},{:.6f},{:.9f},{:.9f},{:.9f},{:.9f},{:.9f},{:.9f}\n", name,
+                           r.ratio, r.entry_radius, r.r1, r.r2, r.angle, r.s_curve_length,
+                           r.inside_length, r.max_radius);
+        };
+        rows("ratio", study.by_ratio);
+        rows("entry_radius", study.by_entry);
+        if (std::ferror(out.get()) || std::fclose(out.release()) != 0)
+            throw std::runtime_error(fmt::format("cannot write {}", file.temp_path()));
+    }
+    file.commit();
+}
+
+}  // namespace dragon
