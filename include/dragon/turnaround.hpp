@@ -106,13 +106,28 @@ TurnaroundStudy study_turnaround(const Scenario& s);
 // max_radius), written all-or-nothing.
 void write_study_csv(const TurnaroundStudy& study, const std::string& path);
 
+// Is the turnaround collision-free, and how close do benches come? The smallest clearance
+// between non-adjacent benches over t in [t0, t1] (coarse scan, each local minimum refined by
+// golden section), and the exact first-contact search over the same run.
+struct RunClearance {
+    double distance;      // smallest clearance, m (negative: overlap)
+    double time;          // when, s
+    int bench_a, bench_b; // the closest pair then (1..N)
+    bool collision_free;  // no contact anywhere in [t0, t1] (first_contact found none)
+    double scan_step;     // s
+    int evaluations;      // frames whose clearance was computed
+};
+RunClearance min_clearance(const Scenario& s, double t0 = -100.0, double t1 = 100.0);
+
 // Q5: the largest head speed with every handle at or under `limit`. The speed ratio
 // (largest handle speed over the head's) does not depend on the head speed, so it is maximised
 // over the head's arc position once; the answer is limit / ratio.
 struct MaxSpeed {
     double max_head_speed;
     double ratio;       // largest handle speed / head speed over the range
-    int handle;         // the handle reaching it (0..N)
+    int handle;         // the handle reaching it (0..N); the first of `tied` when several do
+    std::vector<int> tied;  // every handle within 1e-12 (relative) of the largest speed then
+                            // (handles on one arc move at the same speed)
     double time;        // when, on the scenario's own timeline (head at head_speed, t = 0 at the turn), s
     double head_arc;    // head's arc position then (= time * head_speed), m
     double scan_step;   // coarse scan step in time, s

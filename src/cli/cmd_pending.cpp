@@ -18,7 +18,6 @@ void register_solve(CLI::App& app, Registry& reg) { pending(app, reg, "solve", "
 void register_collide(CLI::App& app, Registry& reg) { pending(app, reg, "collide", "Q2"); }
 void register_min_pitch(CLI::App& app, Registry& reg) { pending(app, reg, "min-pitch", "Q3"); }
 void register_turnaround(CLI::App& app, Registry& reg) { pending(app, reg, "turnaround", "Q4: the S-curve turnaround"); }
-void register_max_speed(CLI::App& app, Registry& reg) { pending(app, reg, "max-speed", "Q5: the head speed limit"); }
 void register_render(CLI::App& app, Registry& reg) { pending(app, reg, "render", "Draw one moment to PNG or SVG"); }
 void register_figures(CLI::App& app, Registry& reg) { pending(app, reg, "figures", "The figure gallery"); }
 void register_video(CLI::App& app, Registry& reg) { pending(app, reg, "video", "Animate to MP4, WebM or GIF"); }

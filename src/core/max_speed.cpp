@@ -18,6 +18,9 @@ namespace {
 // join (the location is then found to this width).
 constexpr double kArcTolerance = 1e-9;
 
+// Handle speeds this close (relative) count as equal: rounding in the chain is ~1e-15.
+constexpr double kTieTolerance = 1e-12;
+
 // Coarse scan step over the shortest link: with 32 samples per link length no handle moves more
 // than ~1/32 of a link (speed ratios stay near 1) between samples, so every bump of the ratio,
 // whose width is set by the time a handle needs to cross a link or a join, spans many samples.
@@ -115,6 +118,13 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, doubl
             out.head_arc = at;
         }
     }
+    // Handles on one arc all move at the same speed: report every one that ties, and the first.
+    Frame f;
+    solve_chain(*built.path, s.bench, out.head_arc, 1.0, f);
+    ++probe.evaluations;
+    for (size_t i = 0; i < f.handles.size(); ++i)
+        if (f.handles[i].speed >= out.ratio * (1.0 - kTieTolerance)) out.tied.push_back(static_cast<int>(i));
+    out.handle = out.tied.front();
     out.time = (out.head_arc - built.start_arc) / v;
     out.max_head_speed = limit / out.ratio;
     out.evaluations = probe.evaluations;
