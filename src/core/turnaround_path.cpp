@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "core/chord_march.hpp"
+#include "dragon/constants.hpp"
 #include "dragon/turnaround.hpp"
 
 namespace dragon {
@@ -193,12 +194,55 @@ std::optional<Located> TurnaroundPath::behind_on_coil_in(const Located& from, do
     return at({0, *u});
 }
 
-// On the coil-out spiral -P(theta), |-P(theta) - q| = |P(theta) + q|: march down the coil-in
-// spiral towards A with the mirrored point -q.
+// On the coil-out spiral -P(theta), |-P(theta) - q| = |P(theta) + q|: the search runs down the
+// coil-in spiral towards A with the mirrored point -q.
+//
+// From a place on the coil-out spiral itself (q' = P(theta)), with phi = theta - theta' the
+// squared chord over b^2 is g(phi) = theta^2 + (theta - phi)^2 - 2 theta (theta - phi) cos(phi),
+//   g'(phi) / 2 = phi - theta (1 - cos phi) + theta (theta - phi) sin phi
+//              > 2 theta sin(phi/2) [(theta - phi) cos(phi/2) - sin(phi/2)],
+// positive while theta - phi > tan(phi/2): on phi in (0, pi/2] whenever theta - phi >= 1. So when
+// theta_A >= 1, g increases on (0, min(pi/2, theta - theta_A)], and if it reaches (chord/b)^2
+// there the root is unique in that bracket: safeguarded Newton finds it. If g stays below on the
+// whole piece there is no root on it. Otherwise (a chord reaching round more than a quarter
+// turn) the curvature-bounded march decides.
 std::optional<Located> TurnaroundPath::behind_on_coil_out(const Located& from, double chord) const {
     const double b = coil_in_.b();
-    const auto u = march_to_chord(CoilPiece{b}, CoilBound{b}, -from.pos, chord, from.place.u, -1.0,
-                                  design_.entry_theta, kMarchStep);
+    const double th = from.place.u, tha = design_.entry_theta;
+    const double k2 = (chord / b) * (chord / b);
+    auto g = [th, k2](double phi) {
+        const double t2 = th - phi;
+        return th * th + t2 * t2 - 2.0 * th * t2 * std::cos(phi) - k2;
+    };
+    constexpr double kQuarter = 1.5707963267948966192313216916398;
+    const double room = th - tha;
+    const double hi0 = std::min(kQuarter, room);
+    if (tha >= 1.0 && hi0 > 0.0) {
+        const double g_hi = g(hi0);
+        if (g_hi < 0.0 && room <= kQuarter) return std::nullopt;  // the whole piece is nearer
+        if (g_hi >= 0.0) {
+            double lo = 0.0, hi = hi0;
+            // Start from the circle of radius ~theta: a chord k subtends 2 asin(k / 2 theta).
+            const double k = std::sqrt(k2), rad = std::sqrt(th * th + 1.0);
+            double phi = k < 2.0 * rad ? 2.0 * std::asin(k / (2.0 * rad)) : 0.5 * hi;
+            if (!(phi > lo && phi < hi)) phi = 0.5 * (lo + hi);
+            for (int it = 0; it < tol::max_newton; ++it) {
+                const double t2 = th - phi, c = std::cos(phi), s = std::sin(phi);
+                const double gv = th * th + t2 * t2 - 2.0 * th * t2 * c - k2;
+                if (gv < 0.0) lo = phi; else hi = phi;
+                const double dg = 2.0 * (th * c - t2 + th * t2 * s);
+                double next = phi - gv / dg;
+                if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi);
+                const double step = next - phi;
+                phi = next;
+                if (std::abs(step) <= tol::newton_step ||
+                    hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * th)
+                    break;
+            }
+            return at({3, th - phi});
+        }
+    }
+    const auto u = march_to_chord(CoilPiece{b}, CoilBound{b}, -from.pos, chord, th, -1.0, tha, kMarchStep);
     if (!u) return std::nullopt;
     return at({3, *u});
 }
