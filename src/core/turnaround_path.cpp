@@ -242,7 +242,9 @@ std::optional<Located> TurnaroundPath::behind_on_coil_out(const Located& from, d
             return at({3, th - phi});
         }
     }
-    const auto u = march_to_chord(CoilPiece{b}, CoilBound{b}, -from.pos, chord, th, -1.0, tha, kMarchStep);
+    // No root within the monotone bracket (g < 0 all over it): the march may start at its end.
+    const double start = (tha >= 1.0 && hi0 > 0.0) ? th - hi0 : th;
+    const auto u = march_to_chord(CoilPiece{b}, CoilBound{b}, -from.pos, chord, start, -1.0, tha, kMarchStep);
     if (!u) return std::nullopt;
     return at({3, *u});
 }

@@ -91,21 +91,27 @@ TEST(TurnaroundPath, ArcLengthAndCurvatureMatchFiniteDifferences) {
 // join and places right on it, for the chain's links and for longer chords that cut the path
 // several times.
 TEST(TurnaroundPath, BehindMatchesABruteForceScan) {
-    const TurnaroundPath path = default_path();
-    std::vector<double> from;
-    std::mt19937_64 rng(20240906);
-    std::uniform_real_distribution<double> any(-30.0, 60.0);
-    for (int i = 0; i < 60; ++i) from.push_back(any(rng));
-    for (int piece = 1; piece <= 3; ++piece)
-        for (double off : {-0.5, -1e-7, 0.0, 1e-7, 0.5}) from.push_back(path.join_arc(piece) + off);
-    for (double s : from) {
-        for (double chord : {0.3, 1.65, 2.86, 4.0, 6.5}) {
-            SCOPED_TRACE(::testing::Message() << "from s = " << s << ", chord " << chord);
-            const Located f = path.at_arc(s);
-            const auto r = path.behind(f, chord);
-            ASSERT_TRUE(r.has_value());
-            EXPECT_NEAR(distance(r->pos, f.pos), chord, 1e-10);
-            EXPECT_NEAR(path.arc(r->place), brute_behind(path, s, chord), 1e-8);
+    // The contest's design, a tiny turn (entry angle below 1 rad: the general march on the
+    // coil-out spiral), and a tight pitch with a big second arc.
+    for (const SCurve& design : {design_s_curve(1.7, 4.5, 2.0), design_s_curve(1.7, 0.2, 2.0),
+                                 design_s_curve(0.55, 4.5, 0.5)}) {
+        const TurnaroundPath path(design);
+        std::vector<double> from;
+        std::mt19937_64 rng(20240906);
+        std::uniform_real_distribution<double> any(-30.0, 60.0);
+        for (int i = 0; i < 60; ++i) from.push_back(any(rng));
+        for (int piece = 1; piece <= 3; ++piece)
+            for (double off : {-0.5, -1e-7, 0.0, 1e-7, 0.5}) from.push_back(path.join_arc(piece) + off);
+        for (double s : from) {
+            for (double chord : {0.3, 1.65, 2.86, 4.0, 6.5}) {
+                SCOPED_TRACE(::testing::Message() << "entry radius " << design.entry_radius << ", pitch "
+                                                  << design.pitch << ", from s = " << s << ", chord " << chord);
+                const Located f = path.at_arc(s);
+                const auto r = path.behind(f, chord);
+                ASSERT_TRUE(r.has_value());
+                EXPECT_NEAR(distance(r->pos, f.pos), chord, 1e-10);
+                EXPECT_NEAR(path.arc(r->place), brute_behind(path, s, chord), 1e-8);
+            }
         }
     }
 }
