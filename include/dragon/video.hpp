@@ -1,5 +1,5 @@
 // Videos: a streaming encoder (H.264 in MP4, VP9 in WebM, animated GIF) and the pipeline that
-// renders a simulation into it, one frame at a time, on a second thread.
+// renders a simulation into it on every core, never holding more than a few frames.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +9,9 @@
 #include <string>
 
 #include <cairo.h>
+
+#include "dragon/chain.hpp"
+#include "dragon/render.hpp"
 
 namespace dragon {
 
@@ -27,7 +30,8 @@ struct VideoOptions {
     int height = 720;
     double fps = 30.0;  // frames per second of the video, (0, 240]
     // Quality: constant rate factor; lower is better and larger. -1: the codec's default here
-    // (H.264: 23, VP9: 32). Ignored for GIF.
+    // (H.264: 20, sharper than x264's 23 on thin lines at little cost in size; VP9: 32).
+    // Ignored for GIF.
     int crf = -1;
     // libx264 preset (ultrafast .. veryslow). "veryfast" keeps 1080p above 50 fps on two cores
     // while staying sharp on flat-coloured drawings.
@@ -73,6 +77,10 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+// FFmpeg logs its codecs' chatter to stderr; after this call, errors only (a process-wide
+// setting: for tools such as the CLI, not for a library's users to be surprised by).
+void quiet_codec_logs();
+
 // Progress of a long encode: frames done of total, seconds since the start.
 struct Progress {
     int done = 0;
@@ -82,8 +90,9 @@ struct Progress {
 using ProgressFn = std::function<void(const Progress&)>;
 
 // Paints frame `index` (0-based) onto an ARGB32 image surface of the video's size; it must
-// paint every pixel opaque, and depend on the index alone. Called on the render thread, in
-// order; for a GIF also beforehand, on the caller's thread, for the palette's sample frames.
+// paint every pixel opaque and depend on the index alone. Called from several render threads
+// at once (so it must be safe to call concurrently), roughly in order; for a GIF also
+// beforehand, on the caller's thread, for the palette's sample frames.
 using PaintFn = std::function<void(int index, cairo_t* cr)>;
 
 struct EncodeStats {
@@ -92,11 +101,56 @@ struct EncodeStats {
     double fps() const { return seconds > 0 ? frames / seconds : 0.0; }
 };
 
-// Renders `frame_count` frames with `paint` on a render thread and encodes them on this one,
-// through a bounded queue of reusable surfaces, so drawing and encoding overlap. GIF palettes
-// are sampled from the first, middle and last frames first. Errors from either side stop both
-// and are rethrown here; the target is written only if every frame made it.
+// Renders `frame_count` frames with `paint` on render threads (one per core) and encodes them
+// in order on this one, through a ring of 2 reusable surfaces per render thread, so drawing
+// and encoding overlap and every core works. GIF palettes are sampled from the first, middle
+// and last frames first. An error on any thread stops them all and is rethrown here; the
+// target is written only if every frame made it.
 EncodeStats encode_frames(const std::string& path, const VideoOptions& opt, int frame_count,
                           const PaintFn& paint, const ProgressFn& progress = {});
+
+// ---- Films of a simulation -------------------------------------------------------------------
+
+// A stretch of simulated time shown as a film.
+struct Clip {
+    double from = 0.0;     // simulated seconds
+    double to = 0.0;       // simulated seconds, after `from`; the last frame shows exactly this moment
+    double speedup = 1.0;  // simulated seconds per second of video
+    double hold = 0.0;     // seconds of video the last moment stays on screen
+};
+
+// A clip made drawable: the moment and the scene of every frame. Frames are at from,
+// from + speedup / fps, ... and the last exactly at `to` (so a collision is the final picture),
+// then `hold` seconds more of `to`.
+class Animation {
+public:
+    // Throws InputError for an empty or reversed range, a time off the path (past the spiral's
+    // centre, say), a speedup or fps <= 0 or a negative hold. With the camera on fit_dragon the
+    // view is fixed for the whole clip: it fits the dragon at nine moments spread over it.
+    // `end_mark`: two benches that touch at `to`, drawn marked on the frames of that moment.
+    Animation(const Simulation& sim, Clip clip, double fps, SceneOptions scene,
+              std::optional<CollisionMark> end_mark = {});
+
+    int frame_count() const { return frame_count_; }
+    double fps() const { return fps_; }
+    const Clip& clip() const { return clip_; }
+    double time_at(int index) const;
+    Scene scene_at(int index) const;
+    // draw(scene_at(index)) onto a width x height picture.
+    void paint(int index, cairo_t* cr, int width, int height) const;
+
+private:
+    const Simulation* sim_;
+    Clip clip_;
+    double fps_;
+    SceneOptions scene_;
+    std::optional<CollisionMark> end_mark_;
+    int moving_frames_ = 0;
+    int frame_count_ = 0;
+};
+
+// Renders and encodes the animation at its frame rate (opt.fps is replaced by anim.fps()).
+EncodeStats write_video(const Animation& anim, const std::string& path, VideoOptions opt,
+                        const ProgressFn& progress = {});
 
 }  // namespace dragon

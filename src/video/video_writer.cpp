@@ -31,7 +31,7 @@ struct CodecChoice {
 
 CodecChoice codec_for(VideoFormat f) {
     switch (f) {
-        case VideoFormat::mp4: return {"libx264", AV_PIX_FMT_YUV420P, 23};
+        case VideoFormat::mp4: return {"libx264", AV_PIX_FMT_YUV420P, 20};
         case VideoFormat::webm: return {"libvpx-vp9", AV_PIX_FMT_YUV420P, 32};
         case VideoFormat::gif: return {"gif", AV_PIX_FMT_PAL8, -1};
     }
@@ -228,5 +228,7 @@ void VideoWriter::write(cairo_surface_t* surface) {
 }
 
 void VideoWriter::finish() { impl_->finish(); }
+
+void quiet_codec_logs() { av_log_set_level(AV_LOG_ERROR); }
 
 }  // namespace dragon

@@ -9,7 +9,7 @@
 
 #include "dragon/scenario.hpp"
 #include "dragon/video.hpp"
-#include "video/cairo_handles.hpp"
+#include "dragon/cairo_handles.hpp"
 #include "video/decode.hpp"
 #include "video/synthetic.hpp"
 
@@ -36,8 +36,8 @@ int temp_files_beside(const std::string& target) {
 }
 
 test::Rgb reference(int index, int width, int height) {
-    video::CairoSurface s(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
-    video::Cairo cr(cairo_create(s.get()));
+    cairo::Surface s(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
+    cairo::Context cr(cairo_create(s.get()));
     test::paint_synthetic(index, cr.get(), width, height);
     cairo_surface_flush(s.get());
     return test::rgb_from_argb32(cairo_image_surface_get_data(s.get()), width, height,
@@ -97,8 +97,8 @@ TEST(VideoWriter, DestroyedWithoutFinishLeavesNothing) {
         opt.width = 64;
         opt.height = 48;
         VideoWriter w(path, opt);
-        video::CairoSurface s(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, opt.width, opt.height));
-        video::Cairo cr(cairo_create(s.get()));
+        cairo::Surface s(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, opt.width, opt.height));
+        cairo::Context cr(cairo_create(s.get()));
         test::paint_synthetic(0, cr.get(), opt.width, opt.height);
         w.write(s.get());
         EXPECT_EQ(temp_files_beside(path), 1);

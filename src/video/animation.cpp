@@ -1,0 +1,106 @@
+// A clip of simulated time as a sequence of scenes, and its encoding.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "dragon/scenario.hpp"
+#include "dragon/video.hpp"
+
+namespace dragon {
+
+namespace {
+
+// Far beyond any sensible film (an hour at 240 fps is 864 000); stops a typo from running for days.
+constexpr int max_frames = 1'000'000;
+// Moments the fixed view is fitted to: the dragon coils in or out monotonically, so a few
+// spread samples bound it; the margin covers the motion in between.
+constexpr int camera_samples = 9;
+
+struct Box {
+    double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x;
+    double hi_x = -std::numeric_limits<double>::infinity(), hi_y = hi_x;
+    void add(Vec2 p) {
+        lo_x = std::min(lo_x, p.x);
+        lo_y = std::min(lo_y, p.y);
+        hi_x = std::max(hi_x, p.x);
+        hi_y = std::max(hi_y, p.y);
+    }
+};
+
+// One view for the whole clip, so the picture does not zoom as the dragon coils.
+Camera fixed_camera(const Simulation& sim, const Clip& clip, double margin) {
+    Box box;
+    for (int i = 0; i < camera_samples; ++i) {
+        const double t = clip.from + (clip.to - clip.from) * i / (camera_samples - 1);
+        for (const Rect& r : sim.frame(t).benches)
+            for (Vec2 p : corners(r).p) box.add(p);
+    }
+    const double w = box.hi_x - box.lo_x, h = box.hi_y - box.lo_y;
+    const double extent = std::max(w, h) * (1.0 + 2.0 * margin);
+    return Camera::at({0.5 * (box.lo_x + box.hi_x), 0.5 * (box.lo_y + box.hi_y)}, extent);
+}
+
+}  // namespace
+
+Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions scene,
+                     std::optional<CollisionMark> end_mark)
+    : sim_(&sim), clip_(clip), fps_(fps), scene_(std::move(scene)), end_mark_(end_mark) {
+    if (!std::isfinite(clip.from) || !std::isfinite(clip.to))
+        throw InputError(fmt::format("time range {} .. {} is not allowed: both ends must be finite seconds",
+                                     clip.from, clip.to));
+    if (!(clip.to > clip.from))
+        throw InputError(fmt::format("time range --from {} --to {} is empty: --to must be after --from",
+                                     clip.from, clip.to));
+    if (clip.to > sim.end_time())
+        throw InputError(fmt::format("--to {} is not allowed: the head reaches the end of the path (the "
+                                     "spiral's centre) at t = {:.6f} s", clip.to, sim.end_time()));
+    if (!(fps > 0.0) || !std::isfinite(fps))
+        throw InputError(fmt::format("--fps {} is not allowed: use a rate above 0", fps));
+    if (!(clip.speedup > 0.0) || !std::isfinite(clip.speedup))
+        throw InputError(fmt::format("--speedup {} is not allowed: use simulated seconds per video second above 0",
+                                     clip.speedup));
+    if (!(clip.hold >= 0.0) || !std::isfinite(clip.hold))
+        throw InputError(fmt::format("--hold {} is not allowed: use seconds >= 0", clip.hold));
+
+    const double steps = (clip.to - clip.from) * fps / clip.speedup;
+    const double hold_frames = std::round(clip.hold * fps);
+    if (steps + hold_frames + 1 > max_frames)
+        throw InputError(fmt::format("the film would have {:.0f} frames, more than {}: raise --speedup or "
+                                     "lower --fps", steps + hold_frames + 1, max_frames));
+    // Tolerate float noise: 10 s at 30 fps is 300 steps, not 301.
+    moving_frames_ = static_cast<int>(std::ceil(steps - 1e-9)) + 1;
+    frame_count_ = moving_frames_ + static_cast<int>(hold_frames);
+
+    // Both ends on the path (throws InputError otherwise), before any file is touched.
+    sim.frame(clip.from);
+    sim.frame(clip.to);
+    if (scene_.camera.mode == Camera::Mode::fit_dragon) scene_.camera = fixed_camera(sim, clip, scene_.camera.margin);
+}
+
+double Animation::time_at(int index) const {
+    if (index >= moving_frames_ - 1) return clip_.to;
+    return clip_.from + index * clip_.speedup / fps_;
+}
+
+Scene Animation::scene_at(int index) const {
+    const double t = time_at(index);
+    SceneOptions opt = scene_;
+    if (end_mark_ && t == clip_.to) opt.collision = end_mark_;
+    return make_scene(*sim_, sim_->frame(t), opt);
+}
+
+void Animation::paint(int index, cairo_t* cr, int width, int height) const {
+    draw(cr, scene_at(index), width, height);
+}
+
+EncodeStats write_video(const Animation& anim, const std::string& path, VideoOptions opt,
+                        const ProgressFn& progress) {
+    opt.fps = anim.fps();
+    const int w = opt.width, h = opt.height;
+    return encode_frames(path, opt, anim.frame_count(),
+                         [&](int index, cairo_t* cr) { anim.paint(index, cr, w, h); }, progress);
+}
+
+}  // namespace dragon

@@ -1,0 +1,128 @@
+// Films of a simulation: frame timing, the clip's checks, and a decoded frame against the
+// renderer's own picture of that moment.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "dragon/cairo_handles.hpp"
+#include "dragon/scenario.hpp"
+#include "dragon/video.hpp"
+#include "video/decode.hpp"
+
+namespace fs = std::filesystem;
+using namespace dragon;
+
+namespace {
+
+std::string scratch(const std::string& name) {
+    const fs::path dir = fs::path(DRAGON_TEST_TMP) / "animation";
+    fs::create_directories(dir);
+    const fs::path p = dir / name;
+    fs::remove(p);
+    return p.string();
+}
+
+test::Rgb rendered(const Animation& anim, int index, int width, int height) {
+    cairo::Surface s(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
+    cairo::Context cr(cairo_create(s.get()));
+    anim.paint(index, cr.get(), width, height);
+    cairo_surface_flush(s.get());
+    return test::rgb_from_argb32(cairo_image_surface_get_data(s.get()), width, height,
+                                 cairo_image_surface_get_stride(s.get()));
+}
+
+TEST(Animation, FramesStepBySpeedupOverFpsAndEndExactlyAtTo) {
+    const Simulation sim(Scenario{});
+    const Clip clip{10.0, 11.05, 0.5, 0.4};  // 1.05 s at 0.5 s per video second
+    const double fps = 10;
+    const Animation anim(sim, clip, fps, SceneOptions{});
+    const double step = clip.speedup / fps;
+    const int moving = static_cast<int>(std::ceil((clip.to - clip.from) / step - 1e-9)) + 1;
+    const int hold = static_cast<int>(std::lround(clip.hold * fps));
+    ASSERT_EQ(anim.frame_count(), moving + hold);
+    for (int i = 0; i + 1 < moving; ++i) EXPECT_DOUBLE_EQ(anim.time_at(i), clip.from + i * step);
+    for (int i = moving - 1; i < anim.frame_count(); ++i) EXPECT_EQ(anim.time_at(i), clip.to);
+    EXPECT_LT(anim.time_at(moving - 2), clip.to);
+}
+
+TEST(Animation, WholeStepsGiveNoExtraFrame) {
+    const Simulation sim(Scenario{});
+    const Animation anim(sim, Clip{0.0, 10.0, 1.0, 0.0}, 30, SceneOptions{});
+    EXPECT_EQ(anim.frame_count(), 301);  // 0, 1/30, ..., 10 s
+}
+
+TEST(Animation, RejectsEmptyRangesAndTimesOffThePath) {
+    const Simulation sim(Scenario{});
+    EXPECT_THROW(Animation(sim, Clip{5.0, 5.0}, 30, SceneOptions{}), InputError);
+    EXPECT_THROW(Animation(sim, Clip{5.0, 4.0}, 30, SceneOptions{}), InputError);
+    EXPECT_THROW(Animation(sim, Clip{0.0, sim.end_time() + 1.0}, 30, SceneOptions{}), InputError);
+    EXPECT_THROW(Animation(sim, Clip{0.0, 1.0, 0.0}, 30, SceneOptions{}), InputError);
+    EXPECT_THROW(Animation(sim, Clip{0.0, 1.0}, 0.0, SceneOptions{}), InputError);
+    EXPECT_THROW(Animation(sim, Clip{0.0, 1.0, 1.0, -1.0}, 30, SceneOptions{}), InputError);
+}
+
+TEST(Animation, CollisionIsMarkedOnlyAtTheEnd) {
+    const Simulation sim(Scenario{});
+    const CollisionMark mark{1, 9, {1.0, 2.0}};
+    const Animation anim(sim, Clip{0.0, 2.0, 1.0, 0.5}, 4, SceneOptions{}, mark);
+    for (int i = 0; i < anim.frame_count(); ++i) {
+        const Scene s = anim.scene_at(i);
+        EXPECT_EQ(s.collision.has_value(), anim.time_at(i) == 2.0) << "frame " << i;
+    }
+}
+
+TEST(Animation, ViewStaysFixedWhileTheDragonCoils) {
+    const Simulation sim(Scenario{});
+    const Animation anim(sim, Clip{0.0, 200.0, 50.0}, 1, SceneOptions{});
+    const Scene first = anim.scene_at(0), last = anim.scene_at(anim.frame_count() - 1);
+    EXPECT_EQ(first.view_centre.x, last.view_centre.x);
+    EXPECT_EQ(first.view_width, last.view_width);
+}
+
+TEST(Animation, DecodedH264FrameMatchesTheRenderersPicture) {
+    Scenario s;
+    const Simulation sim(s);
+    const Animation anim(sim, Clip{100.0, 104.0, 2.0}, 10, SceneOptions{});
+    VideoOptions opt;  // the defaults but the size: H.264, veryfast, crf 20
+    opt.width = 640;
+    opt.height = 360;
+    const std::string path = scratch("coil.mp4");
+    const EncodeStats stats = write_video(anim, path, opt);
+    EXPECT_EQ(stats.frames, anim.frame_count());
+
+    const int keep = anim.frame_count() / 2;
+    const test::DecodedVideo v = test::decode_video(path, keep);
+    EXPECT_EQ(v.codec, "h264");
+    EXPECT_EQ(v.frames, anim.frame_count());
+    EXPECT_EQ(v.width, opt.width);
+    EXPECT_EQ(v.height, opt.height);
+    EXPECT_NEAR(v.duration, anim.frame_count() / anim.fps(), 0.5 / anim.fps());
+    const double db = test::psnr(v.kept, rendered(anim, keep, opt.width, opt.height));
+    RecordProperty("psnr_db", std::to_string(db));
+    std::printf("PSNR of frame %d (t = %.3f s): %.2f dB\n", keep, anim.time_at(keep), db);
+    EXPECT_GT(db, 30.0);
+}
+
+TEST(Animation, GifOfTheTurnaroundRoundTrips) {
+    Scenario s;
+    s.path.kind = PathKind::turnaround;
+    const Simulation sim(s);
+    const Animation anim(sim, Clip{-4.0, 4.0, 4.0}, 5, SceneOptions{});
+    VideoOptions opt;
+    opt.width = 200;
+    opt.height = 150;
+    const std::string path = scratch("turn.gif");
+    write_video(anim, path, opt);
+    const int keep = 3;
+    const test::DecodedVideo v = test::decode_video(path, keep);
+    EXPECT_EQ(v.codec, "gif");
+    EXPECT_EQ(v.frames, anim.frame_count());
+    const double db = test::psnr(v.kept, rendered(anim, keep, opt.width, opt.height));
+    std::printf("GIF PSNR of frame %d: %.2f dB\n", keep, db);
+    EXPECT_GT(db, 25.0);
+}
+
+}  // namespace
