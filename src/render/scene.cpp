@@ -59,6 +59,29 @@ Rgba guide_colour(const Theme& theme, PathKind kind, int piece) {
     return piece <= 2 ? theme.s_curve : theme.guide_out;
 }
 
+// The arc ranges of the guide not hidden under a bench. Between two handles the path bulges
+// from the chord by the sagitta kappa d^2 / 8; while that stays well inside the board's half
+// width the opaque bench covers the path there, and drawing it would only cost time (a whole
+// spiral under the dragon is most of a frame's stroking). Where the path curves sharply (the
+// S-curve, the head near the centre) the guide is kept.
+std::vector<std::pair<double, double>> visible_ranges(const Path& path, const BenchSpec& spec,
+                                                      const Frame& frame, double s0, double s1) {
+    std::vector<std::pair<double, double>> out;
+    double from = s0;  // start of the current visible range
+    const int n = static_cast<int>(frame.handles.size()) - 1;
+    for (int k = n; k >= 1; --k) {  // links from the tail forward: arc positions increase
+        const Place rear = frame.handles[k].place, front = frame.handles[k - 1].place;
+        const double kappa = std::max(std::abs(path.curvature(rear)), std::abs(path.curvature(front)));
+        const double d = spec.link_length(k);
+        if (kappa * d * d / 8.0 >= 0.6 * 0.5 * spec.width) continue;  // visible beside the board
+        const double a = path.arc(rear), b = path.arc(front);
+        if (a > from) out.push_back({from, a});
+        from = std::max(from, b);
+    }
+    if (s1 > from) out.push_back({from, s1});
+    return out;
+}
+
 void add_guides(Scene& scene, const Simulation& sim, const Frame& frame) {
     const Path& path = sim.path();
     const BenchSpec& spec = sim.scenario().bench;
@@ -72,12 +95,14 @@ void add_guides(Scene& scene, const Simulation& sim, const Frame& frame) {
     const double s1 = std::isinf(path.s_max()) ? frame.head_arc + chain_length : path.s_max();
     const double view = std::max(scene.view_width, scene.view_height);
     const PathKind kind = sim.scenario().path.kind;
-    for (auto& run : render::path_beziers(path, s0, s1, view / 40.0)) {
-        Scene::Guide g;
-        g.beziers = std::move(run.beziers);
-        g.colour = guide_colour(scene.theme, kind, run.piece);
-        g.width_px = (kind == PathKind::turnaround && run.piece >= 1 && run.piece <= 2) ? 2.0 : 1.0;
-        scene.guides.push_back(std::move(g));
+    for (auto [a, b] : visible_ranges(path, spec, frame, s0, s1)) {
+        for (auto& run : render::path_beziers(path, a, b, view / 40.0)) {
+            Scene::Guide g;
+            g.beziers = std::move(run.beziers);
+            g.colour = guide_colour(scene.theme, kind, run.piece);
+            g.width_px = (kind == PathKind::turnaround && run.piece >= 1 && run.piece <= 2) ? 2.0 : 1.0;
+            scene.guides.push_back(std::move(g));
+        }
     }
 }
 
