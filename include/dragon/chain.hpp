@@ -51,6 +51,9 @@ public:
     // The latest time the head stays on the path (the spiral's centre; +inf on the turnaround).
     double end_time() const;
 
+    // Throws InputError (naming `what`, e.g. "--to") unless the head is on the path at time t.
+    void require_on_path(double t, const char* what) const;
+
     Frame frame(double t) const;
     void frame_into(double t, Frame& out) const;
 

@@ -8,6 +8,10 @@ namespace dragon::tol {
 // positions good to ~1e-14 m on a 10 m spiral, far below the 6 printed decimals.
 inline constexpr double newton_step = 1e-9;
 
+// Halley's method (cubic convergence) stops after a step below this (radians): the error left
+// is of order step^3 ~ 1e-18 rad.
+inline constexpr double halley_step = 1e-6;
+
 // Relative tolerance for inverting arc length (dimensionless): 1e-15 of a ~450 m spiral is
 // still sub-picometre.
 inline constexpr double arc_relative = 1e-15;

@@ -11,6 +11,8 @@ namespace dragon {
 
 // The contest's row label of a handle (0..N): 龙头, 第k节龙身, 龙尾, 龙尾（后）.
 std::string handle_label(int handle, int handle_count);
+// A time without binary noise: "300", "-100", "0.1", "412.4738".
+std::string format_time(double t);
 // A time header as the contest writes it: "0 s", "-100 s", "0.5 s".
 std::string time_header(double t);
 

@@ -13,13 +13,6 @@ void pending(CLI::App& app, Registry& reg, const char* name, const char* what) {
 }
 }  // namespace
 
-void register_simulate(CLI::App& app, Registry& reg) { pending(app, reg, "simulate", "Q1 tables"); }
-void register_solve(CLI::App& app, Registry& reg) { pending(app, reg, "solve", "All questions"); }
-void register_collide(CLI::App& app, Registry& reg) { pending(app, reg, "collide", "Q2"); }
-void register_min_pitch(CLI::App& app, Registry& reg) { pending(app, reg, "min-pitch", "Q3"); }
-void register_turnaround(CLI::App& app, Registry& reg) { pending(app, reg, "turnaround", "Q4: the S-curve turnaround"); }
-void register_render(CLI::App& app, Registry& reg) { pending(app, reg, "render", "Draw one moment to PNG or SVG"); }
 void register_figures(CLI::App& app, Registry& reg) { pending(app, reg, "figures", "The figure gallery"); }
-void register_video(CLI::App& app, Registry& reg) { pending(app, reg, "video", "Animate to MP4, WebM or GIF"); }
 
 }  // namespace dragon::cli

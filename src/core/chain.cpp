@@ -37,7 +37,8 @@ void solve_chain(const Path& path, const BenchSpec& spec, double head_arc, doubl
         const double along_rear = dot(next->tangent, u);
         const double v = out.handles[static_cast<size_t>(i)].speed * along_front / along_rear;
         out.handles[static_cast<size_t>(i + 1)] = {next->pos, next->tangent, v, next->place};
-        out.benches[static_cast<size_t>(i)] = bench_rect(spec, i + 1, cur.pos, next->pos);
+        out.benches[static_cast<size_t>(i)] = {0.5 * (cur.pos + next->pos), u,
+                                               0.5 * spec.board_length(i + 1), 0.5 * spec.width};
         cur = *next;
     }
 }
@@ -55,7 +56,22 @@ double Simulation::end_time() const {
     return (smax - start_arc_) / scenario_.head_speed;
 }
 
+void Simulation::require_on_path(double t, const char* what) const {
+    if (!std::isfinite(t))
+        throw InputError(fmt::format("{} {} is not allowed: it must be a finite time in seconds", what, t));
+    const double s = head_arc(t);
+    if (s > path_->s_max()) {
+        throw InputError(fmt::format("{} {} is not allowed: the head reaches the end of the path "
+                                     "(the spiral's centre) at t = {:.6f} s", what, t, end_time()));
+    }
+    if (s < path_->s_min()) {
+        throw InputError(fmt::format("{} {} is not allowed: it puts the head before the start of the path",
+                                     what, t));
+    }
+}
+
 void Simulation::frame_into(double t, Frame& out) const {
+    require_on_path(t, "time");
     out.time = t;
     solve_chain(*path_, scenario_.bench, head_arc(t), scenario_.head_speed, out);
 }

@@ -88,20 +88,36 @@ std::optional<Located> Spiral::behind(const Located& from, double chord) const {
     // Start from the circle approximation: a chord k at radius ~theta subtends 2 asin(k / 2 theta).
     const double rad = std::sqrt(th * th + 1.0);
     double phi = (k < 2.0 * rad) ? 2.0 * std::asin(k / (2.0 * rad)) : 0.5 * kPi;
+    // Halley's method (cubic convergence) with a bisection fallback. g' and g'' reuse the same
+    // cos and sin, so each iteration costs one sincos.
+    double c = 1.0, s = 0.0, step = 0.0;
     for (int it = 0; it < tol::max_newton; ++it) {
         const double t2 = th + phi;
-        const double c = std::cos(phi), s = std::sin(phi);
+        c = std::cos(phi);
+        s = std::sin(phi);
         const double g = th * th + t2 * t2 - 2.0 * th * t2 * c - k2;
         if (g < 0.0) lo = phi; else hi = phi;
         const double dg = 2.0 * (t2 - th * c + th * t2 * s);
-        double next = phi - g / dg;
-        // Closed bracket: at (or a rounding step from) the root, phi itself is an end of it.
-        if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi);
-        const double step = next - phi;
+        const double ddg = 2.0 * (1.0 + 2.0 * th * s + th * t2 * c);
+        double next = phi - 2.0 * g * dg / (2.0 * dg * dg - g * ddg);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        step = next - phi;
         phi = next;
-        if (std::abs(step) <= tol::newton_step || hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * (th + kPi)) break;
+        if (std::abs(step) <= tol::halley_step || hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * (th + kPi)) break;
     }
-    return at({0, th + phi});
+    const double th2 = th + phi;
+    if (th < 1.0 || std::abs(step) > tol::halley_step) return at({0, th2});
+    // cos and sin of the last step's end from those of its start (|step| <= 1e-6, so the dropped
+    // terms are below 1e-18), then of theta' = theta + phi by the angle-sum rule, with cos and
+    // sin of theta read off the previous handle's position: one sincos per handle saved.
+    const double cp = c * (1.0 - 0.5 * step * step) - s * step;
+    const double sp = s * (1.0 - 0.5 * step * step) + c * step;
+    const double r0 = b_ * th;
+    const double c0 = from.pos.x / r0, s0 = from.pos.y / r0;
+    const double c2 = c0 * cp - s0 * sp, s2 = s0 * cp + c0 * sp;
+    const double r2 = b_ * th2;
+    const double inv = 1.0 / std::sqrt(1.0 + th2 * th2);
+    return Located{{0, th2}, {r2 * c2, r2 * s2}, {-(c2 - th2 * s2) * inv, -(s2 + th2 * c2) * inv}};
 }
 
 }  // namespace dragon

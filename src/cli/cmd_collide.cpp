@@ -1,0 +1,66 @@
+// dragon collide (Q2): the first moment two benches touch.
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "cli/report.hpp"
+#include "cli/scenario_flags.hpp"
+#include "dragon/analyses.hpp"
+#include "dragon/atomic_file.hpp"
+#include "dragon/tables.hpp"
+
+namespace dragon::cli {
+
+namespace {
+struct CollideOptions {
+    ScenarioFlags scenario;
+    double from = 0.0;
+    std::optional<double> to;
+    bool json = false;
+    std::string out;
+};
+}  // namespace
+
+void register_collide(CLI::App& app, Registry& reg) {
+    auto opt = std::make_shared<CollideOptions>();
+    CLI::App* sub = app.add_subcommand("collide", "Q2: the first moment two benches touch, to 1e-9 s");
+    opt->scenario.add_to(sub);
+    sub->add_option("--from", opt->from, "Search from this time, s (default 0)");
+    sub->add_option("--to", opt->to, "Search up to this time, s (default: until the head reaches the centre)");
+    sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
+    sub->add_option("-o,--out", opt->out, "Also write the moment's handles (.xlsx: result2 layout, .csv, .json)");
+    reg["collide"] = [opt]() {
+        const Scenario s = opt->scenario.resolve();
+        const Simulation sim(s);
+        double to = opt->to.value_or(sim.end_time());
+        if (!std::isfinite(to))
+            throw InputError("--to is needed on the turnaround path (it has no end)");
+        if (!opt->out.empty()) AtomicFile probe(opt->out);
+        const std::optional<Contact> c = first_contact(sim, opt->from, to);
+        if (!c) {
+            if (opt->json)
+                fmt::print("{{\"time\": null, \"benches\": null, \"head_radius\": null, \"from\": {}, \"to\": {}}}\n",
+                           json_number(opt->from), json_number(to));
+            else
+                fmt::print("no collision between t = {} s and t = {} s\n", format_time(opt->from), format_time(to));
+            return 0;
+        }
+        if (!opt->out.empty()) {
+            if (extension_of(opt->out) == ".xlsx") write_result2_xlsx(c->frame, opt->out);
+            else write_table({c->frame}, opt->out);
+        }
+        if (opt->json) {
+            fmt::print("{{\"time\": {}, \"benches\": [{}, {}], \"head_radius\": {}, \"point\": [{}, {}], "
+                       "\"tolerance\": {}, \"evaluations\": {}, \"handles\": {}}}\n",
+                       json_number(c->time), c->bench_a, c->bench_b, json_number(c->head_radius),
+                       json_number(c->point.x), json_number(c->point.y), 1e-9, c->steps,
+                       handles_json(c->frame));
+        } else {
+            fmt::print("first contact at t = {:.9f} s: bench {} touches bench {}; head radius {:.6f} m\n",
+                       c->time, c->bench_a, c->bench_b, c->head_radius);
+            print_single_frame(fmt::format("handles at t = {:.6f} s", c->time), c->frame);
+        }
+        return 0;
+    };
+}
+
+}  // namespace dragon::cli

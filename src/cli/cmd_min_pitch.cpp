@@ -1,0 +1,54 @@
+// dragon min-pitch (Q3): the smallest pitch that reaches the turning space collision-free.
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "cli/report.hpp"
+#include "cli/scenario_flags.hpp"
+#include "dragon/analyses.hpp"
+
+namespace dragon::cli {
+
+namespace {
+struct MinPitchOptions {
+    ScenarioFlags scenario;
+    double lo = 0.35, hi = 0.55;
+    bool json = false;
+};
+}  // namespace
+
+void register_min_pitch(CLI::App& app, Registry& reg) {
+    auto opt = std::make_shared<MinPitchOptions>();
+    CLI::App* sub = app.add_subcommand(
+        "min-pitch", "Q3: the smallest pitch with which the head reaches the turning space collision-free");
+    opt->scenario.add_to(sub);
+    sub->add_option("--lo", opt->lo, "Smallest pitch searched, m (default 0.35)");
+    sub->add_option("--hi", opt->hi, "Largest pitch searched, m (default 0.55)");
+    sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
+    reg["min-pitch"] = [opt]() {
+        const Scenario s = opt->scenario.resolve();
+        const MinPitch m = min_pitch(s, opt->lo, opt->hi);
+        if (opt->json) {
+            std::string iv;
+            for (const PitchInterval& i : m.intervals)
+                iv += fmt::format("{}{{\"lo\": {}, \"hi\": {}, \"feasible\": {}}}", iv.empty() ? "" : ", ",
+                                  json_number(i.lo), json_number(i.hi), i.feasible ? "true" : "false");
+            fmt::print("{{\"pitch\": {}, \"turn_radius\": {}, \"search\": [{}, {}], \"intervals\": [{}], "
+                       "\"guarantee\": \"{}\"}}\n",
+                       json_number(m.pitch), json_number(s.path.turn_radius), json_number(m.search_lo),
+                       json_number(m.search_hi), iv, m.guarantee);
+            return 0;
+        }
+        if (std::isnan(m.pitch))
+            fmt::print("no pitch in [{}, {}] m reaches radius {} m without a collision\n", m.search_lo,
+                       m.search_hi, s.path.turn_radius);
+        else
+            fmt::print("minimum pitch: {:.8f} m (head reaches radius {} m with no collision on the way)\n",
+                       m.pitch, s.path.turn_radius);
+        for (const PitchInterval& i : m.intervals)
+            fmt::print("  [{:.8f}, {:.8f}] m  {}\n", i.lo, i.hi, i.feasible ? "collision-free" : "collides");
+        fmt::print("search: {}\n", m.guarantee);
+        return 0;
+    };
+}
+
+}  // namespace dragon::cli

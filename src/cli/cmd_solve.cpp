@@ -1,0 +1,118 @@
+// dragon solve: all five contest questions on one scenario: the workbooks, summary.json and
+// the paper-style tables.
+#include <chrono>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "cli/report.hpp"
+#include "cli/scenario_flags.hpp"
+#include "dragon/analyses.hpp"
+#include "dragon/atomic_file.hpp"
+#include "dragon/tables.hpp"
+#include "dragon/turnaround.hpp"
+
+namespace dragon::cli {
+
+namespace {
+
+struct SolveOptions {
+    ScenarioFlags scenario;
+    std::string dir = "out";
+};
+
+std::vector<const Frame*> pick(const std::vector<Frame>& frames, double t0, double step, double every) {
+    std::vector<const Frame*> out;
+    const int stride = static_cast<int>(std::lround(every / step));
+    for (size_t k = 0; k < frames.size(); k += static_cast<size_t>(stride)) out.push_back(&frames[k]);
+    (void)t0;
+    return out;
+}
+
+void write_text(const std::string& path, const std::string& text) {
+    AtomicFile out(path);
+    std::FILE* f = std::fopen(out.temp_path().c_str(), "wb");
+    if (!f) throw std::runtime_error(fmt::format("cannot create '{}'", path));
+    const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    if (std::fclose(f) != 0 || !ok) throw std::runtime_error(fmt::format("cannot write '{}'", path));
+    out.commit();
+}
+
+}  // namespace
+
+void register_solve(CLI::App& app, Registry& reg) {
+    auto opt = std::make_shared<SolveOptions>();
+    CLI::App* sub = app.add_subcommand(
+        "solve", "All five questions: result1/2/4.xlsx, summary.json and the paper-style tables");
+    opt->scenario.add_to(sub);
+    sub->add_option("-o,--out", opt->dir, "Output folder (created if missing; default out)");
+    reg["solve"] = [opt]() {
+        Scenario s = opt->scenario.resolve();
+        s.path.kind = PathKind::spiral;
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        fs::create_directories(opt->dir, ec);
+        if (!fs::is_directory(opt->dir))
+            throw InputError(fmt::format("-o {} is not allowed: the folder cannot be created", opt->dir));
+        const auto file = [&](const char* name) { return (fs::path(opt->dir) / name).string(); };
+        std::string summary = "{\n";
+
+        // Q1: coiling in, 0..300 s.
+        const Simulation sim(s);
+        const double q1_end = std::min(300.0, std::floor(sim.end_time()));
+        const std::vector<Frame> q1 = simulate_table(sim, 0.0, q1_end, 1.0);
+        write_result_xlsx(q1, file("result1.xlsx"));
+        print_frame_table("Q1: positions (m) and speeds (m/s) while coiling in", pick(q1, 0.0, 1.0, 60.0));
+        summary += fmt::format("  \"q1\": {{\"file\": \"result1.xlsx\", \"times\": [0, {}]}},\n", q1_end);
+
+        // Q2: the termination time.
+        const std::optional<Contact> c = first_contact(sim, 0.0, sim.end_time());
+        if (c) {
+            write_result2_xlsx(c->frame, file("result2.xlsx"));
+            fmt::print("\nQ2: benches {} and {} touch at t = {:.6f} s (head radius {:.6f} m)\n", c->bench_a,
+                       c->bench_b, c->time, c->head_radius);
+            print_single_frame("", c->frame);
+            summary += fmt::format("  \"q2\": {{\"time\": {}, \"benches\": [{}, {}], \"head_radius\": {}}},\n",
+                                   json_number(c->time), c->bench_a, c->bench_b, json_number(c->head_radius));
+        } else {
+            fmt::print("\nQ2: no collision before the head reaches the centre\n");
+            summary += "  \"q2\": null,\n";
+        }
+
+        // Q3: the minimum pitch.
+        const MinPitch m = min_pitch(s, 0.35, 0.55);
+        fmt::print("\nQ3: minimum pitch {:.8f} m to reach radius {} m collision-free\n", m.pitch, s.path.turn_radius);
+        std::string iv;
+        for (const PitchInterval& i : m.intervals) {
+            fmt::print("  [{:.8f}, {:.8f}] m  {}\n", i.lo, i.hi, i.feasible ? "collision-free" : "collides");
+            iv += fmt::format("{}{{\"lo\": {}, \"hi\": {}, \"feasible\": {}}}", iv.empty() ? "" : ", ",
+                              json_number(i.lo), json_number(i.hi), i.feasible ? "true" : "false");
+        }
+        summary += fmt::format("  \"q3\": {{\"pitch\": {}, \"intervals\": [{}]}},\n", json_number(m.pitch), iv);
+
+        // Q4: the turnaround, -100..100 s.
+        Scenario turn = s;
+        turn.path.kind = PathKind::turnaround;
+        const Simulation tsim(turn);
+        const std::vector<Frame> q4 = simulate_table(tsim, -100.0, 100.0, 1.0);
+        write_result_xlsx(q4, file("result4.xlsx"));
+        const SCurve sc = design_s_curve(turn);
+        fmt::print("\nQ4: S-curve r1 = {:.6f} m, r2 = {:.6f} m, length {:.6f} m\n", sc.r1, sc.r2, sc.length);
+        print_frame_table("Q4: positions (m) and speeds (m/s) around the turn", pick(q4, -100.0, 1.0, 50.0));
+        summary += fmt::format("  \"q4\": {{\"file\": \"result4.xlsx\", \"r1\": {}, \"r2\": {}, \"length\": {}}},\n",
+                               json_number(sc.r1), json_number(sc.r2), json_number(sc.length));
+
+        // Q5: the speed limit.
+        const MaxSpeed v = max_head_speed(turn, 2.0);
+        fmt::print("\nQ5: largest head speed {:.6f} m/s (speed ratio {:.6f} at handle {}, t = {:.6f} s)\n",
+                   v.max_head_speed, v.ratio, v.handle, v.time);
+        summary += fmt::format("  \"q5\": {{\"max_head_speed\": {}, \"ratio\": {}, \"handle\": {}, \"time\": {}}}\n}}\n",
+                               json_number(v.max_head_speed), json_number(v.ratio), v.handle, json_number(v.time));
+        write_text(file("summary.json"), summary);
+        fmt::print("\nwrote result1.xlsx, result2.xlsx, result4.xlsx and summary.json in {}\n", opt->dir);
+        return 0;
+    };
+}
+
+}  // namespace dragon::cli

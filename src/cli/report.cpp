@@ -1,0 +1,72 @@
+#include "cli/report.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "dragon/tables.hpp"
+
+namespace dragon::cli {
+
+std::vector<int> summary_handles(int handle_count) {
+    std::vector<int> out;
+    for (int h : {0, 1, 51, 101, 151, 201})
+        if (h < handle_count - 1) out.push_back(h);
+    out.push_back(handle_count - 1);
+    return out;
+}
+
+std::string handle_name(int handle, int handle_count) {
+    if (handle == 0) return "head";
+    if (handle == handle_count - 1) return "tail (rear)";
+    if (handle == handle_count - 2) return "tail";
+    return fmt::format("body {}", handle);
+}
+
+void print_frame_table(const std::string& title, const std::vector<const Frame*>& frames) {
+    if (frames.empty()) return;
+    const int n = static_cast<int>(frames.front()->handles.size());
+    fmt::print("{}\n{:<18}", title, "");
+    for (const Frame* f : frames) fmt::print("{:>12}", time_header(f->time));
+    fmt::print("\n");
+    for (int h : summary_handles(n)) {
+        const std::string name = handle_name(h, n);
+        fmt::print("{:<18}", name + " x (m)");
+        for (const Frame* f : frames) fmt::print("{:>12.6f}", round6(f->handles[static_cast<size_t>(h)].pos.x));
+        fmt::print("\n{:<18}", name + " y (m)");
+        for (const Frame* f : frames) fmt::print("{:>12.6f}", round6(f->handles[static_cast<size_t>(h)].pos.y));
+        fmt::print("\n");
+    }
+    for (int h : summary_handles(n)) {
+        fmt::print("{:<18}", handle_name(h, n) + " (m/s)");
+        for (const Frame* f : frames) fmt::print("{:>12.6f}", round6(f->handles[static_cast<size_t>(h)].speed));
+        fmt::print("\n");
+    }
+}
+
+void print_single_frame(const std::string& title, const Frame& frame) {
+    const int n = static_cast<int>(frame.handles.size());
+    fmt::print("{}\n{:<14}{:>12}{:>12}{:>12}\n", title, "", "x (m)", "y (m)", "speed (m/s)");
+    for (int h : summary_handles(n)) {
+        const Handle& hd = frame.handles[static_cast<size_t>(h)];
+        fmt::print("{:<14}{:>12.6f}{:>12.6f}{:>12.6f}\n", handle_name(h, n), round6(hd.pos.x),
+                   round6(hd.pos.y), round6(hd.speed));
+    }
+}
+
+std::string json_number(double v) {
+    if (!std::isfinite(v)) return "null";
+    return fmt::format("{}", v);
+}
+
+std::string handles_json(const Frame& frame) {
+    std::string out = "[";
+    for (size_t i = 0; i < frame.handles.size(); ++i) {
+        const Handle& h = frame.handles[i];
+        out += fmt::format("{}{{\"x\": {:.6f}, \"y\": {:.6f}, \"speed\": {:.6f}}}", i ? ", " : "",
+                           round6(h.pos.x), round6(h.pos.y), round6(h.speed));
+    }
+    return out + "]";
+}
+
+}  // namespace dragon::cli

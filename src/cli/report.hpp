@@ -1,0 +1,25 @@
+// Paper-style summary tables on stdout, and JSON fragments for --json answers.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dragon/analyses.hpp"
+
+namespace dragon::cli {
+
+// The handles the paper-style tables show: 0, 1, 51, 101, 151, 201 and the tail's rear handle
+// (those that exist for a shorter chain).
+std::vector<int> summary_handles(int handle_count);
+std::string handle_name(int handle, int handle_count);
+
+// Rows x and y for each summary handle, then its speed, one column per frame.
+void print_frame_table(const std::string& title, const std::vector<const Frame*>& frames);
+// One frame: a row per summary handle with x, y and speed.
+void print_single_frame(const std::string& title, const Frame& frame);
+
+// A JSON array of every handle: [{"x":..,"y":..,"speed":..}, ...] to 6 decimals.
+std::string handles_json(const Frame& frame);
+std::string json_number(double v);
+
+}  // namespace dragon::cli

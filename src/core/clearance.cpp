@@ -1,0 +1,90 @@
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/sat.hpp"
+#include "dragon/collision.hpp"
+
+namespace dragon {
+
+namespace {
+
+double bounding_radius(const Rect& r) { return std::hypot(r.half_length, r.half_width); }
+
+void consider(Clearance& best, const Frame& f, int i, int j) {
+    const Rect& a = f.benches[static_cast<size_t>(i)];
+    const Rect& b = f.benches[static_cast<size_t>(j)];
+    // The projected gap is a lower bound on the distance: skip the exact test when it cannot win.
+    if (sat_gap(a, b).gap >= best.distance) return;
+    const Separation s = separation(a, b);
+    if (s.distance < best.distance) best = {s.distance, i + 1, j + 1, s.axis, s.point};
+}
+
+}  // namespace
+
+// Sweep and prune on bounding circles: sort the benches by the left edge of their bounding
+// circle, then sweep; two rectangles within `margin` of each other have bounding circles within
+// `margin` too, so no such pair is skipped. Adjacent benches (sharing a handle) are excluded.
+std::vector<std::pair<int, int>> candidate_pairs(const Frame& f, double margin) {
+    const int n = static_cast<int>(f.benches.size());
+    struct Item {
+        double lo, hi;
+        int index;
+    };
+    std::vector<Item> items(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        const Rect& r = f.benches[static_cast<size_t>(i)];
+        const double rad = bounding_radius(r) + 0.5 * margin;
+        items[static_cast<size_t>(i)] = {r.centre.x - rad, r.centre.x + rad, i};
+    }
+    std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.lo < b.lo; });
+    std::vector<std::pair<int, int>> out;
+    for (size_t a = 0; a < items.size(); ++a) {
+        const Rect& ra = f.benches[static_cast<size_t>(items[a].index)];
+        const double rada = bounding_radius(ra);
+        for (size_t b = a + 1; b < items.size() && items[b].lo <= items[a].hi; ++b) {
+            const int i = std::min(items[a].index, items[b].index);
+            const int j = std::max(items[a].index, items[b].index);
+            if (j - i < 2) continue;
+            const Rect& rb = f.benches[static_cast<size_t>(items[b].index)];
+            const double reach = rada + bounding_radius(rb) + margin;
+            const Vec2 d = ra.centre - rb.centre;
+            if (dot(d, d) <= reach * reach) out.emplace_back(i + 1, j + 1);
+        }
+    }
+    return out;
+}
+
+Clearance clearance(const Frame& f, double cutoff) {
+    Clearance best{std::numeric_limits<double>::infinity(), 0, 0, {}, {}};
+    if (f.benches.size() < 3) return best;
+    // Every pair closer than `margin` is a candidate, so a best candidate within the margin is
+    // the true minimum; otherwise all pairs are farther apart than the margin.
+    const double margin = std::min(cutoff, 1.0);
+    const auto pairs = candidate_pairs(f, margin);
+    // Exact distances only where the cheap projected gap (a lower bound) could still win:
+    // seed with the pair of smallest gap, then test the rest against it.
+    std::vector<double> gaps(pairs.size());
+    size_t seed = 0;
+    for (size_t k = 0; k < pairs.size(); ++k) {
+        gaps[k] = sat_gap(f.benches[static_cast<size_t>(pairs[k].first - 1)],
+                          f.benches[static_cast<size_t>(pairs[k].second - 1)]).gap;
+        if (gaps[k] < gaps[seed]) seed = k;
+    }
+    if (!pairs.empty()) consider(best, f, pairs[seed].first - 1, pairs[seed].second - 1);
+    for (size_t k = 0; k < pairs.size(); ++k)
+        if (gaps[k] < best.distance) consider(best, f, pairs[k].first - 1, pairs[k].second - 1);
+    if (best.distance <= margin) return best;
+    if (cutoff <= margin) return {cutoff, best.bench_a, best.bench_b, best.axis, best.point};
+    return clearance_all_pairs(f);
+}
+
+Clearance clearance_all_pairs(const Frame& f) {
+    Clearance best{std::numeric_limits<double>::infinity(), 0, 0, {}, {}};
+    const int n = static_cast<int>(f.benches.size());
+    for (int i = 0; i < n; ++i)
+        for (int j = i + 2; j < n; ++j) consider(best, f, i, j);
+    return best;
+}
+
+}  // namespace dragon

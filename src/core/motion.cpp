@@ -1,0 +1,32 @@
+#include "core/motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dragon {
+
+std::vector<BenchMotion> bench_motions(const Frame& f) {
+    std::vector<BenchMotion> out(f.benches.size());
+    for (size_t k = 0; k < f.benches.size(); ++k) {
+        const Handle& front = f.handles[k];
+        const Handle& rear = f.handles[k + 1];
+        const Vec2 vf = front.speed * front.tangent, vr = rear.speed * rear.tangent;
+        const Vec2 d = front.pos - rear.pos;
+        const double len2 = dot(d, d);
+        out[k] = {f.benches[k].centre, 0.5 * (vf + vr), cross(d, vf - vr) / len2};
+    }
+    return out;
+}
+
+double separation_rate_bound(const Rect& a, const BenchMotion& ma, const BenchMotion& mb, double gap) {
+    const Corners c = corners(a);
+    double worst = 0.0;
+    for (const Vec2 p : c.p) worst = std::max(worst, norm(mb.at(p) - ma.at(p)));
+    return worst + std::abs(mb.omega) * std::max(gap, 0.0);
+}
+
+double max_point_speed(const Rect& r, const BenchMotion& m) {
+    return norm(m.v_centre) + std::abs(m.omega) * std::hypot(r.half_length, r.half_width);
+}
+
+}  // namespace dragon
