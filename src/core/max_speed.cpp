@@ -106,7 +106,8 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, doubl
     out.scan_step = ds / v;
     for (int k = 0; k <= steps; ++k) {
         const size_t i = static_cast<size_t>(k);
-        const bool up = k == 0 || rho[i] >= rho[i - 1];
+        // A plateau (say the head fastest, ratio exactly 1) counts once, at its first sample.
+        const bool up = k == 0 || rho[i] > rho[i - 1];
         const bool down = k == steps || rho[i] >= rho[i + 1];
         if (!up || !down || rho[i] + reach < best_coarse) continue;
         ++out.candidates;
