@@ -103,13 +103,19 @@ TEST(TurnaroundDesign, LengthIsTheSameForEveryRatio) {
     }
 }
 
-TEST(TurnaroundDesign, StaysInsideTheTurningSpace) {
-    const SCurve d = design_s_curve(1.7, 4.5, 2.0);
-    const TurnaroundPath path(d);
-    double far = 0.0;
-    for (int i = 0; i <= 100000; ++i) far = std::max(far, norm(path.at_arc(d.length * i / 100000).pos));
-    EXPECT_LE(d.max_radius, 4.5 + 1e-12);
-    EXPECT_NEAR(far, d.max_radius, 1e-6);
+// max_radius against a dense sampling of the S-curve, for ratios that put the farthest point
+// at an end and inside an arc.
+TEST(TurnaroundDesign, FarthestPointMatchesSampling) {
+    for (double ratio : {0.25, 1.0, 2.0, 10.0}) {
+        for (double radius : {4.5, 2.0}) {
+            const SCurve d = design_s_curve(1.7, radius, ratio);
+            const TurnaroundPath path(d);
+            double far = 0.0;
+            for (int i = 0; i <= 100000; ++i) far = std::max(far, norm(path.at_arc(d.length * i / 100000).pos));
+            EXPECT_NEAR(far, d.max_radius, 1e-6) << "ratio " << ratio << ", radius " << radius;
+        }
+    }
+    EXPECT_LE(design_s_curve(1.7, 4.5, 2.0).max_radius, 4.5 + 1e-12);
 }
 
 TEST(TurnaroundDesign, RejectsBadInput) {
