@@ -1,0 +1,110 @@
+// How close the benches come on the turnaround run, and whether they ever touch.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "core/motion.hpp"
+#include "dragon/analyses.hpp"
+#include "dragon/collision.hpp"
+#include "dragon/turnaround.hpp"
+
+namespace dragon {
+
+namespace {
+
+// Scan step, s. Between two samples the clearance can fall at most at the largest relative
+// speed of two bench points, L <= 2 max point speed (a few m/s at 1 m/s head speed), so with
+// clearances c_k, c_k+1 at the ends of a step its minimum over the step is at least
+// (c_k + c_k+1 - L dt) / 2: a positive bound certifies the step collision-free.
+constexpr double kScanStep = 0.05;
+// The point-speed bound is taken at the samples; allow it to grow by this factor within a step
+// (the benches' velocities change slowly; first_contact uses the same factor).
+constexpr double kSafety = 2.0;
+// Pairs farther apart than this count as this far, m: only the smallest clearance matters, and
+// the broad phase then looks at nearby pairs only.
+constexpr double kCutoff = 0.5;
+// Golden-section stop, s.
+constexpr double kTimeTolerance = 1e-9;
+
+double fastest_point(const Frame& f) {
+    const std::vector<BenchMotion> motion = bench_motions(f);
+    double fastest = 0.0;
+    for (size_t k = 0; k < f.benches.size(); ++k)
+        fastest = std::max(fastest, max_point_speed(f.benches[k], motion[k]));
+    return fastest;
+}
+
+}  // namespace
+
+RunClearance min_clearance(const Scenario& scenario, double t0, double t1) {
+    if (!std::isfinite(t0) || !std::isfinite(t1) || t1 <= t0)
+        throw InputError(fmt::format("time range {}..{} is not allowed: it must be finite and "
+                                     "non-empty", t0, t1));
+    Scenario s = scenario;
+    s.path.kind = PathKind::turnaround;
+    const Simulation sim(s);
+    Frame f;
+    RunClearance out{};
+    auto probe = [&](double t) {
+        ++out.evaluations;
+        sim.frame_into(t, f);
+        return clearance(f, kCutoff);
+    };
+
+    const int steps = std::max(2, static_cast<int>(std::ceil((t1 - t0) / kScanStep)));
+    const double dt = (t1 - t0) / steps;
+    out.scan_step = dt;
+    std::vector<double> c(static_cast<size_t>(steps) + 1), rate(c.size());
+    for (int k = 0; k <= steps; ++k) {
+        c[static_cast<size_t>(k)] = probe(t0 + k * dt).distance;
+        rate[static_cast<size_t>(k)] = 2.0 * fastest_point(f);
+    }
+
+    bool certified = true;
+    for (size_t i = 0; i + 1 < c.size(); ++i) {
+        const double l = kSafety * std::max(rate[i], rate[i + 1]);
+        if (c[i] + c[i + 1] - l * dt <= 0.0) certified = false;
+    }
+
+    // Refine each local minimum of the samples that could dip below the best sample: within a
+    // step of it the clearance falls at most about as fast as towards its neighbours.
+    const double best_coarse = *std::min_element(c.begin(), c.end());
+    out.distance = std::numeric_limits<double>::infinity();
+    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+    for (int k = 0; k <= steps; ++k) {
+        const size_t i = static_cast<size_t>(k);
+        const double left = k == 0 ? c[i] : c[i - 1], right = k == steps ? c[i] : c[i + 1];
+        // A plateau counts once, at its first sample.
+        if ((k > 0 && c[i] >= left) || c[i] > right || c[i] >= kCutoff) continue;
+        if (c[i] - 2.0 * std::max(left - c[i], right - c[i]) > best_coarse) continue;
+        double a = t0 + std::max(0, k - 1) * dt, b = t0 + std::min(steps, k + 1) * dt;
+        double x1 = b - g * (b - a), x2 = a + g * (b - a);
+        Clearance f1 = probe(x1), f2 = probe(x2);
+        while (b - a > kTimeTolerance) {
+            if (f1.distance <= f2.distance) {
+                b = x2; x2 = x1; f2 = f1;
+                x1 = b - g * (b - a); f1 = probe(x1);
+            } else {
+                a = x1; x1 = x2; f1 = f2;
+                x2 = a + g * (b - a); f2 = probe(x2);
+            }
+        }
+        const bool first = f1.distance <= f2.distance;
+        const Clearance& best = first ? f1 : f2;
+        if (best.distance < out.distance) {
+            out.distance = best.distance;
+            out.time = first ? x1 : x2;
+            out.bench_a = best.bench_a;
+            out.bench_b = best.bench_b;
+        }
+    }
+    if (out.distance == std::numeric_limits<double>::infinity()) out.distance = kCutoff;
+    // Not certified by the scan (benches come close, or touch): the exact search decides.
+    out.collision_free = certified || !first_contact(sim, t0, t1).has_value();
+    return out;
+}
+
+}  // namespace dragon
