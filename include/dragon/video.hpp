@@ -37,9 +37,12 @@ struct VideoOptions {
     // while staying sharp on flat-coloured drawings.
     std::string preset = "veryfast";
     int threads = 0;    // encoder threads, 0 = the codec decides
+    // GIF palette size, 2..256. Fewer colours make much smaller files of flat drawings; the
+    // palette keeps small distinct patches (head, tail) down to ~32.
+    int colours = 256;
 };
 // Throws InputError for a size or rate the format cannot take (odd size for yuv420p, fps <= 0,
-// an unknown preset, a crf out of range).
+// an unknown preset, a crf or palette size out of range).
 void validate(const VideoOptions& opt, VideoFormat format);
 
 // Encodes frames to a file as they come; never holds more than the codec's own look-ahead.

@@ -1,6 +1,7 @@
 #include "video/palette.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 
@@ -10,8 +11,15 @@ namespace {
 
 int channel(int bin, int c) { return (bin >> (palette_bits * (2 - c))) & 0x1f; }  // c: 0 r, 1 g, 2 b
 
+// A bin's say in where boxes split: the square root of its pixel count, so a small but
+// distinct patch (the head, the tail, a marked collision) wins its own entry against the
+// thousands of background and body pixels, while those still get the most entries.
+template <class Bin>
+double weight(const Bin& b) { return std::sqrt(static_cast<double>(b.count)); }
+
 struct Box {
     std::vector<int> bins;  // non-empty bins inside
+    double weight = 0;
     std::uint64_t count = 0;
     int widest = 0;         // channel with the largest range
     int range = 0;          // that range, in bins
@@ -23,6 +31,7 @@ Box make_box(std::vector<int> bins, const Hist& hist) {
     int lo[3] = {31, 31, 31}, hi[3] = {0, 0, 0};
     for (int b : bins) {
         box.count += hist[static_cast<size_t>(b)].count;
+        box.weight += weight(hist[static_cast<size_t>(b)]);
         for (int c = 0; c < 3; ++c) {
             lo[c] = std::min(lo[c], channel(b, c));
             hi[c] = std::max(hi[c], channel(b, c));
@@ -63,12 +72,11 @@ Palette PaletteBuilder::build(int max_colours) const {
     if (!seen.empty()) boxes.push_back(make_box(std::move(seen), hist_));
 
     while (static_cast<int>(boxes.size()) < max_colours) {
-        // Weight by population so the big anti-aliased ramps get entries before rare strays.
         auto best = boxes.end();
         double best_score = 0.0;
         for (auto it = boxes.begin(); it != boxes.end(); ++it) {
             if (it->bins.size() < 2) continue;
-            const double score = static_cast<double>(it->count) * it->range;
+            const double score = it->weight * it->range;
             if (score > best_score) {
                 best_score = score;
                 best = it;
@@ -80,13 +88,13 @@ Palette PaletteBuilder::build(int max_colours) const {
         const int c = box.widest;
         std::sort(box.bins.begin(), box.bins.end(),
                   [c](int a, int b) { return channel(a, c) < channel(b, c); });
-        // Split at the pixel median, but never leave a side empty.
-        std::uint64_t acc = 0;
+        // Split at the weighted median, but never leave a side empty.
+        double acc = 0;
         size_t cut = 1;
         for (size_t i = 0; i + 1 < box.bins.size(); ++i) {
-            acc += hist_[static_cast<size_t>(box.bins[i])].count;
+            acc += weight(hist_[static_cast<size_t>(box.bins[i])]);
             cut = i + 1;
-            if (2 * acc >= box.count) break;
+            if (2 * acc >= box.weight) break;
         }
         std::vector<int> left(box.bins.begin(), box.bins.begin() + static_cast<std::ptrdiff_t>(cut));
         std::vector<int> right(box.bins.begin() + static_cast<std::ptrdiff_t>(cut), box.bins.end());

@@ -56,6 +56,8 @@ void validate(const VideoOptions& opt, VideoFormat format) {
             throw InputError(fmt::format("--preset {} is not allowed: use one of ultrafast, superfast, veryfast, "
                                          "faster, fast, medium, slow, slower, veryslow", opt.preset));
     }
+    if (opt.colours < 2 || opt.colours > 256)
+        throw InputError(fmt::format("--colours {} is not allowed: a GIF palette has 2 to 256 colours", opt.colours));
     if (opt.threads < 0 || opt.threads > 64)
         throw InputError(fmt::format("--threads {} is not allowed: use 0 (automatic) to 64", opt.threads));
 }

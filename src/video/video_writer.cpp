@@ -18,6 +18,7 @@ extern "C" {
 #include "dragon/video.hpp"
 #include "video/av_error.hpp"
 #include "video/palette.hpp"
+#include "video/yuv_convert.hpp"
 
 namespace dragon {
 
@@ -72,7 +73,6 @@ struct VideoWriter::Impl {
     av::CodecContext enc;
     av::Frame frame;
     av::Packet packet;
-    av::Sws sws;                           // mp4, webm: ARGB32 -> yuv420p
     video::PaletteBuilder palette_samples;  // gif
     std::optional<video::Palette> palette;  // gif, fixed at the first frame
     std::int64_t next_pts = 0;
@@ -105,7 +105,7 @@ struct VideoWriter::Impl {
         if (format != VideoFormat::gif) {
             enc->gop_size = std::max(1, static_cast<int>(std::lround(4.0 * opt.fps)));  // a key frame every 4 s
             enc->bit_rate = 0;  // quality by crf alone
-            // Tag what the converter below produces: BT.709, limited range.
+            // Tag what argb32_to_yuv420p produces: BT.709, limited range.
             enc->colorspace = AVCOL_SPC_BT709;
             enc->color_primaries = AVCOL_PRI_BT709;
             enc->color_trc = AVCOL_TRC_BT709;
@@ -135,15 +135,6 @@ struct VideoWriter::Impl {
         frame->height = enc->height;
         av::check(av_frame_get_buffer(frame.get(), 0), "cannot allocate a video frame");
 
-        if (format != VideoFormat::gif) {
-            sws.reset(sws_getContext(opt.width, opt.height, AV_PIX_FMT_RGB32, opt.width, opt.height,
-                                     AV_PIX_FMT_YUV420P, SWS_BILINEAR, nullptr, nullptr, nullptr));
-            if (!sws) throw std::runtime_error("cannot set up the ARGB32 -> yuv420p converter");
-            // Full-range RGB in, limited-range BT.709 out, as tagged above.
-            const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
-            sws_setColorspaceDetails(sws.get(), bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
-        }
-
         av::check(avio_open(&mux->pb, file.temp_path().c_str(), AVIO_FLAG_WRITE),
                   fmt::format("cannot write '{}'", file.temp_path()));
         AVDictionary* mux_opts = nullptr;
@@ -160,14 +151,14 @@ struct VideoWriter::Impl {
         if (format == VideoFormat::gif) {
             if (!palette) {
                 if (palette_samples.empty()) palette_samples.add(argb, opt.width, opt.height, stride);
-                palette = palette_samples.build();
+                palette = palette_samples.build(opt.colours);
             }
             palette->map(argb, opt.width, opt.height, stride, frame->data[0], frame->linesize[0]);
             std::memcpy(frame->data[1], palette->colours.data(), 256 * sizeof(std::uint32_t));
         } else {
-            const std::uint8_t* src[1] = {argb};
-            const int src_stride[1] = {stride};
-            sws_scale(sws.get(), src, src_stride, 0, opt.height, frame->data, frame->linesize);
+            video::argb32_to_yuv420p(argb, stride, opt.width, opt.height,
+                                     {frame->data[0], frame->linesize[0], frame->data[1], frame->linesize[1],
+                                      frame->data[2], frame->linesize[2]});
         }
         frame->pts = next_pts++;
         av::check(avcodec_send_frame(enc.get(), frame.get()), "cannot encode a frame");

@@ -1,0 +1,183 @@
+// dragon video: a film of the dragon, MP4 (H.264), WebM (VP9) or GIF by the file's extension.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <regex>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "cli/scenario_flags.hpp"
+#include "dragon/analyses.hpp"
+#include "dragon/atomic_file.hpp"
+#include "dragon/path.hpp"
+#include "dragon/render.hpp"
+#include "dragon/video.hpp"
+
+namespace dragon::cli {
+
+namespace {
+
+struct VideoCliOptions {
+    ScenarioFlags scenario;
+    std::string out;
+    std::optional<double> from;
+    std::string to;
+    double fps = 30.0;
+    double speedup = 10.0;
+    std::optional<double> hold;
+    std::string size = "1280x720";
+    int crf = -1;
+    std::string preset = "veryfast";
+    int threads = 0;
+    int colours = 256;
+    bool follow_head = false;
+    double extent = 12.0;
+    std::string theme = "light";
+    bool colour_by_speed = false;
+};
+
+// "1280x720" -> {1280, 720}. (--width is the scenario's board width, so the picture's size is
+// one option of its own.)
+std::pair<int, int> parse_size(const std::string& s) {
+    static const std::regex pattern(R"((\d{1,5})[xX](\d{1,5}))");
+    std::smatch m;
+    if (!std::regex_match(s, m, pattern))
+        throw InputError(fmt::format("--size {} is not allowed: use WIDTHxHEIGHT in pixels, e.g. 1280x720", s));
+    return {std::stoi(m[1]), std::stoi(m[2])};
+}
+
+// When the head front handle reaches the turning-space boundary: on the spiral, radius
+// turn_radius; on the turnaround path the turn begins there at t = 0 by definition.
+double boundary_time(const Simulation& sim) {
+    const Scenario& s = sim.scenario();
+    if (s.path.kind == PathKind::turnaround) return 0.0;
+    const auto& spiral = static_cast<const Spiral&>(sim.path());
+    const double theta = s.path.turn_radius / spiral.b();
+    return (-spiral.length_to(theta) - sim.start_arc()) / s.head_speed;
+}
+
+struct End {
+    double time;
+    std::optional<CollisionMark> mark;
+};
+
+End resolve_to(const std::string& to, const Simulation& sim, double from) {
+    const bool turn = sim.scenario().path.kind == PathKind::turnaround;
+    const std::string what = to.empty() ? (turn ? "100" : "collision") : to;
+    if (what == "collision") {
+        const double until = std::isfinite(sim.end_time()) ? sim.end_time() : from + 3600.0;
+        const std::optional<Contact> c = first_contact(sim, from, until);
+        if (!c)
+            throw InputError(fmt::format("--to collision: no two benches touch between t = {} s and {:.6f} s",
+                                         from, until));
+        return {c->time, CollisionMark{c->bench_a, c->bench_b, c->point}};
+    }
+    if (what == "boundary") return {boundary_time(sim), std::nullopt};
+    if (what == "end") {
+        if (!std::isfinite(sim.end_time()))
+            throw InputError("--to end is not allowed on the turnaround path: it has no end; give a time");
+        return {sim.end_time(), std::nullopt};
+    }
+    try {
+        size_t used = 0;
+        const double t = std::stod(what, &used);
+        if (used == what.size()) return {t, std::nullopt};
+    } catch (const std::exception&) {
+    }
+    throw InputError(fmt::format("--to {} is not allowed: give a time in seconds, collision, boundary or end", to));
+}
+
+// A one-line bar on stderr, redrawn at most ten times a second: frames, rate, time left.
+class ProgressBar {
+public:
+    explicit ProgressBar(bool enabled) : enabled_(enabled) {}
+    void operator()(const Progress& p) {
+        if (!enabled_) return;
+        const auto now = std::chrono::steady_clock::now();
+        if (p.done < p.total && now - last_ < std::chrono::milliseconds(100)) return;
+        last_ = now;
+        constexpr int width = 30;
+        const int filled = p.total > 0 ? width * p.done / p.total : width;
+        const double rate = p.elapsed > 0 ? p.done / p.elapsed : 0.0;
+        const double left = rate > 0 ? (p.total - p.done) / rate : 0.0;
+        fmt::print(stderr, "\r[{}{}] {}/{} frames  {:.1f} fps  {}:{:02d} left ", std::string(filled, '#'),
+                   std::string(width - filled, '.'), p.done, p.total, rate, static_cast<int>(left) / 60,
+                   static_cast<int>(left) % 60);
+        if (p.done == p.total) fmt::print(stderr, "\n");
+        std::fflush(stderr);
+    }
+
+private:
+    bool enabled_;
+    std::chrono::steady_clock::time_point last_{};
+};
+
+}  // namespace
+
+void register_video(CLI::App& app, Registry& reg) {
+    auto opt = std::make_shared<VideoCliOptions>();
+    CLI::App* sub = app.add_subcommand("video", "Animate to MP4 (H.264), WebM (VP9) or GIF");
+    opt->scenario.add_to(sub);
+    sub->add_option("-o,--out", opt->out, "Output file: .mp4, .webm or .gif")->required();
+    sub->add_option("--from", opt->from, "First moment, simulated s (default 0; -100 on the turnaround path)");
+    sub->add_option("--to", opt->to,
+                    "Last moment: simulated s, or collision (first contact, marked), boundary (head at the "
+                    "turning space), end (spiral's centre). Default: collision; 100 on the turnaround path");
+    sub->add_option("--fps", opt->fps, "Frames per second of video (default 30)");
+    sub->add_option("--speedup", opt->speedup, "Simulated seconds per second of video (default 10)");
+    sub->add_option("--hold", opt->hold, "Seconds the last moment stays on screen (default 1 at a collision, else 0)");
+    sub->add_option("--size", opt->size, "Picture size in pixels, WIDTHxHEIGHT (default 1280x720; even for mp4/webm)");
+    sub->add_option("--crf", opt->crf, "Quality, lower is better: H.264 0-51 (default 20), VP9 0-63 (default 32)");
+    sub->add_option("--preset", opt->preset, "libx264 preset, ultrafast .. veryslow (default veryfast)");
+    sub->add_option("--threads", opt->threads, "Encoder threads, 0 = automatic (default)");
+    sub->add_option("--colours", opt->colours, "GIF palette size, 2-256 (default 256; 32-64 make small files)");
+    sub->add_flag("--follow-head", opt->follow_head, "Keep the head in the middle of the picture");
+    sub->add_option("--extent", opt->extent, "With --follow-head: metres of the plane shown across (default 12)");
+    sub->add_option("--theme", opt->theme, "Colour theme: light, dark or a .toml file (default light)");
+    sub->add_flag("--colour-by-speed", opt->colour_by_speed, "Colour the benches by their speed");
+
+    reg["video"] = [opt]() {
+        // Everything that can be checked without simulating first, so bad options fail at once
+        // and leave no file.
+        const VideoFormat format = video_format_for(opt->out);
+        VideoOptions vo;
+        std::tie(vo.width, vo.height) = parse_size(opt->size);
+        vo.fps = opt->fps;
+        vo.crf = opt->crf;
+        vo.preset = opt->preset;
+        vo.threads = opt->threads;
+        vo.colours = opt->colours;
+        validate(vo, format);
+        if (opt->follow_head && !(opt->extent > 0.0))
+            throw InputError(fmt::format("--extent {} is not allowed: use metres above 0", opt->extent));
+        { AtomicFile probe(opt->out); }  // an unwritable path fails here, before any work
+        const Scenario s = opt->scenario.resolve();
+        SceneOptions scene;
+        scene.theme = load_theme(opt->theme);
+        scene.colour_by_speed = opt->colour_by_speed;
+        if (opt->follow_head) scene.camera = Camera::follow(opt->extent);
+
+        const Simulation sim(s);
+        const bool turn = s.path.kind == PathKind::turnaround;
+        const double from = opt->from.value_or(turn ? -100.0 : 0.0);
+        const End end = resolve_to(opt->to, sim, from);
+        Clip clip{from, end.time, opt->speedup, opt->hold.value_or(end.mark ? 1.0 : 0.0)};
+        const Animation anim(sim, clip, vo.fps, scene, end.mark);
+
+        quiet_codec_logs();
+        ProgressBar bar(::isatty(::fileno(stderr)) != 0);
+        const EncodeStats stats = write_video(anim, opt->out, vo, [&](const Progress& p) { bar(p); });
+        fmt::print("wrote {}: {} frames, {}x{}, {:.2f} s of video for t = {:.6f} .. {:.6f} s ({:.1f} frames/s)\n",
+                   opt->out, stats.frames, vo.width, vo.height, stats.frames / vo.fps, clip.from, clip.to,
+                   stats.fps());
+        if (end.mark)
+            fmt::print("benches {} and {} touch at t = {:.6f} s\n", end.mark->bench_a, end.mark->bench_b, clip.to);
+        return 0;
+    };
+}
+
+}  // namespace dragon::cli

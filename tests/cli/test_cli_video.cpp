@@ -1,0 +1,107 @@
+// dragon video end to end: bad options exit 2 and leave nothing behind; a good run writes the film.
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch_dir() {
+    const fs::path dir = fs::path(DRAGON_TEST_TMP) / "cli-video";
+    fs::create_directories(dir);
+    return dir;
+}
+
+struct RunResult {
+    int code;
+    std::string out, err;
+};
+
+RunResult dragon_video(const std::string& args) {
+    const fs::path dir = scratch_dir();
+    const std::string out = (dir / "stdout.txt").string(), err = (dir / "stderr.txt").string();
+    const std::string cmd = std::string(DRAGON_EXE) + " video " + args + " >" + out + " 2>" + err;
+    const int status = std::system(cmd.c_str());
+    const auto slurp = [](const std::string& p) {
+        std::ifstream f(p);
+        std::stringstream ss;
+        ss << f.rdbuf();
+        return ss.str();
+    };
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+}
+
+// Files in the scratch folder other than the captured output: targets and temporaries alike.
+int stray_files() {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(scratch_dir())) {
+        const std::string name = e.path().filename().string();
+        n += name != "stdout.txt" && name != "stderr.txt";
+    }
+    return n;
+}
+
+struct BadCase {
+    const char* name;
+    std::string args;  // after -o FILE
+    std::string file;
+    const char* message;  // a word the one-line error must contain
+};
+
+class BadOptions : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadOptions, ExitTwoAndNoFile) {
+    const BadCase c = GetParam();
+    for (const auto& e : fs::directory_iterator(scratch_dir())) fs::remove_all(e.path());
+    const std::string target = c.file.front() == '/' ? c.file : (scratch_dir() / c.file).string();
+    const RunResult r = dragon_video("-o " + target + " " + c.args);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(target));
+    EXPECT_EQ(stray_files(), 0);
+}
+
+// Small and short, so a case that wrongly succeeded would still finish quickly.
+const std::string ok = " --size 64x48 --fps 5 --from 0 --to 1";
+
+INSTANTIATE_TEST_SUITE_P(
+    Video, BadOptions,
+    ::testing::Values(BadCase{"odd_width", "--size 65x48 --to 1", "a.mp4", "even"},
+                      BadCase{"odd_height", "--size 64x47 --to 1", "a.webm", "even"},
+                      BadCase{"unknown_extension", ok, "a.avi", ".avi"},
+                      BadCase{"no_extension", ok, "film", "extension"},
+                      BadCase{"unwritable_path", ok, "/nonexistent-dragon-dir/a.mp4", "not writable"},
+                      BadCase{"fps_zero", "--fps 0 --to 1", "a.mp4", "--fps"},
+                      BadCase{"empty_range", "--size 64x48 --from 5 --to 5", "a.mp4", "empty"},
+                      BadCase{"reversed_range", "--size 64x48 --from 5 --to 2", "a.gif", "empty"},
+                      BadCase{"past_the_centre", "--size 64x48 --to 100000", "a.mp4", "--to"},
+                      BadCase{"bad_to", "--size 64x48 --to soon", "a.mp4", "--to"},
+                      BadCase{"bad_size", "--size big --to 1", "a.mp4", "--size"},
+                      BadCase{"bad_preset", ok + " --preset glacial", "a.mp4", "--preset"},
+                      BadCase{"bad_colours", ok + " --colours 1", "a.gif", "--colours"},
+                      BadCase{"bad_speedup", ok + " --speedup -1", "a.mp4", "--speedup"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(CliVideo, WritesTheFilmAndSaysSo) {
+    for (const auto& e : fs::directory_iterator(scratch_dir())) fs::remove_all(e.path());
+    const std::string target = (scratch_dir() / "coil.mp4").string();
+    const RunResult r = dragon_video("-o " + target + " --size 96x64 --fps 10 --speedup 5 --from 0 --to 2");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(target));
+    EXPECT_GT(fs::file_size(target), 0u);
+    EXPECT_NE(r.out.find("5 frames"), std::string::npos) << r.out;  // 0, 0.5, 1, 1.5, 2 s
+    EXPECT_EQ(r.err, "");  // stderr is not a terminal here: no progress bar, no codec chatter
+    EXPECT_EQ(stray_files(), 1);
+}
+
+}  // namespace
