@@ -35,7 +35,7 @@ struct VideoCliOptions {
     int threads = 0;
     int colours = 256;
     bool follow_head = false;
-    double extent = 12.0;
+    std::optional<double> zoom;
     std::string theme = "light";
     bool colour_by_speed = false;
 };
@@ -135,10 +135,11 @@ void register_video(CLI::App& app, Registry& reg) {
     sub->add_option("--preset", opt->preset, "libx264 preset, ultrafast .. veryslow (default veryfast)");
     sub->add_option("--threads", opt->threads, "Encoder threads, 0 = automatic (default)");
     sub->add_option("--colours", opt->colours, "GIF palette size, 2-256 (default 256; 32-64 make small files)");
-    sub->add_flag("--follow-head", opt->follow_head, "Keep the head in the middle of the picture");
-    sub->add_option("--extent", opt->extent, "With --follow-head: metres of the plane shown across (default 12)");
+    sub->add_flag("--follow-head", opt->follow_head, "Keep the head in the middle of the picture (a 12 m square unless --zoom)");
+    sub->add_option("--zoom", opt->zoom, "Show a square of this many metres, around the head with --follow-head, "
+                                         "else around the centre (default: the whole dragon over the clip)");
     sub->add_option("--theme", opt->theme, "Colour theme: light, dark or a .toml file (default light)");
-    sub->add_flag("--colour-by-speed", opt->colour_by_speed, "Colour the benches by their speed");
+    sub->add_flag("--speed-colours", opt->colour_by_speed, "Colour each bench by its speed, with a colour bar");
 
     reg["video"] = [opt]() {
         // Everything that can be checked without simulating first, so bad options fail at once
@@ -152,14 +153,15 @@ void register_video(CLI::App& app, Registry& reg) {
         vo.threads = opt->threads;
         vo.colours = opt->colours;
         validate(vo, format);
-        if (opt->follow_head && !(opt->extent > 0.0))
-            throw InputError(fmt::format("--extent {} is not allowed: use metres above 0", opt->extent));
+        if (opt->zoom && !(*opt->zoom > 0.0))
+            throw InputError(fmt::format("--zoom {} is not allowed: use metres above 0", *opt->zoom));
         { AtomicFile probe(opt->out); }  // an unwritable path fails here, before any work
         const Scenario s = opt->scenario.resolve();
         SceneOptions scene;
         scene.theme = load_theme(opt->theme);
         scene.colour_by_speed = opt->colour_by_speed;
-        if (opt->follow_head) scene.camera = Camera::follow(opt->extent);
+        if (opt->follow_head) scene.camera = Camera::follow(opt->zoom.value_or(12.0));
+        else if (opt->zoom) scene.camera = Camera::at({0.0, 0.0}, *opt->zoom);
 
         const Simulation sim(s);
         const bool turn = s.path.kind == PathKind::turnaround;
