@@ -31,7 +31,7 @@ struct VideoCliOptions {
     std::optional<double> hold;
     std::string size = "1280x720";
     int crf = -1;
-    std::string preset = "veryfast";
+    std::string preset = "ultrafast";
     int threads = 0;
     int colours = 256;
     bool follow_head = false;
@@ -132,7 +132,8 @@ void register_video(CLI::App& app, Registry& reg) {
     sub->add_option("--hold", opt->hold, "Seconds the last moment stays on screen (default 1 at a collision, else 0)");
     sub->add_option("--size", opt->size, "Picture size in pixels, WIDTHxHEIGHT (default 1280x720; even for mp4/webm)");
     sub->add_option("--crf", opt->crf, "Quality, lower is better: H.264 0-51 (default 20), VP9 0-63 (default 32)");
-    sub->add_option("--preset", opt->preset, "libx264 preset, ultrafast .. veryslow (default veryfast)");
+    sub->add_option("--preset", opt->preset, "libx264 preset, ultrafast .. veryslow (default ultrafast, the fastest; "
+                                         "veryfast makes ~3x smaller files at ~2x the encoding time)");
     sub->add_option("--threads", opt->threads, "Encoder threads, 0 = automatic (default)");
     sub->add_option("--colours", opt->colours, "GIF palette size, 2-256 (default 256; 32-64 make small files)");
     sub->add_flag("--follow-head", opt->follow_head, "Keep the head in the middle of the picture (a 12 m square unless --zoom)");

@@ -86,7 +86,7 @@ TEST(Animation, DecodedH264FrameMatchesTheRenderersPicture) {
     Scenario s;
     const Simulation sim(s);
     const Animation anim(sim, Clip{100.0, 104.0, 2.0}, 10, SceneOptions{});
-    VideoOptions opt;  // the defaults but the size: H.264, veryfast, crf 20
+    VideoOptions opt;  // the defaults but the size: H.264, ultrafast, crf 20
     opt.width = 640;
     opt.height = 360;
     const std::string path = scratch("coil.mp4");
