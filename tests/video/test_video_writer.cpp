@@ -18,6 +18,9 @@ using namespace dragon;
 
 namespace {
 
+// The codecs' banner lines would bury gtest's output.
+[[maybe_unused]] const bool codec_logs_quiet = (quiet_codec_logs(), true);
+
 std::string scratch(const std::string& name) {
     const fs::path dir = fs::path(DRAGON_TEST_TMP) / "video";
     fs::create_directories(dir);
