@@ -131,7 +131,8 @@ class Animation {
 public:
     // Throws InputError for an empty or reversed range, a time off the path (past the spiral's
     // centre, say), a speedup or fps <= 0 or a negative hold. With the camera on fit_dragon the
-    // view is fixed for the whole clip: it fits the dragon at nine moments spread over it.
+    // view is fixed for the whole clip: it fits the dragon at nine moments spread over it; with
+    // speed colours and no range given, the range is fixed likewise from those moments.
     // `end_mark`: two benches that touch at `to`, drawn marked on the frames of that moment.
     Animation(const Simulation& sim, Clip clip, double fps, SceneOptions scene,
               std::optional<CollisionMark> end_mark = {});

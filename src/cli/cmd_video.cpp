@@ -38,6 +38,7 @@ struct VideoCliOptions {
     std::optional<double> zoom;
     std::string theme = "light";
     bool colour_by_speed = false;
+    bool no_guides = false, no_text = false;
 };
 
 // "1280x720" -> {1280, 720}. (--width is the scenario's board width, so the picture's size is
@@ -141,6 +142,8 @@ void register_video(CLI::App& app, Registry& reg) {
                                          "else around the centre (default: the whole dragon over the clip)");
     sub->add_option("--theme", opt->theme, "Colour theme: light, dark or a .toml file (default light)");
     sub->add_flag("--speed-colours", opt->colour_by_speed, "Colour each bench by its speed, with a colour bar");
+    sub->add_flag("--no-guides", opt->no_guides, "Leave out the path and the turning-space circle");
+    sub->add_flag("--no-text", opt->no_text, "Leave out all text");
 
     reg["video"] = [opt]() {
         // Everything that can be checked without simulating first, so bad options fail at once
@@ -161,6 +164,8 @@ void register_video(CLI::App& app, Registry& reg) {
         SceneOptions scene;
         scene.theme = load_theme(opt->theme);
         scene.colour_by_speed = opt->colour_by_speed;
+        scene.show_guides = scene.show_turning_space = !opt->no_guides;
+        scene.show_text = !opt->no_text;
         if (opt->follow_head) scene.camera = Camera::follow(opt->zoom.value_or(12.0));
         else if (opt->zoom) scene.camera = Camera::at({0.0, 0.0}, *opt->zoom);
 

@@ -42,6 +42,20 @@ Camera fixed_camera(const Simulation& sim, const Clip& clip, double margin) {
     return Camera::at({0.5 * (box.lo_x + box.hi_x), 0.5 * (box.lo_y + box.hi_y)}, extent);
 }
 
+// One speed range for the whole clip, so a bench's colour means the same speed in every frame.
+void fix_speed_range(const Simulation& sim, const Clip& clip, SceneOptions& scene) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (int i = 0; i < camera_samples; ++i) {
+        const double t = clip.from + (clip.to - clip.from) * i / (camera_samples - 1);
+        for (const Handle& h : sim.frame(t).handles) {
+            lo = std::min(lo, h.speed);
+            hi = std::max(hi, h.speed);
+        }
+    }
+    if (!scene.speed_min) scene.speed_min = lo;
+    if (!scene.speed_max) scene.speed_max = std::max(hi, lo + 1e-9);
+}
+
 }  // namespace
 
 Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions scene,
@@ -77,6 +91,7 @@ Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions 
     sim.frame(clip.from);
     sim.frame(clip.to);
     if (scene_.camera.mode == Camera::Mode::fit_dragon) scene_.camera = fixed_camera(sim, clip, scene_.camera.margin);
+    if (scene_.colour_by_speed) fix_speed_range(sim, clip, scene_);
 }
 
 double Animation::time_at(int index) const {

@@ -82,6 +82,19 @@ TEST(Animation, ViewStaysFixedWhileTheDragonCoils) {
     EXPECT_EQ(first.view_width, last.view_width);
 }
 
+TEST(Animation, SpeedColoursKeepOneRangeForTheClip) {
+    Scenario s;
+    s.path.kind = PathKind::turnaround;
+    const Simulation sim(s);
+    SceneOptions opt;
+    opt.colour_by_speed = true;
+    const Animation anim(sim, Clip{-20.0, 20.0, 10.0}, 2, opt);
+    const Scene first = anim.scene_at(0), last = anim.scene_at(anim.frame_count() - 1);
+    EXPECT_EQ(first.speed_min, last.speed_min);
+    EXPECT_EQ(first.speed_max, last.speed_max);
+    EXPECT_LT(first.speed_min, first.speed_max);
+}
+
 TEST(Animation, DecodedH264FrameMatchesTheRenderersPicture) {
     Scenario s;
     const Simulation sim(s);
