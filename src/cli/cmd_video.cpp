@@ -70,7 +70,9 @@ End resolve_to(const std::string& to, const Simulation& sim, double from) {
     const bool turn = sim.scenario().path.kind == PathKind::turnaround;
     const std::string what = to.empty() ? (turn ? "100" : "collision") : to;
     if (what == "collision") {
-        const double until = std::isfinite(sim.end_time()) ? sim.end_time() : from + 3600.0;
+        // The turnaround path never ends: look an hour ahead, far past any run the contest asks about.
+        constexpr double endless_search = 3600.0;  // s
+        const double until = std::isfinite(sim.end_time()) ? sim.end_time() : from + endless_search;
         const std::optional<Contact> c = first_contact(sim, from, until);
         if (!c)
             throw InputError(fmt::format("--to collision: no two benches touch between t = {} s and {:.6f} s",

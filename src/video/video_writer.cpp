@@ -7,11 +7,6 @@
 
 #include <fmt/format.h>
 
-extern "C" {
-#include <libavutil/imgutils.h>
-#include <libavutil/opt.h>
-}
-
 #include "dragon/atomic_file.hpp"
 #include "dragon/av_handles.hpp"
 #include "dragon/scenario.hpp"
@@ -56,6 +51,11 @@ av::Dictionary encoder_options(VideoFormat f, const VideoOptions& opt, const Cod
     return av::Dictionary(d);
 }
 
+VideoOptions checked(const VideoOptions& opt, VideoFormat format) {
+    validate(opt, format);
+    return opt;
+}
+
 // Complains about the first option the encoder did not take (a typo would otherwise be silent).
 void require_all_used(const av::Dictionary& left, const char* encoder) {
     if (const AVDictionaryEntry* e = av_dict_get(left.get(), "", nullptr, AV_DICT_IGNORE_SUFFIX))
@@ -67,7 +67,7 @@ void require_all_used(const av::Dictionary& left, const char* encoder) {
 struct VideoWriter::Impl {
     VideoFormat format;
     VideoOptions opt;
-    AtomicFile file;  // declared first: destroyed last, after the muxer has closed the file
+    AtomicFile file;  // declared before the muxer: destroyed after it has closed the file
     av::OutputFormatContext mux;
     AVStream* stream = nullptr;
     av::CodecContext enc;
@@ -79,7 +79,7 @@ struct VideoWriter::Impl {
     bool finished = false;
 
     Impl(const std::string& path, const VideoOptions& o)
-        : format(video_format_for(path)), opt((validate(o, format), o)), file(path) {
+        : format(video_format_for(path)), opt(checked(o, format)), file(path) {
         const CodecChoice choice = codec_for(format);
         // The muxer by the target's name: the temporary file's name is not the user's choice.
         const AVOutputFormat* oformat = av_guess_format(nullptr, path.c_str(), nullptr);
