@@ -134,6 +134,7 @@ public:
     // view is fixed for the whole clip: it fits the dragon at nine moments spread over it; with
     // speed colours and no range given, the range is fixed likewise from those moments.
     // `end_mark`: two benches that touch at `to`, drawn marked on the frames of that moment.
+    // Keeps a reference to `sim`, which must outlive the animation.
     Animation(const Simulation& sim, Clip clip, double fps, SceneOptions scene,
               std::optional<CollisionMark> end_mark = {});
 
