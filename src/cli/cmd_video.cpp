@@ -4,8 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
+#include <optional>
 #include <regex>
+#include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
