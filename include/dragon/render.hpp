@@ -106,6 +106,7 @@ struct Polyline {
     double width_px = 1.5;
     bool dashed = false;
     bool closed = false;
+    bool arrow = false;  // an arrowhead at the last point
 };
 struct Marker {
     Vec2 pos;

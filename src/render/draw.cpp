@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -235,8 +237,19 @@ void draw_collision(cairo_t* cr, const Scene& s, const View& v, double u) {
 void draw_overlays(cairo_t* cr, const Scene& s, const View& v, double u) {
     for (const auto& pl : s.polylines) {
         if (pl.points.empty()) continue;
-        for (std::size_t i = 0; i < pl.points.size(); ++i) {
-            const Vec2 p = v.px(pl.points[i]);
+        const std::size_t last = pl.points.size() - 1;
+        // With an arrowhead the line stops inside the head, so its square end cannot poke out
+        // beside the tip.
+        const double head = (4 + 2.5 * pl.width_px) * u;
+        Vec2 tip{}, dir{};
+        const bool arrow = pl.arrow && last >= 1 && norm(v.px(pl.points[last]) - v.px(pl.points[last - 1])) > 0;
+        if (arrow) {
+            tip = v.px(pl.points[last]);
+            dir = normalized(tip - v.px(pl.points[last - 1]));
+        }
+        for (std::size_t i = 0; i <= last; ++i) {
+            Vec2 p = v.px(pl.points[i]);
+            if (arrow && i == last) p = tip - 0.7 * head * dir;
             if (i == 0) cairo_move_to(cr, p.x, p.y);
             else cairo_line_to(cr, p.x, p.y);
         }
@@ -245,14 +258,24 @@ void draw_overlays(cairo_t* cr, const Scene& s, const View& v, double u) {
         cairo_set_line_width(cr, pl.width_px * u);
         set_dash(cr, pl.dashed, u);
         cairo_stroke(cr);
+        if (arrow) {
+            const Vec2 n = perp(dir);
+            const Vec2 a = tip - head * dir + 0.45 * head * n, b = tip - head * dir - 0.45 * head * n;
+            cairo_move_to(cr, tip.x, tip.y);
+            cairo_line_to(cr, a.x, a.y);
+            cairo_line_to(cr, b.x, b.y);
+            cairo_close_path(cr);
+            cairo_fill(cr);
+        }
     }
     set_dash(cr, false, u);
     for (const auto& m : s.markers) draw_marker(cr, m, v.px(m.pos), u);
     if (!s.show_text) return;
+    // Labels get a halo of the background colour so they read over benches and lines.
     for (const auto& l : s.labels) {
         const Vec2 p = v.px(l.pos);
-        set_colour(cr, l.colour);
-        render::text(cr, s.theme.font, l.size_px * u, p.x + l.dx_px * u, p.y + l.dy_px * u, l.text);
+        render::halo_text(cr, s.theme.font, l.size_px * u, p.x + l.dx_px * u, p.y + l.dy_px * u, l.text,
+                          l.colour, s.theme.background, 3.0 * u);
     }
 }
 
@@ -312,16 +335,33 @@ void draw_colour_bar(cairo_t* cr, const Scene& s, double u, double w, double h) 
         render::text(cr, s.theme.font, 11 * u, x + bar_w + 6 * u, y, render::format_tick(t, ticks.decimals),
                      0.0, 0.5);
     }
-    render::text(cr, s.theme.font, 12 * u, x + 0.5 * bar_w, y0 - 12 * u, "speed (m/s)", 0.5);
+    render::text(cr, s.theme.font, 12 * u, x + 0.5 * bar_w, y0 - 18 * u, "speed (m/s)", 0.5);
 }
 
 void draw_annotation(cairo_t* cr, const Scene& s, double u) {
     if (!s.show_text || s.annotation.empty()) return;
-    const double size = 15 * u;
-    const double tw = render::text_width(cr, s.theme.font, size, s.annotation);
-    backdrop(cr, s, 8 * u, 8 * u, tw + 16 * u, size + 14 * u);
+    // One line per '\n'; the first is the headline, the rest a little smaller.
+    std::vector<std::string> lines;
+    for (std::size_t at = 0;;) {
+        const std::size_t nl = s.annotation.find('\n', at);
+        lines.push_back(s.annotation.substr(at, nl == std::string::npos ? std::string::npos : nl - at));
+        if (nl == std::string::npos) break;
+        at = nl + 1;
+    }
+    const double size = 15 * u, small = 13 * u, gap = 6 * u;
+    double tw = 0, th = size;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        tw = std::max(tw, render::text_width(cr, s.theme.font, i ? small : size, lines[i]));
+        if (i) th += gap + small;
+    }
+    backdrop(cr, s, 8 * u, 8 * u, tw + 16 * u, th + 14 * u);
     set_colour(cr, s.theme.text);
-    render::text(cr, s.theme.font, size, 16 * u, 15 * u + 0.5 * size, s.annotation, 0.0, 0.5);
+    double y = 15 * u;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const double sz = i ? small : size;
+        render::text(cr, s.theme.font, sz, 16 * u, y + 0.5 * sz, lines[i], 0.0, 0.5);
+        y += sz + gap;
+    }
 }
 
 }  // namespace
@@ -343,12 +383,17 @@ void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
     const double right = (s.colour_by_speed && s.show_colour_bar) ? colour_bar_room * u : 0.0;
     const View v = make_view(s, w, h, right);
 
+    // The world keeps clear of the colour bar's strip.
+    cairo_save(cr);
+    cairo_rectangle(cr, 0, 0, w - right, h);
+    cairo_clip(cr);
     draw_turning_space(cr, s, v, u);
     draw_guides(cr, s, v, u);
-    draw_benches(cr, s, v, u, vector_surface, w, h);
+    draw_benches(cr, s, v, u, vector_surface, w - right, h);
     draw_handles(cr, s, v, u);
     draw_collision(cr, s, v, u);
     draw_overlays(cr, s, v, u);
+    cairo_restore(cr);
     draw_scale_bar(cr, s, v, u, h);
     draw_colour_bar(cr, s, u, w, h);
     draw_annotation(cr, s, u);

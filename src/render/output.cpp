@@ -29,7 +29,8 @@ void check(cairo_status_t st, const char* what) {
 void render_png(const Scene& scene, int w, int h, const std::string& path) {
     check_size(w, h);
     AtomicFile out(path);
-    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h));
+    // Opaque pictures: RGB24 writes a PNG without an alpha channel (a quarter smaller).
+    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
     check(cairo_surface_status(surface.get()), "creating the image surface");
     {
         cairo::Context cr = cairo::make_context(surface.get());

@@ -41,6 +41,22 @@ void text(cairo_t* cr, const std::string& font, double size_px, double x, double
     cairo_new_path(cr);
 }
 
+void halo_text(cairo_t* cr, const std::string& font, double size_px, double x, double y, const std::string& s,
+               const Rgba& colour, const Rgba& halo, double halo_px, double align) {
+    if (s.empty()) return;
+    select_font(cr, font, size_px, false);
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, s.c_str(), &e);
+    cairo_move_to(cr, x - align * e.x_advance, y);
+    cairo_text_path(cr, s.c_str());
+    set_colour(cr, {halo.r, halo.g, halo.b, 0.85});
+    cairo_set_line_width(cr, halo_px);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_stroke_preserve(cr);
+    set_colour(cr, colour);
+    cairo_fill(cr);
+}
+
 double text_width(cairo_t* cr, const std::string& font, double size_px, const std::string& s, bool bold) {
     select_font(cr, font, size_px, bold);
     cairo_text_extents_t e;

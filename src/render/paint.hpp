@@ -19,6 +19,9 @@ Rgba ramp_colour(const std::vector<Rgba>& stops, double t);
 // of x; `valign` 0 = baseline at y, 0.5 = middle of the capitals at y, 1 = capitals' top at y.
 void text(cairo_t* cr, const std::string& font, double size_px, double x, double y,
           const std::string& s, double align = 0.0, double valign = 0.0, bool bold = false);
+// Text with a halo: its outline stroked `halo_px` wide in `halo`, then filled in `colour`.
+void halo_text(cairo_t* cr, const std::string& font, double size_px, double x, double y, const std::string& s,
+               const Rgba& colour, const Rgba& halo, double halo_px, double align = 0.0);
 double text_width(cairo_t* cr, const std::string& font, double size_px, const std::string& s,
                   bool bold = false);
 

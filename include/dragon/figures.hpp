@@ -1,0 +1,34 @@
+// The figure gallery: the paper's five figures done right, and plots of the quantities behind
+// them. Each figure is a PNG drawn with the same renderer and plot module as everything else.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "dragon/render.hpp"
+#include "dragon/scenario.hpp"
+
+namespace dragon {
+
+struct FigureOptions {
+    Theme theme;            // light by default
+    double scale = 1.0;     // pixel size relative to the gallery's (about 1000 px wide)
+    std::vector<std::string> only;  // names to make (e.g. "fig2_dragon_300s"); empty: all
+};
+
+struct FigureInfo {
+    std::string name;     // file stem, e.g. "fig1_link_geometry"
+    std::string caption;  // one sentence: what the figure shows
+};
+
+// Every figure the gallery holds, in order.
+std::vector<FigureInfo> figure_list();
+
+// Writes <dir>/<name>.png for each figure (all-or-nothing per file) from the scenario `base`
+// (the coil-in figures use it as given; the turnaround ones switch its path kind). Calls
+// `done` after each file. Throws InputError for an unknown name in opt.only.
+void write_figures(const std::string& dir, const Scenario& base, const FigureOptions& opt,
+                   const std::function<void(const FigureInfo&, const std::string& path)>& done = {});
+
+}  // namespace dragon

@@ -1,0 +1,68 @@
+// Line plots with Cairo: axes with ticks at round numbers, labels, a legend, lines and markers,
+// reference lines and text in data coordinates. Enough for the figures of a paper, no more.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <cairo.h>
+
+#include "dragon/geometry.hpp"
+#include "dragon/render.hpp"
+
+namespace dragon {
+
+struct PlotSeries {
+    std::string label;        // legend entry; empty: not in the legend
+    std::vector<Vec2> points; // data coordinates; a NaN y breaks the line
+    Rgba colour;
+    double width_px = 1.8;
+    bool line = true;
+    bool dashed = false;
+    bool markers = false;     // a dot at every point
+    double marker_px = 3.0;
+};
+
+// Text at a data point, offset in pixels; a small dot marks the point if `dot`.
+struct PlotLabel {
+    Vec2 at;
+    std::string text;
+    Rgba colour;
+    double dx_px = 6, dy_px = -6;
+    double size_px = 12;
+    bool dot = false;
+    double align = 0.0;  // 0 left, 0.5 centre, 1 right of the offset point
+};
+
+// A horizontal or vertical line across the plot, labelled at its end.
+struct PlotRefLine {
+    bool vertical = false;
+    double value = 0;
+    std::string label;
+    Rgba colour;
+    bool dashed = true;
+};
+
+struct Plot {
+    Theme theme;
+    std::string title, note, x_label, y_label;  // note: a smaller line under the title
+    std::vector<PlotSeries> series;
+    std::vector<PlotRefLine> ref_lines;
+    std::vector<PlotLabel> labels;
+    std::optional<double> x_min, x_max, y_min, y_max;  // unset: the data's range, padded
+    bool equal_aspect = false;  // one metre the same length on both axes (geometry)
+    enum class Legend { none, top_left, top_right, bottom_left, bottom_right };
+    Legend legend = Legend::top_right;
+};
+
+// A qualitative colour for series i (colour-blind-safe order, Okabe-Ito), darker or lighter to
+// suit the theme's background.
+Rgba series_colour(const Theme& theme, int i);
+
+// Draws the plot inside the box (x, y, w, h) of cr's current user space, background included.
+void draw_plot(cairo_t* cr, const Plot& plot, double x, double y, double w, double h);
+// All-or-nothing PNG of one plot.
+void render_plot_png(const Plot& plot, int width_px, int height_px, const std::string& path);
+
+}  // namespace dragon

@@ -1,0 +1,80 @@
+// dragon render: one moment of any scenario drawn to PNG or SVG.
+#include <cstdio>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "cli/render_flags.hpp"
+#include "cli/scenario_flags.hpp"
+#include "dragon/analyses.hpp"
+#include "dragon/atomic_file.hpp"
+#include "dragon/render.hpp"
+
+namespace dragon::cli {
+
+namespace {
+struct RenderOptions {
+    ScenarioFlags scenario;
+    RenderFlags look;
+    std::optional<double> time;
+    bool collision = false;
+    std::string out;
+};
+
+// The first contact on this scenario's path: the plain spiral from t = 0 to its centre, the
+// turnaround from -100 s to 100 s (the contest's window).
+Contact find_contact(const Simulation& sim) {
+    const bool turn = sim.scenario().path.kind == PathKind::turnaround;
+    const double t0 = turn ? -100.0 : 0.0;
+    const double t1 = turn ? 100.0 : sim.end_time();
+    auto c = first_contact(sim, t0, t1);
+    if (!c)
+        throw InputError(fmt::format("--collision: no two benches touch between {} s and {} s on this "
+                                     "scenario; use --time instead", t0, t1));
+    return *c;
+}
+}  // namespace
+
+void register_render(CLI::App& app, Registry& reg) {
+    auto opt = std::make_shared<RenderOptions>();
+    CLI::App* sub = app.add_subcommand("render", "Draw one moment of the dragon to PNG or SVG");
+    opt->scenario.add_to(sub);
+    auto* when = sub->add_option("--time", opt->time, "The moment to draw, s");
+    auto* hit = sub->add_flag("--collision", opt->collision,
+                              "Draw the first contact (the termination of coiling in), touching benches marked");
+    when->excludes(hit);
+    sub->add_option("-o,--out", opt->out, "Output file: .png or .svg")->required();
+    opt->look.add_to(sub);
+    reg["render"] = [opt]() {
+        const std::string ext = extension_of(opt->out);
+        if (ext != ".png" && ext != ".svg")
+            throw InputError(fmt::format("--out {} has extension '{}': use .png or .svg", opt->out, ext));
+        if (!opt->time && !opt->collision)
+            throw InputError("render needs --time T (seconds) or --collision");
+        AtomicFile probe(opt->out);  // fail on an unwritable path before any work
+        const Scenario s = opt->scenario.resolve();
+        const Simulation sim(s);
+        SceneOptions so = opt->look.scene_options();
+        Frame frame;
+        if (opt->collision) {
+            const Contact c = find_contact(sim);
+            frame = c.frame;
+            so.collision = CollisionMark{c.bench_a, c.bench_b, c.point};
+            if (!so.annotation)
+                so.annotation = fmt::format("first contact t = {:.6f} s: benches {} and {}", c.time,
+                                            c.bench_a, c.bench_b);
+            if (opt->look.zoom()) so.camera = Camera::at(c.point, *opt->look.zoom());
+        } else {
+            sim.require_on_path(*opt->time, "--time");
+            frame = sim.frame(*opt->time);
+        }
+        const Scene scene = make_scene(sim, frame, so);
+        const auto [w, h] = opt->look.size();
+        if (ext == ".png") render_png(scene, w, h, opt->out);
+        else render_svg(scene, w, h, opt->out);
+        fmt::print(stderr, "wrote {} ({} x {} px, t = {:.6f} s)\n", opt->out, w, h, frame.time);
+        return 0;
+    };
+}
+
+}  // namespace dragon::cli

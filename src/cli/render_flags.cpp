@@ -1,0 +1,52 @@
+#include "cli/render_flags.hpp"
+
+#include <cstdio>
+
+#include <fmt/format.h>
+
+#include "dragon/scenario.hpp"
+
+namespace dragon::cli {
+
+void RenderFlags::add_to(CLI::App* sub, bool with_view) {
+    sub->add_option("--size", size_, "Image size in pixels, WxH (default 1600x1600)");
+    sub->add_option("--theme", theme_, "Colour theme: light, dark or a .toml file (default light)");
+    if (!with_view) return;
+    sub->add_flag("--speed-colours", speed_colours_, "Colour each bench by its speed, with a colour bar");
+    sub->add_option("--zoom", zoom_, "Show a square of this many metres (around the head, the --centre or the contact)");
+    sub->add_option("--centre", centre_, "Centre of the view, x y in metres (with --zoom)")->expected(2);
+    sub->add_flag("--follow-head", follow_head_, "Centre the view on the head (with --zoom)");
+    sub->add_flag("--no-guides", no_guides_, "Leave out the path and the turning-space circle");
+    sub->add_flag("--no-text", no_text_, "Leave out all text");
+    sub->add_option("--annotation", annotation_, "Text at the top left (default: time and pitch)");
+}
+
+std::pair<int, int> RenderFlags::size() const {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(size_.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
+        throw InputError(fmt::format("--size {} is not allowed: use WxH in pixels, e.g. 1920x1080", size_));
+    if (w < 16 || h < 16 || w > 16384 || h > 16384)
+        throw InputError(fmt::format("--size {} is not allowed: each side must be 16..16384 px", size_));
+    return {w, h};
+}
+
+SceneOptions RenderFlags::scene_options() const {
+    SceneOptions so;
+    so.theme = load_theme(theme_, DRAGON_ASSET_DIR);
+    so.colour_by_speed = speed_colours_;
+    so.show_guides = so.show_turning_space = !no_guides_;
+    so.show_text = !no_text_;
+    so.annotation = annotation_;
+    if (zoom_ && !(*zoom_ > 0))
+        throw InputError(fmt::format("--zoom {} is not allowed: it must be a positive width in metres", *zoom_));
+    if (!centre_.empty() && !zoom_) throw InputError("--centre needs --zoom (the width of the view in metres)");
+    if (zoom_) {
+        if (!centre_.empty()) so.camera = Camera::at({centre_[0], centre_[1]}, *zoom_);
+        else so.camera = Camera::follow(*zoom_);
+    }
+    if (follow_head_ && !zoom_) so.camera = Camera::follow(20.0);
+    return so;
+}
+
+}  // namespace dragon::cli

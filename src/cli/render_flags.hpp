@@ -1,0 +1,37 @@
+// The look-and-view flags of the drawing subcommands (render, figures): image size, theme,
+// camera, speed colours. (--width is the board width among the scenario flags, so the image
+// size is --size WxH.)
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "dragon/render.hpp"
+
+namespace dragon::cli {
+
+class RenderFlags {
+public:
+    void add_to(CLI::App* sub, bool with_view = true);
+    // Size in pixels; throws InputError for a malformed --size.
+    std::pair<int, int> size() const;
+    // Theme, camera and switches (throws InputError for a bad value).
+    SceneOptions scene_options() const;
+    const std::string& theme_name() const { return theme_; }
+    // --zoom: a square view of this many metres (around the contact with --collision).
+    std::optional<double> zoom() const { return zoom_; }
+
+private:
+    std::string size_ = "1600x1600";
+    std::string theme_ = "light";
+    std::optional<double> zoom_;
+    std::vector<double> centre_;
+    bool speed_colours_ = false, follow_head_ = false, no_guides_ = false, no_text_ = false;
+    std::optional<std::string> annotation_;
+};
+
+}  // namespace dragon::cli

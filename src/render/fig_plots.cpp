@@ -1,0 +1,122 @@
+// The plots behind the figures: handle speeds along the chain, the S-curve's geometry and the
+// speed ratio on the turnaround.
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "dragon/turnaround.hpp"
+#include "render/figure_kit.hpp"
+
+namespace dragon::fig {
+
+void speeds_by_handle(const Context& c, const std::string& path) {
+    const Simulation sim(c.base);
+    Plot p;
+    p.theme = c.opt.theme;
+    p.title = "Speed of every handle along the chain (exact, from rigid links)";
+    p.note = fmt::format("Coiling in at {:g} m/s, pitch {:g} m. The paper's finite differences set the body to 0 at t = 0.",
+                         c.base.head_speed, c.base.coil_pitch());
+    p.x_label = "handle (0 = head front, 223 = tail rear)";
+    p.y_label = "speed (m/s)";
+    p.legend = Plot::Legend::bottom_left;
+    int i = 0;
+    for (double t : {0.0, 60.0, 120.0, 180.0, 240.0, 300.0}) {
+        const Frame f = sim.frame(t);
+        PlotSeries s;
+        s.label = fmt::format("t = {:g} s", t);
+        s.colour = series_colour(p.theme, i++);
+        for (std::size_t k = 0; k < f.handles.size(); ++k) s.points.push_back({double(k), f.handles[k].speed});
+        p.series.push_back(std::move(s));
+    }
+    p.x_min = 0;
+    p.x_max = static_cast<double>(c.base.bench.bench_count);
+    write_plot(p, c.px(1000), c.px(600), path);
+}
+
+void s_curve_geometry(const Context& c, const std::string& path) {
+    Scenario sc = c.base;
+    sc.path.kind = PathKind::turnaround;
+    const SCurve d = design_s_curve(sc);
+    const TurnaroundPath tp(d);
+    const Theme& th = c.opt.theme;
+    Plot p;
+    p.theme = th;
+    p.title = "The turnaround S-curve: two tangent arcs, r\u2081 = 2 r\u2082";
+    p.note = fmt::format("Pitch {:g} m, turning space radius {:g} m: r\u2081 = {:.6f} m, r\u2082 = {:.6f} m, length {:.6f} m",
+                         d.pitch, sc.path.turn_radius, d.r1, d.r2, d.length);
+    p.x_label = "x (m)";
+    p.y_label = "y (m)";
+    p.equal_aspect = true;
+    p.legend = Plot::Legend::bottom_right;
+    const double R = sc.path.turn_radius;
+
+    auto sample = [&](double s0, double s1, int n) {
+        std::vector<Vec2> pts;
+        for (int i = 0; i <= n; ++i) pts.push_back(tp.at_arc(s0 + (s1 - s0) * i / n).pos);
+        return pts;
+    };
+    PlotSeries space{"turning space", {}, th.turning_space, 1.3, true, true};
+    for (int i = 0; i <= 200; ++i) {
+        const double a = 2 * std::numbers::pi * i / 200;
+        space.points.push_back({R * std::cos(a), R * std::sin(a)});
+    }
+    p.series.push_back(space);
+    // About one turn of each spiral either side of the turning space.
+    const double turn = 2 * std::numbers::pi * (R + 0.5 * d.pitch);
+    p.series.push_back({"coil-in spiral", sample(-turn, 0, 400), th.guide, 1.6});
+    p.series.push_back({"coil-out spiral", sample(d.length, d.length + turn, 400), th.guide_out, 1.6});
+    p.series.push_back({fmt::format("arc 1, r\u2081 = {:.3f} m", d.r1), sample(0, d.length1, 200), th.s_curve, 3.0});
+    p.series.push_back({fmt::format("arc 2, r\u2082 = {:.3f} m", d.r2), sample(d.length1, d.length, 200), th.head, 3.0});
+    // Radii to the tangent points: each centre lies on the normal at both ends of its arc,
+    // and the joint lies on the line of centres.
+    const Rgba soft = with_alpha(th.text, 0.6);
+    p.series.push_back({"", {d.c1, d.entry}, soft, 1.0, true, true});
+    p.series.push_back({"", {d.c1, d.joint, d.c2}, soft, 1.0, true, true});
+    p.series.push_back({"", {d.c2, d.exit}, soft, 1.0, true, true});
+    auto point = [&](Vec2 at, std::string text, Rgba col, double dx, double dy, double align = 0.0) {
+        PlotLabel l{at, std::move(text), col, dx, dy, 13, true, align};
+        p.labels.push_back(l);
+    };
+    point(d.entry, "A: enters, tangent to the coil-in spiral", th.text, 8, -8, 0.0);
+    point(d.exit, "B = \u2212A: leaves, tangent to the coil-out spiral", th.text, -8, 18, 1.0);
+    point(d.joint, "joint: the arcs are tangent", th.text, -10, 20, 1.0);
+    point(d.c1, "C\u2081", th.s_curve, 6, -6);
+    point(d.c2, "C\u2082", th.head, 6, -6);
+    point({0, 0}, "O", soft, 6, 16);
+    p.x_min = -R - 1.2, p.x_max = R + 1.2, p.y_min = -R - 1.2, p.y_max = R + 1.2;
+    write_plot(p, c.px(900), c.px(860), path);
+}
+
+void speed_ratio_on_turnaround(const Context& c, const std::string& path) {
+    Scenario sc = c.base;
+    sc.path.kind = PathKind::turnaround;
+    const Simulation sim(sc);
+    const SCurve d = design_s_curve(sc);
+    Plot p;
+    p.theme = c.opt.theme;
+    p.title = "Largest handle speed over the head's, on the turnaround path";
+    p.x_label = "time (s); the head enters the S-curve at 0";
+    p.y_label = "max handle speed / head speed";
+    p.legend = Plot::Legend::none;
+    PlotSeries s{"", {}, series_colour(p.theme, 0), 1.6};
+    SpeedRatio best{0, 0};
+    double best_t = 0;
+    for (int i = 0; i <= 1600; ++i) {
+        const double t = -100.0 + 200.0 * i / 1600;
+        const SpeedRatio r = speed_ratio_at(sim.path(), sc.bench, sim.head_arc(t));
+        s.points.push_back({t, r.ratio});
+        if (r.ratio > best.ratio) best = r, best_t = t;
+    }
+    p.series.push_back(s);
+    p.ref_lines.push_back({true, 0.0, fmt::format("S-curve: 0 to {:.1f} s", d.length / sc.head_speed), p.theme.s_curve});
+    p.ref_lines.push_back({true, d.length / sc.head_speed, "", p.theme.s_curve});
+    p.labels.push_back({{best_t, best.ratio}, fmt::format("max {:.4f} at t \u2248 {:.2f} s (handle {})", best.ratio, best_t, best.handle),
+                        p.theme.text, 10, 4, 13, true});
+    p.y_max = 1.0 + 1.12 * (best.ratio - 1.0);
+    p.note = fmt::format("Sampled every 0.125 s. Handles at most 2 m/s: head speed up to about 2 / {:.4f} = {:.4f} m/s.",
+                         best.ratio, 2.0 / best.ratio);
+    write_plot(p, c.px(1000), c.px(600), path);
+}
+
+}  // namespace dragon::fig

@@ -1,0 +1,87 @@
+#include "render/figure_kit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "dragon/atomic_file.hpp"
+#include "dragon/cairo_handles.hpp"
+#include "render/png8.hpp"
+
+namespace dragon::fig {
+
+double distance_to(const Rect& r, Vec2 p) {
+    const Vec2 d = p - r.centre;
+    const double along = std::abs(dot(d, r.axis)) - r.half_length;
+    const double across = std::abs(cross(r.axis, d)) - r.half_width;
+    return std::hypot(std::max(along, 0.0), std::max(across, 0.0));
+}
+
+Vec2 contact_point(const Rect& a, const Rect& b) {
+    Vec2 best = a.centre;
+    double best_d = 1e300;
+    for (Vec2 p : corners(a).p)
+        if (double d = distance_to(b, p); d < best_d) best_d = d, best = p;
+    for (Vec2 p : corners(b).p)
+        if (double d = distance_to(a, p); d < best_d) best_d = d, best = p;
+    return best;
+}
+
+Polyline circle(Vec2 centre, double radius, Rgba colour, double width_px, bool dashed) {
+    Polyline pl;
+    constexpr int n = 144;
+    for (int i = 0; i < n; ++i) {
+        const double a = 2 * std::numbers::pi * i / n;
+        pl.points.push_back(centre + radius * Vec2{std::cos(a), std::sin(a)});
+    }
+    pl.colour = colour;
+    pl.width_px = width_px;
+    pl.dashed = dashed;
+    pl.closed = true;
+    return pl;
+}
+
+Label label(Vec2 at, std::string text, Rgba colour, double size_px, double dx, double dy) {
+    Label l;
+    l.pos = at;
+    l.text = std::move(text);
+    l.colour = colour;
+    l.size_px = size_px;
+    l.dx_px = dx;
+    l.dy_px = dy;
+    return l;
+}
+
+Rgba with_alpha(Rgba c, double a) {
+    c.a = a;
+    return c;
+}
+
+void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, int cols, int pw, int ph, const Theme& theme,
+                 int gap) {
+    cairo_set_source_rgb(cr, theme.grid.r, theme.grid.g, theme.grid.b);
+    cairo_paint(cr);
+    for (std::size_t i = 0; i < panels.size(); ++i) {
+        const int col = static_cast<int>(i) % cols, row = static_cast<int>(i) / cols;
+        cairo_save(cr);
+        cairo_translate(cr, gap + col * (pw + gap), gap + row * (ph + gap));
+        cairo_rectangle(cr, 0, 0, pw, ph);
+        cairo_clip(cr);
+        draw(cr, panels[i], pw, ph);
+        cairo_restore(cr);
+    }
+}
+
+// The gallery is kept small (it lives in the repository): 256-colour palette PNGs.
+void write_png(cairo_surface_t* surface, const std::string& path, int colours) {
+    render::write_png8(surface, path, colours);
+}
+
+void write_plot(const Plot& plot, int w, int h, const std::string& path) {
+    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
+    cairo::Context cr = cairo::make_context(surface.get());
+    draw_plot(cr.get(), plot, 0, 0, w, h);
+    write_png(surface.get(), path);
+}
+
+}  // namespace dragon::fig

@@ -1,0 +1,54 @@
+// Shared pieces of the gallery's figures: sizes, labels, a contact witness, panel layout.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <cairo.h>
+
+#include "dragon/chain.hpp"
+#include "dragon/figures.hpp"
+#include "dragon/plot.hpp"
+#include "dragon/render.hpp"
+
+namespace dragon::fig {
+
+struct Context {
+    Scenario base;     // the coil-in scenario (path kind spiral)
+    FigureOptions opt;
+    int px(double gallery_px) const { return static_cast<int>(gallery_px * opt.scale + 0.5) & ~1; }
+};
+
+// The point where two touching (or nearly touching) rectangles meet: the corner of either one
+// nearest to the other rectangle. Contact between boards is corner-to-edge except in the
+// measure-zero parallel case, where a corner is still a contact point.
+Vec2 contact_point(const Rect& a, const Rect& b);
+// Distance from a point to a rectangle (0 inside).
+double distance_to(const Rect& r, Vec2 p);
+
+// A circle as a closed polyline (world units).
+Polyline circle(Vec2 centre, double radius, Rgba colour, double width_px = 1.2, bool dashed = false);
+Label label(Vec2 at, std::string text, Rgba colour, double size_px = 13, double dx = 6, double dy = -6);
+Rgba with_alpha(Rgba c, double a);
+
+// Several scenes side by side: cols x rows panels of equal size, each drawn by draw().
+void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, int cols, int panel_w, int panel_h,
+                 const Theme& theme, int gap_px);
+// A palette PNG: 64 colours suit flat drawings; speed-coloured pictures need 256 so the colour
+// map stays smooth.
+void write_png(cairo_surface_t* surface, const std::string& path, int colours = 64);
+void write_plot(const Plot& plot, int w, int h, const std::string& path);
+
+// The figures (one file each).
+void link_geometry(const Context& c, const std::string& path);
+void dragon_at_300s(const Context& c, const std::string& path);
+void broad_phase(const Context& c, const std::string& path);
+void first_contact_zoom(const Context& c, const std::string& path);
+void pitch_states(const Context& c, const std::string& path);
+void speeds_by_handle(const Context& c, const std::string& path);
+void clearance_over_time(const Context& c, const std::string& path);
+void s_curve_geometry(const Context& c, const std::string& path);
+void speed_ratio_on_turnaround(const Context& c, const std::string& path);
+void turnaround_scene(const Context& c, const std::string& path);
+
+}  // namespace dragon::fig

@@ -1,0 +1,279 @@
+// The plot module: layout (margins from the text sizes), axes, ticks, series, legend.
+#include "dragon/plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "dragon/atomic_file.hpp"
+#include "dragon/cairo_handles.hpp"
+#include "dragon/scenario.hpp"
+#include "render/paint.hpp"
+
+namespace dragon {
+
+using render::set_colour;
+
+Rgba series_colour(const Theme& theme, int i) {
+    // Okabe-Ito: distinguishable with every common colour-vision deficiency.
+    static const Rgba light[] = {{0.00, 0.45, 0.70}, {0.84, 0.37, 0.00}, {0.00, 0.62, 0.45},
+                                 {0.80, 0.47, 0.65}, {0.90, 0.62, 0.00}, {0.34, 0.71, 0.91},
+                                 {0.35, 0.35, 0.35}, {0.60, 0.15, 0.15}};
+    static const Rgba dark[] = {{0.34, 0.71, 0.91}, {0.90, 0.62, 0.00}, {0.00, 0.75, 0.55},
+                                {0.90, 0.60, 0.78}, {0.94, 0.89, 0.26}, {0.60, 0.80, 1.00},
+                                {0.80, 0.80, 0.80}, {1.00, 0.45, 0.40}};
+    const bool is_dark = theme.background.r + theme.background.g + theme.background.b < 1.5;
+    const int n = static_cast<int>(std::size(light));
+    const int k = ((i % n) + n) % n;
+    return is_dark ? dark[k] : light[k];
+}
+
+namespace {
+
+struct Range {
+    double lo = std::numeric_limits<double>::infinity();
+    double hi = -std::numeric_limits<double>::infinity();
+    void add(double v) {
+        if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+    bool empty() const { return !(hi >= lo); }
+};
+
+// Data box: the given limits, else the data's range padded by 4 % (a flat series gets +-1).
+void data_ranges(const Plot& p, Range& xr, Range& yr) {
+    for (const auto& s : p.series)
+        for (Vec2 q : s.points) xr.add(q.x), yr.add(q.y);
+    for (const auto& l : p.labels) xr.add(l.at.x), yr.add(l.at.y);
+    for (const auto& r : p.ref_lines) (r.vertical ? xr : yr).add(r.value);
+    auto finish = [](Range& r, std::optional<double> lo, std::optional<double> hi) {
+        if (r.empty()) r = {0, 1};
+        if (r.hi - r.lo < 1e-12 * std::max(1.0, std::abs(r.lo))) r.lo -= 1, r.hi += 1;
+        const double pad = 0.04 * (r.hi - r.lo);
+        r.lo = lo.value_or(r.lo - pad);
+        r.hi = hi.value_or(r.hi + pad);
+    };
+    finish(xr, p.x_min, p.x_max);
+    finish(yr, p.y_min, p.y_max);
+}
+
+struct Frame2 {
+    double x0, y0, x1, y1;  // plot area in device units (y0 top)
+    Range xr, yr;
+    double px(double x) const { return x0 + (x - xr.lo) / (xr.hi - xr.lo) * (x1 - x0); }
+    double py(double y) const { return y1 - (y - yr.lo) / (yr.hi - yr.lo) * (y1 - y0); }
+};
+
+// Widen one axis's range so a data unit has the same length in x and y.
+void equalise(Frame2& f) {
+    const double sx = (f.x1 - f.x0) / (f.xr.hi - f.xr.lo), sy = (f.y1 - f.y0) / (f.yr.hi - f.yr.lo);
+    if (sx > sy) {
+        const double half = 0.5 * (f.x1 - f.x0) / sy, mid = 0.5 * (f.xr.lo + f.xr.hi);
+        f.xr = {mid - half, mid + half};
+    } else {
+        const double half = 0.5 * (f.y1 - f.y0) / sx, mid = 0.5 * (f.yr.lo + f.yr.hi);
+        f.yr = {mid - half, mid + half};
+    }
+}
+
+void set_dash(cairo_t* cr, bool dashed, double u) {
+    if (!dashed) return cairo_set_dash(cr, nullptr, 0, 0);
+    const double d[2] = {6 * u, 4 * u};
+    cairo_set_dash(cr, d, 2, 0);
+}
+
+void draw_series(cairo_t* cr, const Frame2& f, const PlotSeries& s, double u) {
+    set_colour(cr, s.colour);
+    if (s.line && s.points.size() > 1) {
+        bool pen = false;
+        for (Vec2 q : s.points) {
+            if (!std::isfinite(q.x) || !std::isfinite(q.y)) {
+                pen = false;
+                continue;
+            }
+            if (pen) cairo_line_to(cr, f.px(q.x), f.py(q.y));
+            else cairo_move_to(cr, f.px(q.x), f.py(q.y));
+            pen = true;
+        }
+        cairo_set_line_width(cr, s.width_px * u);
+        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+        set_dash(cr, s.dashed, u);
+        cairo_stroke(cr);
+        set_dash(cr, false, u);
+    }
+    if (s.markers) {
+        for (Vec2 q : s.points) {
+            if (!std::isfinite(q.y)) continue;
+            cairo_new_sub_path(cr);
+            cairo_arc(cr, f.px(q.x), f.py(q.y), s.marker_px * u, 0, 2 * std::numbers::pi);
+        }
+        cairo_fill(cr);
+    }
+}
+
+void draw_legend(cairo_t* cr, const Plot& p, const Frame2& f, double u) {
+    std::vector<const PlotSeries*> entries;
+    for (const auto& s : p.series)
+        if (!s.label.empty()) entries.push_back(&s);
+    if (entries.empty() || p.legend == Plot::Legend::none) return;
+    const double size = 12 * u, row = 18 * u, sample = 24 * u, pad = 8 * u;
+    double tw = 0;
+    for (auto* s : entries) tw = std::max(tw, render::text_width(cr, p.theme.font, size, s->label));
+    const double bw = pad + sample + 6 * u + tw + pad, bh = pad + row * entries.size() + 2 * u;
+    const bool left = p.legend == Plot::Legend::top_left || p.legend == Plot::Legend::bottom_left;
+    const bool top = p.legend == Plot::Legend::top_left || p.legend == Plot::Legend::top_right;
+    const double bx = left ? f.x0 + 10 * u : f.x1 - 10 * u - bw;
+    const double by = top ? f.y0 + 10 * u : f.y1 - 10 * u - bh;
+    Rgba bg = p.theme.background;
+    bg.a = 0.88;
+    set_colour(cr, bg);
+    cairo_rectangle(cr, bx, by, bw, bh);
+    cairo_fill_preserve(cr);
+    set_colour(cr, p.theme.grid);
+    cairo_set_line_width(cr, 1 * u);
+    cairo_stroke(cr);
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        const PlotSeries& s = *entries[i];
+        const double y = by + pad + row * (i + 0.5);
+        set_colour(cr, s.colour);
+        if (s.line) {
+            cairo_move_to(cr, bx + pad, y);
+            cairo_line_to(cr, bx + pad + sample, y);
+            cairo_set_line_width(cr, s.width_px * u);
+            set_dash(cr, s.dashed, u);
+            cairo_stroke(cr);
+            set_dash(cr, false, u);
+        }
+        if (s.markers) {
+            cairo_arc(cr, bx + pad + 0.5 * sample, y, s.marker_px * u, 0, 2 * std::numbers::pi);
+            cairo_fill(cr);
+        }
+        set_colour(cr, p.theme.text);
+        render::text(cr, p.theme.font, size, bx + pad + sample + 6 * u, y, s.label, 0.0, 0.5);
+    }
+}
+
+}  // namespace
+
+void draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, double h) {
+    const double u = std::max(0.4, std::min(w / 900.0, h / 560.0) * 1.25);
+    const Theme& th = p.theme;
+    cairo_save(cr);
+    cairo_rectangle(cr, x, y, w, h);
+    cairo_clip(cr);
+    set_colour(cr, {th.background.r, th.background.g, th.background.b, 1});
+    cairo_paint(cr);
+
+    Range xr, yr;
+    data_ranges(p, xr, yr);
+    const auto yt0 = render::nice_ticks(yr.lo, yr.hi, 6);
+    double ytw = 0;
+    for (double v : yt0.values)
+        ytw = std::max(ytw, render::text_width(cr, th.font, 12 * u, render::format_tick(v, yt0.decimals)));
+    const double top = y + (p.title.empty() ? 16 : p.note.empty() ? 40 : 58) * u;
+    Frame2 f{x + ytw + (p.y_label.empty() ? 18 : 40) * u, top, x + w - 20 * u,
+             y + h - (p.x_label.empty() ? 30 : 52) * u, xr, yr};
+    if (p.equal_aspect) equalise(f);
+    const auto xt = render::nice_ticks(f.xr.lo, f.xr.hi, std::max(3, static_cast<int>((f.x1 - f.x0) / (90 * u))));
+    const auto yt = render::nice_ticks(f.yr.lo, f.yr.hi, std::max(3, static_cast<int>((f.y1 - f.y0) / (60 * u))));
+
+    // Grid, then data clipped to the plot area, then the frame and ticks on top.
+    cairo_set_line_width(cr, 1 * u);
+    set_colour(cr, th.grid);
+    for (double v : xt.values) cairo_move_to(cr, f.px(v), f.y0), cairo_line_to(cr, f.px(v), f.y1);
+    for (double v : yt.values) cairo_move_to(cr, f.x0, f.py(v)), cairo_line_to(cr, f.x1, f.py(v));
+    cairo_stroke(cr);
+
+    cairo_save(cr);
+    cairo_rectangle(cr, f.x0, f.y0, f.x1 - f.x0, f.y1 - f.y0);
+    cairo_clip(cr);
+    for (const auto& r : p.ref_lines) {
+        set_colour(cr, r.colour);
+        cairo_set_line_width(cr, 1.3 * u);
+        set_dash(cr, r.dashed, u);
+        if (r.vertical) cairo_move_to(cr, f.px(r.value), f.y0), cairo_line_to(cr, f.px(r.value), f.y1);
+        else cairo_move_to(cr, f.x0, f.py(r.value)), cairo_line_to(cr, f.x1, f.py(r.value));
+        cairo_stroke(cr);
+        set_dash(cr, false, u);
+        if (!r.label.empty()) {
+            if (r.vertical) {
+                // Right of the line, or left of it when it would run past the frame.
+                const double lw = render::text_width(cr, th.font, 11 * u, r.label);
+                const bool left = f.px(r.value) + 4 * u + lw > f.x1;
+                render::text(cr, th.font, 11 * u, f.px(r.value) + (left ? -4 : 4) * u, f.y0 + 14 * u, r.label,
+                             left ? 1.0 : 0.0);
+            }
+            else
+                render::text(cr, th.font, 11 * u, f.x1 - 6 * u, f.py(r.value) - 5 * u, r.label, 1.0);
+        }
+    }
+    for (const auto& s : p.series) draw_series(cr, f, s, u);
+    for (const auto& l : p.labels) {
+        const double lx = f.px(l.at.x), ly = f.py(l.at.y);
+        set_colour(cr, l.colour);
+        if (l.dot) {
+            cairo_arc(cr, lx, ly, 3.2 * u, 0, 2 * std::numbers::pi);
+            cairo_fill(cr);
+        }
+        render::halo_text(cr, th.font, l.size_px * u, lx + l.dx_px * u, ly + l.dy_px * u, l.text, l.colour,
+                          th.background, 3.0 * u, l.align);
+    }
+    cairo_restore(cr);
+
+    set_colour(cr, th.text);
+    cairo_set_line_width(cr, 1.2 * u);
+    cairo_rectangle(cr, f.x0, f.y0, f.x1 - f.x0, f.y1 - f.y0);
+    cairo_stroke(cr);
+    const double tick = 5 * u, size = 12 * u;
+    for (double v : xt.values) {
+        cairo_move_to(cr, f.px(v), f.y1);
+        cairo_line_to(cr, f.px(v), f.y1 + tick);
+        cairo_stroke(cr);
+        render::text(cr, th.font, size, f.px(v), f.y1 + tick + 4 * u + 0.73 * size,
+                     render::format_tick(v, xt.decimals), 0.5);
+    }
+    for (double v : yt.values) {
+        cairo_move_to(cr, f.x0 - tick, f.py(v));
+        cairo_line_to(cr, f.x0, f.py(v));
+        cairo_stroke(cr);
+        render::text(cr, th.font, size, f.x0 - tick - 4 * u, f.py(v), render::format_tick(v, yt.decimals), 1.0, 0.5);
+    }
+    if (!p.x_label.empty())
+        render::text(cr, th.font, 13 * u, 0.5 * (f.x0 + f.x1), y + h - 12 * u, p.x_label, 0.5);
+    if (!p.y_label.empty()) {
+        cairo_save(cr);
+        cairo_translate(cr, x + 18 * u, 0.5 * (f.y0 + f.y1));
+        cairo_rotate(cr, -std::numbers::pi / 2);
+        render::text(cr, th.font, 13 * u, 0, 0, p.y_label, 0.5);
+        cairo_restore(cr);
+    }
+    if (!p.title.empty()) render::text(cr, th.font, 15 * u, f.x0, y + 24 * u, p.title, 0.0, 0.0, true);
+    if (!p.note.empty()) {
+        Rgba soft = th.text;
+        soft.a = 0.75;
+        set_colour(cr, soft);
+        render::text(cr, th.font, 12 * u, f.x0, y + 44 * u, p.note);
+    }
+    draw_legend(cr, p, f, u);
+    cairo_restore(cr);
+}
+
+void render_plot_png(const Plot& plot, int w, int h, const std::string& path) {
+    if (w < 100 || h < 100 || w > 16384 || h > 16384)
+        throw InputError(fmt::format("plot size {} x {} px is not allowed: each side must be 100..16384", w, h));
+    AtomicFile out(path);
+    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
+    {
+        cairo::Context cr = cairo::make_context(surface.get());
+        draw_plot(cr.get(), plot, 0, 0, w, h);
+        if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS)
+            throw std::runtime_error(std::string("drawing the plot: ") + cairo_status_to_string(cairo_status(cr.get())));
+    }
+    if (cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()) != CAIRO_STATUS_SUCCESS)
+        throw std::runtime_error("writing " + path);
+    out.commit();
+}
+
+}  // namespace dragon

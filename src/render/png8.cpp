@@ -1,0 +1,156 @@
+#include "render/png8.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <unordered_map>
+#include <vector>
+
+#include <png.h>
+
+#include "dragon/atomic_file.hpp"
+
+namespace dragon::render {
+
+namespace {
+
+struct Swatch {
+    std::uint32_t rgb;
+    std::uint32_t count;
+};
+
+int channel(std::uint32_t rgb, int c) { return static_cast<int>((rgb >> (16 - 8 * c)) & 0xff); }
+
+// Median cut on the image's colour histogram. Each box's colour is its most frequent member,
+// not its mean, so the flat colours of a drawing (background, boards) stay exact.
+std::vector<std::uint32_t> median_cut(std::vector<Swatch> colours, std::size_t max_colours) {
+    struct Box {
+        std::size_t begin, end;
+        int widest;       // channel with the largest range
+        int range;
+        std::uint64_t weight;
+    };
+    auto describe = [&](std::size_t b, std::size_t e) {
+        int lo[3] = {255, 255, 255}, hi[3] = {0, 0, 0};
+        std::uint64_t w = 0;
+        for (std::size_t i = b; i < e; ++i) {
+            for (int c = 0; c < 3; ++c) {
+                lo[c] = std::min(lo[c], channel(colours[i].rgb, c));
+                hi[c] = std::max(hi[c], channel(colours[i].rgb, c));
+            }
+            w += colours[i].count;
+        }
+        Box box{b, e, 0, -1, w};
+        for (int c = 0; c < 3; ++c)
+            if (hi[c] - lo[c] > box.range) box.range = hi[c] - lo[c], box.widest = c;
+        return box;
+    };
+    std::vector<Box> boxes{describe(0, colours.size())};
+    while (boxes.size() < max_colours) {
+        // Split the box whose spread matters most: range weighted by how many pixels it holds.
+        auto it = std::max_element(boxes.begin(), boxes.end(), [](const Box& a, const Box& b) {
+            return double(a.range) * std::sqrt(double(a.weight)) < double(b.range) * std::sqrt(double(b.weight));
+        });
+        if (it->range <= 0 || it->end - it->begin < 2) break;
+        const Box box = *it;
+        const int c = box.widest;
+        std::sort(colours.begin() + box.begin, colours.begin() + box.end,
+                  [c](const Swatch& a, const Swatch& b) { return channel(a.rgb, c) < channel(b.rgb, c); });
+        std::uint64_t acc = 0;
+        std::size_t cut = box.begin + 1;
+        for (std::size_t i = box.begin; i < box.end - 1; ++i) {
+            acc += colours[i].count;
+            cut = i + 1;
+            if (2 * acc >= box.weight) break;
+        }
+        *it = describe(box.begin, cut);
+        boxes.push_back(describe(cut, box.end));
+    }
+    std::vector<std::uint32_t> palette;
+    for (const Box& b : boxes) {
+        auto best = std::max_element(colours.begin() + b.begin, colours.begin() + b.end,
+                                     [](const Swatch& x, const Swatch& y) { return x.count < y.count; });
+        palette.push_back(best->rgb);
+    }
+    return palette;
+}
+
+struct PngWrite {
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    ~PngWrite() { png_destroy_write_struct(&png, &info); }
+};
+
+struct FileCloser {
+    void operator()(FILE* f) const noexcept { std::fclose(f); }
+};
+
+}  // namespace
+
+void write_png8(cairo_surface_t* surface, const std::string& path, int max_colours) {
+    cairo_surface_flush(surface);
+    const int w = cairo_image_surface_get_width(surface), h = cairo_image_surface_get_height(surface);
+    const int stride = cairo_image_surface_get_stride(surface);
+    const unsigned char* data = cairo_image_surface_get_data(surface);
+    auto pixel = [&](int x, int y) { return reinterpret_cast<const std::uint32_t*>(data + y * stride)[x] & 0xffffffu; };
+
+    std::unordered_map<std::uint32_t, std::uint32_t> histogram;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) ++histogram[pixel(x, y)];
+    std::vector<Swatch> colours;
+    colours.reserve(histogram.size());
+    for (auto [rgb, n] : histogram) colours.push_back({rgb, n});
+    const std::vector<std::uint32_t> palette =
+        median_cut(std::move(colours), static_cast<std::size_t>(std::clamp(max_colours, 2, 256)));
+
+    std::unordered_map<std::uint32_t, std::uint8_t> index;
+    for (auto& [rgb, n] : histogram) {
+        int best = 0, best_d = 1 << 30;
+        for (std::size_t k = 0; k < palette.size(); ++k) {
+            int d = 0;
+            for (int c = 0; c < 3; ++c) {
+                const int e = channel(rgb, c) - channel(palette[k], c);
+                d += e * e;
+            }
+            if (d < best_d) best_d = d, best = static_cast<int>(k);
+        }
+        index[rgb] = static_cast<std::uint8_t>(best);
+    }
+
+    AtomicFile out(path);
+    std::unique_ptr<FILE, FileCloser> file(std::fopen(out.temp_path().c_str(), "wb"));
+    if (!file) throw std::runtime_error("cannot write " + out.temp_path());
+    PngWrite pw;
+    pw.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    if (pw.png) pw.info = png_create_info_struct(pw.png);
+    if (!pw.png || !pw.info) throw std::runtime_error("libpng: out of memory");
+    std::vector<png_color> pal;
+    for (std::uint32_t rgb : palette)
+        pal.push_back({static_cast<png_byte>(channel(rgb, 0)), static_cast<png_byte>(channel(rgb, 1)),
+                       static_cast<png_byte>(channel(rgb, 2))});
+    std::vector<png_byte> rows(static_cast<std::size_t>(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) rows[static_cast<std::size_t>(y) * w + x] = index[pixel(x, y)];
+    std::vector<png_bytep> row_ptrs(h);
+    for (int y = 0; y < h; ++y) row_ptrs[y] = rows.data() + static_cast<std::size_t>(y) * w;
+    // libpng reports errors by longjmp: nothing with a destructor may be created below.
+    if (setjmp(png_jmpbuf(pw.png))) throw std::runtime_error("libpng failed writing " + path);
+    png_init_io(pw.png, file.get());
+    png_set_IHDR(pw.png, pw.info, w, h, 8, PNG_COLOR_TYPE_PALETTE, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+                 PNG_FILTER_TYPE_DEFAULT);
+    png_set_PLTE(pw.png, pw.info, pal.data(), static_cast<int>(pal.size()));
+    png_set_compression_level(pw.png, 9);
+    png_set_filter(pw.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);  // palette images: no filter compresses best
+    png_write_info(pw.png, pw.info);
+    png_write_image(pw.png, row_ptrs.data());
+    png_write_end(pw.png, nullptr);
+    if (std::fflush(file.get()) != 0) throw std::runtime_error("writing " + path);
+    file.reset();
+    out.commit();
+}
+
+}  // namespace dragon::render
