@@ -9,6 +9,7 @@
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/render.hpp"
+#include "render/figure_kit.hpp"
 
 namespace dragon::cli {
 
@@ -59,11 +60,13 @@ void register_render(CLI::App& app, Registry& reg) {
         if (opt->collision) {
             const Contact c = find_contact(sim);
             frame = c.frame;
-            so.collision = CollisionMark{c.bench_a, c.bench_b, c.point};
+            // Marked where the boards meet: the corner of one nearest the other.
+            const Vec2 at = fig::contact_point(frame.benches[c.bench_a - 1], frame.benches[c.bench_b - 1]);
+            so.collision = CollisionMark{c.bench_a, c.bench_b, at};
             if (!so.annotation)
                 so.annotation = fmt::format("first contact t = {:.6f} s: benches {} and {}", c.time,
                                             c.bench_a, c.bench_b);
-            if (opt->look.zoom()) so.camera = Camera::at(c.point, *opt->look.zoom());
+            if (opt->look.zoom()) so.camera = Camera::at(at, *opt->look.zoom());
         } else {
             sim.require_on_path(*opt->time, "--time");
             frame = sim.frame(*opt->time);

@@ -93,7 +93,7 @@ void link_geometry(const Context& c, const std::string& path) {
     s.polylines.push_back(chord1);
     s.polylines.push_back(chord2);
     s.labels.push_back(label(0.5 * (h0 + h1), fmt::format("d\u2081 = {:.2f} m (head: {:.2f} \u2212 2\u00d7{:.3f})", d1,
-                                                           spec.head_length, spec.hole_offset), ink, 13, 30, -12));
+                                                           spec.head_length, spec.hole_offset), ink, 13, 70, 30));
     s.labels.push_back(label(0.5 * (h1 + h2), fmt::format("d\u2082 = {:.2f} m", d2), ink, 13, 10, 6));
 
     // Velocities: v_i T_i at each end of the head link, and the link direction u. Rigidity makes
