@@ -385,8 +385,10 @@ void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
 
     // The world keeps clear of the colour bar's strip.
     cairo_save(cr);
-    cairo_rectangle(cr, 0, 0, w - right, h);
-    cairo_clip(cr);
+    if (right > 0) {
+        cairo_rectangle(cr, 0, 0, w - right, h);
+        cairo_clip(cr);
+    }
     draw_turning_space(cr, s, v, u);
     draw_guides(cr, s, v, u);
     draw_benches(cr, s, v, u, vector_surface, w - right, h);
