@@ -1,8 +1,11 @@
 // Whole-dragon pictures: Fig. 2 (the dragon at 300 s, coloured by its exact speeds) and the
 // turnaround in the dark theme.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "dragon/cairo_handles.hpp"
+#include "dragon/turnaround.hpp"
 #include "render/figure_kit.hpp"
 
 namespace dragon::fig {
@@ -36,14 +39,20 @@ void turnaround_scene(const Context& c, const std::string& path) {
     Scenario sc = c.base;
     sc.path.kind = PathKind::turnaround;
     const Simulation sim(sc);
-    const double t = 8.0;
+    // One second after the head leaves the S-curve: the handles behind it are still turning
+    // and run fastest about then (see plot_speed_ratio).
+    const double t = design_s_curve(sc).length / sc.head_speed + 1.0;
+    const Frame f = sim.frame(t);
+    double fastest = 0;
+    for (const Handle& h : f.handles) fastest = std::max(fastest, h.speed);
     SceneOptions so;
     so.theme = load_theme("dark");
     so.colour_by_speed = true;
     so.camera = Camera::at({0, 0}, 2.0 * sc.path.turn_radius + 9.0);
-    so.annotation = fmt::format("Turnaround, t = {:g} s: coil-in spiral, S-curve (orange), coil-out spiral; pitch {:g} m", t,
-                                sc.path.turn_pitch);
-    paint(make_scene(sim, sim.frame(t), so), c.px(1000), c.px(1000), path);
+    so.annotation = fmt::format("Turnaround at t = {:.1f} s, 1 s after the head leaves the S-curve (orange), pitch {:g} m\n"
+                                "The head bench pivots: handles behind it run up to {:.3f} m/s while the head keeps {:g} m/s",
+                                t, sc.path.turn_pitch, fastest, sc.head_speed);
+    paint(make_scene(sim, f, so), c.px(1000), c.px(1000), path);
 }
 
 }  // namespace dragon::fig

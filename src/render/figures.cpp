@@ -26,7 +26,8 @@ const std::vector<Entry>& entries() {
         {{"plot_clearance", "Clearance against time up to the termination"}, fig::clearance_over_time},
         {{"plot_s_curve", "The S-curve: centres, radii and tangent points"}, fig::s_curve_geometry},
         {{"plot_speed_ratio", "Largest handle speed over head speed on the turnaround"}, fig::speed_ratio_on_turnaround},
-        {{"turnaround_t8_dark", "The turnaround at 8 s in the dark theme, coloured by speed"}, fig::turnaround_scene},
+        {{"turnaround_dark", "The turnaround 1 s after the head leaves the S-curve, dark theme, coloured by speed"},
+         fig::turnaround_scene},
     };
     return list;
 }
