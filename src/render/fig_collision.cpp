@@ -159,6 +159,7 @@ void pitch_states(const Context& c, const std::string& path) {
     const std::vector<double> pitches{0.440, 0.445, 0.450, 0.455, 0.460, 0.470};
     std::vector<Scene> panels;
     std::vector<double> touching, clear;
+    std::vector<std::string> captions;
     for (double pitch : pitches) {
         Scenario sc = c.base;
         sc.path.pitch = pitch;
@@ -167,6 +168,7 @@ void pitch_states(const Context& c, const std::string& path) {
         so.theme = th;
         so.camera = Camera::at({0, 0}, 2 * sc.path.turn_radius + 7.0);
         so.show_scale_bar = false;
+        so.annotation = "";
         const auto hit = contact_before_boundary(c.base, pitch);
         (hit ? touching : clear).push_back(pitch);
         Frame f;
@@ -174,25 +176,26 @@ void pitch_states(const Context& c, const std::string& path) {
             f = hit->frame;
             const Vec2 q = contact_point(f.benches[hit->bench_a - 1], f.benches[hit->bench_b - 1]);
             so.collision = CollisionMark{hit->bench_a, hit->bench_b, q};
-            so.annotation = fmt::format("p = {:.6f} m: benches {} and {} touch, t = {:.2f} s", pitch, hit->bench_a,
-                                        hit->bench_b, hit->time);
+            captions.push_back(fmt::format("pitch {:.3f} m: benches {} and {} touch at t = {:.2f} s", pitch, hit->bench_a,
+                                        hit->bench_b, hit->time));
         } else {
             f = sim.frame(boundary_time(sim));
-            so.annotation = fmt::format("p = {:.6f} m: head reaches r = {:g} m clear", pitch, sc.path.turn_radius);
+            captions.push_back(fmt::format("pitch {:.3f} m: the head reaches r = {:g} m, no contact", pitch,
+                                           sc.path.turn_radius));
         }
         panels.push_back(make_scene(sim, f, so));
     }
-    const int pw = c.px(440), ph = c.px(440), gap = 6;
+    const int pw = c.px(440), ph = c.px(440), gap = 6, caption_h = c.px(24);
     const int cols = 3, rows = 2;
     const int title_h = c.px(40);
-    const int w = cols * pw + (cols + 1) * gap, h = rows * ph + (rows + 1) * gap + title_h;
+    const int w = cols * pw + (cols + 1) * gap, h = rows * (ph + caption_h) + (rows + 1) * gap + title_h;
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
     cairo::Context cr = cairo::make_context(surface.get());
     cairo_set_source_rgb(cr.get(), th.background.r, th.background.g, th.background.b);
     cairo_paint(cr.get());
     cairo_save(cr.get());
     cairo_translate(cr.get(), 0, title_h);
-    draw_panels(cr.get(), panels, cols, pw, ph, th, gap);
+    draw_panels(cr.get(), panels, captions, cols, pw, ph, caption_h, th, gap);
     cairo_restore(cr.get());
     cairo_set_source_rgb(cr.get(), th.text.r, th.text.g, th.text.b);
     cairo_select_font_face(cr.get(), th.font.c_str(), CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);

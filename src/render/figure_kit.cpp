@@ -57,14 +57,27 @@ Rgba with_alpha(Rgba c, double a) {
     return c;
 }
 
-void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, int cols, int pw, int ph, const Theme& theme,
-                 int gap) {
+void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, const std::vector<std::string>& captions, int cols,
+                 int pw, int ph, int caption_h, const Theme& theme, int gap) {
     cairo_set_source_rgb(cr, theme.grid.r, theme.grid.g, theme.grid.b);
     cairo_paint(cr);
     for (std::size_t i = 0; i < panels.size(); ++i) {
         const int col = static_cast<int>(i) % cols, row = static_cast<int>(i) / cols;
         cairo_save(cr);
-        cairo_translate(cr, gap + col * (pw + gap), gap + row * (ph + gap));
+        cairo_translate(cr, gap + col * (pw + gap), gap + row * (ph + caption_h + gap));
+        cairo_rectangle(cr, 0, 0, pw, ph + caption_h);
+        cairo_clip(cr);
+        cairo_set_source_rgb(cr, theme.background.r, theme.background.g, theme.background.b);
+        cairo_paint(cr);
+        if (i < captions.size()) {
+            // Captions outside the picture, at a size that reads whatever the panel's size.
+            cairo_set_source_rgb(cr, theme.text.r, theme.text.g, theme.text.b);
+            cairo_select_font_face(cr, theme.font.c_str(), CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+            cairo_set_font_size(cr, 0.6 * caption_h);
+            cairo_move_to(cr, 0.3 * caption_h, 0.72 * caption_h);
+            cairo_show_text(cr, captions[i].c_str());
+        }
+        cairo_translate(cr, 0, caption_h);
         cairo_rectangle(cr, 0, 0, pw, ph);
         cairo_clip(cr);
         draw(cr, panels[i], pw, ph);

@@ -31,9 +31,10 @@ Polyline circle(Vec2 centre, double radius, Rgba colour, double width_px = 1.2, 
 Label label(Vec2 at, std::string text, Rgba colour, double size_px = 13, double dx = 6, double dy = -6);
 Rgba with_alpha(Rgba c, double a);
 
-// Several scenes side by side: cols x rows panels of equal size, each drawn by draw().
-void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, int cols, int panel_w, int panel_h,
-                 const Theme& theme, int gap_px);
+// Several scenes side by side: cols x rows panels of equal size, each drawn by draw() under a
+// caption strip caption_h pixels tall.
+void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, const std::vector<std::string>& captions, int cols,
+                 int panel_w, int panel_h, int caption_h, const Theme& theme, int gap_px);
 // A palette PNG: 64 colours suit flat drawings; speed-coloured pictures need 256 so the colour
 // map stays smooth.
 void write_png(cairo_surface_t* surface, const std::string& path, int colours = 64);
