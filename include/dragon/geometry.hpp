@@ -21,7 +21,8 @@ constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 constexpr double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 // a turned by +90 degrees (counter-clockwise).
 constexpr Vec2 perp(Vec2 a) { return {-a.y, a.x}; }
-inline double norm(Vec2 a) { return std::hypot(a.x, a.y); }
+// Plain sqrt, not std::hypot: lengths here are metres, far from overflow, and hypot is ~10x slower.
+inline double norm(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 inline double distance(Vec2 a, Vec2 b) { return norm(a - b); }
 inline Vec2 normalized(Vec2 a) { return a / norm(a); }
 // Rotation by angle phi (radians, counter-clockwise).

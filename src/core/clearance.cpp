@@ -9,7 +9,9 @@ namespace dragon {
 
 namespace {
 
-double bounding_radius(const Rect& r) { return std::hypot(r.half_length, r.half_width); }
+double bounding_radius(const Rect& r) {
+    return std::sqrt(r.half_length * r.half_length + r.half_width * r.half_width);
+}
 
 void consider(Clearance& best, const Frame& f, int i, int j) {
     const Rect& a = f.benches[static_cast<size_t>(i)];
@@ -29,26 +31,28 @@ std::vector<std::pair<int, int>> candidate_pairs(const Frame& f, double margin) 
     const int n = static_cast<int>(f.benches.size());
     struct Item {
         double lo, hi;
+        Vec2 centre;
+        double radius;
         int index;
     };
     std::vector<Item> items(static_cast<size_t>(n));
     for (int i = 0; i < n; ++i) {
         const Rect& r = f.benches[static_cast<size_t>(i)];
-        const double rad = bounding_radius(r) + 0.5 * margin;
-        items[static_cast<size_t>(i)] = {r.centre.x - rad, r.centre.x + rad, i};
+        const double rad = bounding_radius(r);
+        items[static_cast<size_t>(i)] = {r.centre.x - rad - 0.5 * margin, r.centre.x + rad + 0.5 * margin,
+                                         r.centre, rad, i};
     }
     std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.lo < b.lo; });
     std::vector<std::pair<int, int>> out;
     for (size_t a = 0; a < items.size(); ++a) {
-        const Rect& ra = f.benches[static_cast<size_t>(items[a].index)];
-        const double rada = bounding_radius(ra);
-        for (size_t b = a + 1; b < items.size() && items[b].lo <= items[a].hi; ++b) {
-            const int i = std::min(items[a].index, items[b].index);
-            const int j = std::max(items[a].index, items[b].index);
+        const Item& ia = items[a];
+        for (size_t b = a + 1; b < items.size() && items[b].lo <= ia.hi; ++b) {
+            const Item& ib = items[b];
+            const int i = std::min(ia.index, ib.index);
+            const int j = std::max(ia.index, ib.index);
             if (j - i < 2) continue;
-            const Rect& rb = f.benches[static_cast<size_t>(items[b].index)];
-            const double reach = rada + bounding_radius(rb) + margin;
-            const Vec2 d = ra.centre - rb.centre;
+            const double reach = ia.radius + ib.radius + margin;
+            const Vec2 d = ia.centre - ib.centre;
             if (dot(d, d) <= reach * reach) out.emplace_back(i + 1, j + 1);
         }
     }

@@ -28,18 +28,22 @@ constexpr double kMargin = 1.0;    // broad-phase margin, m
 constexpr double kMaxStep = 1.0;   // s; keeps the velocity bound's drift over a step small
 constexpr double kProbeGap = 2e-3; // m; below this clearance, try to bracket the contact
 
-// Largest point speed of any bench in the frame rotating about the origin at rate w.
+// Largest point speed of any bench in the frame rotating about the origin at rate w. A bench's
+// velocity field there is v_c - w perp(c) + (omega - w) perp(x - c): at most the centre's speed
+// plus |omega - w| times the bench's half-diagonal.
 double max_speed_in_frame(const Frame& f, const std::vector<BenchMotion>& motion, double w) {
     double worst = 0.0;
     for (size_t k = 0; k < f.benches.size(); ++k) {
-        const Corners c = corners(f.benches[k]);
-        for (const Vec2 x : c.p) worst = std::max(worst, norm(motion[k].at(x) - w * perp(x)));
+        const Rect& r = f.benches[k];
+        const BenchMotion& m = motion[k];
+        worst = std::max(worst, norm(m.v_centre - w * perp(m.centre)) +
+                                    std::abs(m.omega - w) * std::sqrt(r.half_length * r.half_length + r.half_width * r.half_width));
     }
     return worst;
 }
 
-// The smallest of a few rotating frames' bounds: the fixed frame and the frames turning with
-// the mean angular speed of the innermost and outermost benches and halfway between.
+// The smallest of a few rotating frames' bounds: the fixed frame and frames turning at rates
+// spread over the benches' angular speeds about the origin.
 double far_speed_bound(const Frame& f, const std::vector<BenchMotion>& motion) {
     double wmin = INFINITY, wmax = -INFINITY;
     for (const BenchMotion& m : motion) {
@@ -51,7 +55,7 @@ double far_speed_bound(const Frame& f, const std::vector<BenchMotion>& motion) {
     }
     double best = max_speed_in_frame(f, motion, 0.0);
     if (!std::isfinite(wmin)) return best;
-    for (double k : {0.25, 0.5, 0.75})
+    for (double k : {0.2, 0.35, 0.5, 0.65, 0.8})
         best = std::min(best, max_speed_in_frame(f, motion, wmin + k * (wmax - wmin)));
     return best;
 }
@@ -62,25 +66,49 @@ struct Approach {
     double rate;       // d/dt of the closest pair's separation now (negative: closing)
 };
 
+// One pass over the broad phase's pairs gives both the clearance and the safe step.
 Approach approach(const Frame& f) {
-    Approach a{clearance(f, kMargin), std::numeric_limits<double>::infinity(), 0.0};
+    Approach a{{INFINITY, 0, 0, {}, {}}, INFINITY, 0.0};
     if (f.benches.size() < 3) return a;
     const std::vector<BenchMotion> motion = bench_motions(f);
     // Pairs beyond the margin: their gap shrinks no faster than the sum of the two benches'
-    // largest point speeds, measured in any rotating frame (a rotation about the centre moves
-    // both points of a pair without changing their distance). The frame that turns with the
-    // chain's mean angular speed makes those speeds far smaller than in the fixed frame.
-    double fastest = far_speed_bound(f, motion);
-    a.safe_step = kMargin / (kSafety * 2.0 * fastest);
-    for (const auto& [i, j] : candidate_pairs(f, kMargin)) {
-        const Rect& ra = f.benches[static_cast<size_t>(i - 1)];
-        const Rect& rb = f.benches[static_cast<size_t>(j - 1)];
-        const BenchMotion& ma = motion[static_cast<size_t>(i - 1)];
-        const BenchMotion& mb = motion[static_cast<size_t>(j - 1)];
-        const double g = sat_gap(ra, rb).gap;  // a lower bound on the distance
-        const double bound = separation_rate_bound(ra, ma, mb, g);
+    // largest point speeds, measured in any frame rotating about the centre (a rotation moves
+    // both points of a pair without changing their distance). A frame turning with the chain
+    // makes those speeds far smaller than the fixed frame does.
+    a.safe_step = kMargin / (kSafety * 2.0 * far_speed_bound(f, motion));
+    const auto pairs = candidate_pairs(f, kMargin);
+    double best_gap = INFINITY;
+    size_t seed = 0;
+    std::vector<double> gaps(pairs.size());
+    for (size_t k = 0; k < pairs.size(); ++k) {
+        const size_t i = static_cast<size_t>(pairs[k].first - 1), j = static_cast<size_t>(pairs[k].second - 1);
+        const Rect& ra = f.benches[i];
+        const double g = sat_gap(ra, f.benches[j]).gap;  // a lower bound on the distance
+        gaps[k] = g;
+        if (g < best_gap) { best_gap = g; seed = k; }
+        // Relative velocity field of b seen from a: affine, so within a's rectangle its norm is
+        // at most its value at a's centre plus the turn-rate difference times the half-diagonal.
+        const BenchMotion& ma = motion[i];
+        const BenchMotion& mb = motion[j];
+        const double bound = norm(mb.at(ma.centre) - ma.v_centre) +
+                             std::abs(mb.omega - ma.omega) * std::sqrt(ra.half_length * ra.half_length + ra.half_width * ra.half_width) +
+                             std::abs(mb.omega) * std::max(g, 0.0);
         if (bound > 0.0) a.safe_step = std::min(a.safe_step, std::max(g, 0.0) / (kSafety * bound));
     }
+    if (pairs.empty()) {
+        a.clear = clearance(f, kMargin);
+        return a;
+    }
+    // Exact distances only where the projected gap (a lower bound) could still win.
+    auto exact = [&](size_t k) {
+        const Separation s = separation(f.benches[static_cast<size_t>(pairs[k].first - 1)],
+                                        f.benches[static_cast<size_t>(pairs[k].second - 1)]);
+        if (s.distance < a.clear.distance) a.clear = {s.distance, pairs[k].first, pairs[k].second, s.axis, s.point};
+    };
+    exact(seed);
+    for (size_t k = 0; k < pairs.size(); ++k)
+        if (k != seed && gaps[k] < a.clear.distance) exact(k);
+    if (a.clear.distance > kMargin) a.clear = clearance(f, kMargin);  // nothing near: report the margin
     if (a.clear.bench_a > 0) {
         // Separation rate of the closest pair: the witness on b moving away from a along the axis.
         const BenchMotion& ma = motion[static_cast<size_t>(a.clear.bench_a - 1)];

@@ -100,7 +100,8 @@ std::optional<Located> Spiral::behind(const Located& from, double chord) const {
         const double dg = 2.0 * (t2 - th * c + th * t2 * s);
         const double ddg = 2.0 * (1.0 + 2.0 * th * s + th * t2 * c);
         double next = phi - 2.0 * g * dg / (2.0 * dg * dg - g * ddg);
-        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        // Closed bracket: at (or a rounding step from) the root, phi itself is an end of it.
+        if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi);
         step = next - phi;
         phi = next;
         if (std::abs(step) <= tol::halley_step || hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * (th + kPi)) break;

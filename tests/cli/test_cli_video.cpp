@@ -11,15 +11,13 @@
 
 #include <gtest/gtest.h>
 
+#include "support/scratch.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch_dir() {
-    const fs::path dir = fs::path(DRAGON_TEST_TMP) / "cli-video";
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path scratch_dir() { return dragon_test::scratch_dir(); }
 
 struct RunResult {
     int code;

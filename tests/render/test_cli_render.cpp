@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/scratch.hpp"
+
 #include "dragon/cairo_handles.hpp"
 #include "dragon/figures.hpp"
 
@@ -24,8 +26,7 @@ class CliRender : public ::testing::Test {
 protected:
     void SetUp() override {
         if (!fs::exists(DRAGON_EXE)) GTEST_SKIP() << "dragon is not built";
-        dir = fs::path(DRAGON_TEST_TMP) / "cli_render";
-        fs::create_directories(dir);
+        dir = dragon_test::scratch_dir();
     }
     fs::path dir;
 };

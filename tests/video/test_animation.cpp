@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/scratch.hpp"
+
 #include "dragon/cairo_handles.hpp"
 #include "dragon/scenario.hpp"
 #include "dragon/video.hpp"
@@ -18,8 +20,7 @@ using namespace dragon;
 namespace {
 
 std::string scratch(const std::string& name) {
-    const fs::path dir = fs::path(DRAGON_TEST_TMP) / "animation";
-    fs::create_directories(dir);
+    const fs::path dir = dragon_test::scratch_dir();
     const fs::path p = dir / name;
     fs::remove(p);
     return p.string();

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/scratch.hpp"
+
 #include "dragon/scenario.hpp"
 #include "dragon/video.hpp"
 #include "dragon/cairo_handles.hpp"
@@ -22,8 +24,7 @@ namespace {
 [[maybe_unused]] const bool codec_logs_quiet = (quiet_codec_logs(), true);
 
 std::string scratch(const std::string& name) {
-    const fs::path dir = fs::path(DRAGON_TEST_TMP) / "video";
-    fs::create_directories(dir);
+    const fs::path dir = dragon_test::scratch_dir();
     const fs::path p = dir / name;
     fs::remove(p);
     return p.string();

@@ -1,0 +1,42 @@
+// Core timings: one frame, the Q1 table, the Q2 first contact, the Q3 minimum pitch.
+// Run: build/tests/bench/dragon_bench --benchmark_filter='Frame|Q1|Q2|Q3'
+#include <benchmark/benchmark.h>
+
+#include "dragon/analyses.hpp"
+
+using namespace dragon;
+
+static void BM_Frame(benchmark::State& state) {
+    const Simulation sim(Scenario{});
+    Frame f;
+    double t = 0.0;
+    for (auto _ : state) {
+        sim.frame_into(t, f);
+        benchmark::DoNotOptimize(f.handles.data());
+        t = t >= 400.0 ? 0.0 : t + 1.37;
+    }
+}
+BENCHMARK(BM_Frame)->Unit(benchmark::kMicrosecond);
+
+static void BM_Q1Table(benchmark::State& state) {
+    const Simulation sim(Scenario{});
+    for (auto _ : state) benchmark::DoNotOptimize(simulate_table(sim, 0.0, 300.0, 1.0));
+}
+BENCHMARK(BM_Q1Table)->Unit(benchmark::kMillisecond);
+
+static void BM_Clearance(benchmark::State& state) {
+    const Frame f = Simulation(Scenario{}).frame(400.0);
+    for (auto _ : state) benchmark::DoNotOptimize(clearance(f));
+}
+BENCHMARK(BM_Clearance)->Unit(benchmark::kMicrosecond);
+
+static void BM_Q2FirstContact(benchmark::State& state) {
+    const Simulation sim(Scenario{});
+    for (auto _ : state) benchmark::DoNotOptimize(first_contact(sim, 0.0, sim.end_time()));
+}
+BENCHMARK(BM_Q2FirstContact)->Unit(benchmark::kMillisecond);
+
+static void BM_Q3MinPitch(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(min_pitch(Scenario{}, 0.35, 0.55));
+}
+BENCHMARK(BM_Q3MinPitch)->Unit(benchmark::kMillisecond)->Iterations(1);

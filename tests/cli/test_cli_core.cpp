@@ -1,0 +1,143 @@
+// dragon simulate / collide / min-pitch / solve end to end: good runs, and bad input getting one
+// clear line, exit code 2 and no file.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "support/scratch.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch() { return dragon_test::scratch_dir(); }
+
+struct CliRun {
+    int code;
+    std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+    std::ifstream f(p);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+CliRun dragon(const std::string& args) {
+    const fs::path out = scratch() / "stdout.txt", err = scratch() / "stderr.txt";
+    const std::string cmd = std::string(DRAGON_EXE) + " " + args + " >" + out.string() + " 2>" + err.string();
+    const int status = std::system(cmd.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+}
+
+int lines(const std::string& s) {
+    int n = 0;
+    for (char c : s) n += c == '\n';
+    return n;
+}
+
+struct BadCase {
+    std::string args;
+    std::string word;  // the error line must name this
+};
+
+class BadInput : public ::testing::TestWithParam<BadCase> {};
+
+}  // namespace
+
+TEST_P(BadInput, OneLineExitTwoNoFile) {
+    const fs::path target = scratch() / "bad-output.csv";
+    fs::remove(target);
+    std::string args = GetParam().args;
+    const auto at = args.find("@OUT");
+    if (at != std::string::npos) args.replace(at, 4, target.string());
+    const CliRun r = dragon(args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(GetParam().word), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(target));
+    for (const auto& e : fs::directory_iterator(scratch()))
+        EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cli, BadInput,
+    ::testing::Values(
+        BadCase{"simulate --pitch 0 -o @OUT", "pitch"},
+        BadCase{"simulate --pitch -0.5 -o @OUT", "pitch"},
+        BadCase{"simulate --pitch nan -o @OUT", "pitch"},
+        BadCase{"simulate --speed 0 -o @OUT", "speed"},
+        BadCase{"simulate --speed inf -o @OUT", "speed"},
+        BadCase{"simulate --head-length -1 -o @OUT", "head length"},
+        BadCase{"simulate --body-length 0 -o @OUT", "body length"},
+        BadCase{"simulate --width nan -o @OUT", "width"},
+        BadCase{"simulate --hole-offset 1.1 -o @OUT", "hole offset"},
+        BadCase{"simulate --body-count 0 -o @OUT", "--body-count"},
+        BadCase{"simulate --pitch 0.25 -o @OUT", "pitch"},  // narrower than a bench: does not fit
+        BadCase{"simulate --start-turn 0 -o @OUT", "start turn"},
+        BadCase{"simulate --start-turn -3 -o @OUT", "start turn"},
+        BadCase{"simulate --to 5000 -o @OUT", "--to"},
+        BadCase{"simulate --from 5 --to 1 -o @OUT", "--to"},
+        BadCase{"simulate --step 0 -o @OUT", "--step"},
+        BadCase{"simulate --bogus 1 -o @OUT", "bogus"},
+        BadCase{"simulate --pitch abc -o @OUT", "pitch"},
+        BadCase{"simulate --path circle -o @OUT", "circle"},
+        BadCase{"simulate --scenario /nonexistent.toml -o @OUT", "nonexistent.toml"},
+        BadCase{"simulate -o /nonexistent-dir/out.csv", "nonexistent-dir"},
+        BadCase{"simulate -o @OUT.txt", ".txt"},
+        BadCase{"collide --pitch 0", "pitch"},
+        BadCase{"min-pitch --lo 0.6 --hi 0.5", "range"},
+        BadCase{"solve -o /proc/forbidden", "/proc/forbidden"}));
+
+TEST(Cli, MalformedScenarioFileIsRefused) {
+    const fs::path bad = scratch() / "bad.toml", unknown = scratch() / "unknown.toml";
+    std::ofstream(bad) << "[dragon\nwidth = 0.3\n";
+    std::ofstream(unknown) << "[dragon]\nwidht = 0.3\n";
+    for (const fs::path& f : {bad, unknown}) {
+        const CliRun r = dragon("simulate --to 1 --scenario " + f.string());
+        EXPECT_EQ(r.code, 2);
+        EXPECT_EQ(lines(r.err), 1) << r.err;
+        EXPECT_NE(r.err.find(f.filename().string()), std::string::npos) << r.err;
+    }
+}
+
+TEST(Cli, ScenarioFileAndFlagsOverrideDefaults) {
+    // The shipped preset reproduces the defaults; a flag overrides the file.
+    const std::string preset = std::string(DRAGON_SOURCE_DIR) + "/assets/cumcm2024.toml";
+    const CliRun a = dragon("simulate --to 2");
+    const CliRun b = dragon("simulate --to 2 --scenario " + preset);
+    ASSERT_EQ(a.code, 0);
+    EXPECT_EQ(a.out, b.out);
+    const CliRun c = dragon("simulate --to 2 --scenario " + preset + " --pitch 0.6");
+    EXPECT_NE(a.out, c.out);
+    EXPECT_NE(c.out.find("\n0,0,9.600000,0.000000,1.000000\n"), std::string::npos) << c.out.substr(0, 200);
+}
+
+TEST(Cli, SimulateWritesEachFormat) {
+    for (const char* ext : {".csv", ".json", ".xlsx"}) {
+        const fs::path out = scratch() / (std::string("sim") + ext);
+        fs::remove(out);
+        const CliRun r = dragon("simulate --from 0 --to 10 --step 2 -o " + out.string());
+        EXPECT_EQ(r.code, 0) << r.err;
+        EXPECT_TRUE(fs::exists(out));
+        EXPECT_GT(fs::file_size(out), 1000u);
+    }
+    const std::string csv = slurp(scratch() / "sim.csv");
+    EXPECT_EQ(lines(csv), 1 + 6 * 224);
+    EXPECT_EQ(csv.rfind("10,223,", std::string::npos) != std::string::npos, true);
+}
+
+TEST(Cli, CollideJsonHasTheAgreedKeys) {
+    const CliRun r = dragon("collide --json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (const char* key : {"\"time\": 412.47", "\"benches\": [1, 9]", "\"head_radius\": "})
+        EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out.substr(0, 200);
+    EXPECT_EQ(lines(r.out), 1);
+}

@@ -1,0 +1,23 @@
+// A scratch folder of the test that is running, its own: ctest runs tests in parallel, one
+// process each, so folders shared between tests would race (one test's output counted as
+// another's stray file).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace dragon_test {
+
+inline std::filesystem::path scratch_dir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "no-test";
+    for (char& c : name)
+        if (c == '/') c = '_';  // parameterised names are Prefix/Suite.Name/Index
+    const auto dir = std::filesystem::path(DRAGON_TEST_TMP) / name;
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+}  // namespace dragon_test
