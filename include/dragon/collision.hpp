@@ -15,7 +15,8 @@ namespace dragon {
 struct Separation {
     double distance;
     Vec2 axis;
-    Vec2 point;  // a witness: the point of b nearest to a (apart) or deepest in a (overlapping)
+    Vec2 point;  // a witness: the point of b nearest to a (apart), or the corner of either board
+                 // deepest inside the other (overlapping)
 };
 Separation separation(const Rect& a, const Rect& b);
 

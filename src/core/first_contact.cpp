@@ -11,9 +11,13 @@
 // one bisection over the whole run. Near the contact a Newton probe on the closest pair
 // brackets the root, which is then refined by bisection to tol::contact_time.
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <unordered_map>
 #include <cmath>
 #include <limits>
 
+#include "core/corner_gaps.hpp"
 #include "core/motion.hpp"
 #include "core/sat.hpp"
 #include "dragon/analyses.hpp"
@@ -60,26 +64,54 @@ double far_speed_bound(const Frame& f, const std::vector<BenchMotion>& motion) {
     return best;
 }
 
+// What the stepper remembers of the near pairs at the last evaluation: the corner-gap rates and
+// the curvature bound the step relied on, to check that bound against the rates found next.
+struct PairMemory {
+    double time;
+    std::array<double, 8> rates;
+    double curvature;
+};
+using Memory = std::unordered_map<std::uint64_t, PairMemory>;
+
+std::uint64_t key_of(int a, int b) { return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b); }
+
 struct Approach {
     Clearance clear;
     double safe_step;  // s: no contact can happen sooner
     double rate;       // d/dt of the closest pair's separation now (negative: closing)
+    bool bound_broken; // a near pair's rates changed faster than the last step assumed
 };
 
-// One pass over the broad phase's pairs gives both the clearance and the safe step.
-Approach approach(const Frame& f) {
-    Approach a{{INFINITY, 0, 0, {}, {}}, INFINITY, 0.0};
+// One pass over the broad phase's pairs gives the clearance and the safe step.
+//
+// Each pair first gets the first-order step g / (kSafety L) from its projected gap g and the
+// bound L on its closing speed. Pairs whose first-order step could decide the step are then
+// looked at closer: their eight corner gaps, each with its exact rate, are bounded to second
+// order, d(t + h) >= d + rate h - M h^2 / 2, with M kSafety times the larger of the rate
+// changes seen since the last evaluation and a rotational floor. A pair's step is the better
+// of the two bounds. This is what makes grazing passes cheap: a corner gliding past at a
+// tiny distance with zero rate still allows sqrt(2 d / M), where the first-order bound would
+// crawl. The curvature each step relied on is checked at the next evaluation; if the rates
+// changed faster, the caller retreats and retries shorter.
+Approach approach(const Frame& f, double t, Memory& memory, bool check) {
+    Approach a{{INFINITY, 0, 0, {}, {}}, INFINITY, 0.0, false};
     if (f.benches.size() < 3) return a;
     const std::vector<BenchMotion> motion = bench_motions(f);
     // Pairs beyond the margin: their gap shrinks no faster than the sum of the two benches'
     // largest point speeds, measured in any frame rotating about the centre (a rotation moves
     // both points of a pair without changing their distance). A frame turning with the chain
     // makes those speeds far smaller than the fixed frame does.
-    a.safe_step = kMargin / (kSafety * 2.0 * far_speed_bound(f, motion));
+    const double cap = std::min(kMaxStep, kMargin / (kSafety * 2.0 * far_speed_bound(f, motion)));
     const auto pairs = candidate_pairs(f, kMargin);
+    struct Candidate {
+        double first_order;
+        double bound;
+        size_t k;
+    };
+    std::vector<Candidate> tight;
+    std::vector<double> gaps(pairs.size());
     double best_gap = INFINITY;
     size_t seed = 0;
-    std::vector<double> gaps(pairs.size());
     for (size_t k = 0; k < pairs.size(); ++k) {
         const size_t i = static_cast<size_t>(pairs[k].first - 1), j = static_cast<size_t>(pairs[k].second - 1);
         const Rect& ra = f.benches[i];
@@ -93,8 +125,43 @@ Approach approach(const Frame& f) {
         const double bound = norm(mb.at(ma.centre) - ma.v_centre) +
                              std::abs(mb.omega - ma.omega) * std::sqrt(ra.half_length * ra.half_length + ra.half_width * ra.half_width) +
                              std::abs(mb.omega) * std::max(g, 0.0);
-        if (bound > 0.0) a.safe_step = std::min(a.safe_step, std::max(g, 0.0) / (kSafety * bound));
+        const double h1 = bound > 0.0 ? std::max(g, 0.0) / (kSafety * bound) : INFINITY;
+        if (h1 < cap) tight.push_back({h1, bound, k});
     }
+    std::sort(tight.begin(), tight.end(), [](const Candidate& x, const Candidate& y) { return x.first_order < y.first_order; });
+    Memory next;
+    double step = cap;
+    for (const Candidate& c : tight) {
+        if (c.first_order >= step) break;  // this pair and the rest cannot lower the step
+        const int ia = pairs[c.k].first - 1, ib = pairs[c.k].second - 1;
+        const BenchMotion& ma = motion[static_cast<size_t>(ia)];
+        const BenchMotion& mb = motion[static_cast<size_t>(ib)];
+        const auto gaps8 = corner_gaps(f.benches[static_cast<size_t>(ia)], ma, f.benches[static_cast<size_t>(ib)], mb);
+        // Rotational floor: the corner-to-edge direction turns at most at |omega_a| + |omega_b|,
+        // tilting a relative velocity of size <= bound.
+        double observed = (std::abs(ma.omega) + std::abs(mb.omega)) * c.bound;
+        const std::uint64_t key = key_of(ia, ib);
+        PairMemory mem{t, {}, 0.0};
+        if (const auto it = memory.find(key); it != memory.end() && it->second.time != t) {
+            const double dt = std::abs(t - it->second.time);
+            for (size_t q = 0; q < 8; ++q) {
+                const double change = std::abs(gaps8[q].rate - it->second.rates[q]);
+                observed = std::max(observed, change / dt);
+                // The last step assumed the rates change by at most curvature * dt.
+                if (check && change > it->second.curvature * dt * (1.0 + 1e-9) + 1e-12) a.bound_broken = true;
+            }
+        }
+        mem.curvature = kSafety * observed;
+        double h2 = INFINITY;
+        for (size_t q = 0; q < 8; ++q) {
+            mem.rates[q] = gaps8[q].rate;
+            h2 = std::min(h2, second_order_step(gaps8[q].distance, gaps8[q].rate, mem.curvature));
+        }
+        next.emplace(key, mem);
+        step = std::min(step, std::max(c.first_order, h2));
+    }
+    memory = std::move(next);
+    a.safe_step = step;
     if (pairs.empty()) {
         a.clear = clearance(f, kMargin);
         return a;
@@ -109,12 +176,12 @@ Approach approach(const Frame& f) {
     for (size_t k = 0; k < pairs.size(); ++k)
         if (k != seed && gaps[k] < a.clear.distance) exact(k);
     if (a.clear.distance > kMargin) a.clear = clearance(f, kMargin);  // nothing near: report the margin
-    if (a.clear.bench_a > 0) {
+    if (a.clear.bench_a > 0 && a.clear.distance > 0.0) {
         // Separation rate of the closest pair: the witness on b moving away from a along the axis.
         const BenchMotion& ma = motion[static_cast<size_t>(a.clear.bench_a - 1)];
         const BenchMotion& mb = motion[static_cast<size_t>(a.clear.bench_b - 1)];
         const Vec2 q = a.clear.point;
-        const Vec2 p = q - std::max(a.clear.distance, 0.0) * a.clear.axis;
+        const Vec2 p = q - a.clear.distance * a.clear.axis;
         a.rate = dot(a.clear.axis, mb.at(q) - ma.at(p));
     }
     return a;
@@ -136,10 +203,12 @@ std::optional<Contact> first_contact(const Simulation& sim, double t_from, doubl
     Frame f;
     int steps = 0;
     double t = t_from;
+    Memory memory;
     sim.frame_into(t, f);
-    Approach a = approach(f);
+    Approach a = approach(f, t, memory, false);
     ++steps;
     if (a.clear.distance <= 0.0) return make_contact(sim, t, steps);
+    double retry_cap = INFINITY;  // after a broken curvature bound, retry shorter from t
 
     while (t < t_to) {
         // A pair grazing within rounding of touching, closing too slowly to bound: contact now.
@@ -153,14 +222,24 @@ std::optional<Contact> first_contact(const Simulation& sim, double t_from, doubl
             if (clearance(f, kMargin).distance <= 0.0) t_hi = probe;
         }
         if (std::isnan(t_hi)) {
-            const double next = std::min({t + a.safe_step, t + kMaxStep, t_to});
+            const double next = std::min({t + a.safe_step, t + retry_cap, t_to});
             if (next <= t) break;
             sim.frame_into(next, f);
             ++steps;
-            const Approach b = approach(f);
+            const Memory before = memory;
+            const Approach b = approach(f, next, memory, true);
+            if (b.bound_broken && next - t > tol::contact_time) {
+                // The rates turned faster than the step assumed: back to t, with the curvature
+                // now seen in memory, and a shorter step.
+                retry_cap = 0.25 * (next - t);
+                memory = before;
+                for (auto& [key, m] : memory) m.curvature *= 4.0;
+                continue;
+            }
             if (b.clear.distance > 0.0) {
                 t = next;
                 a = b;
+                retry_cap = INFINITY;
                 continue;
             }
             t_hi = next;

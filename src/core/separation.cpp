@@ -46,12 +46,26 @@ Separation separation(const Rect& a, const Rect& b) {
         }
         return {dmin, (to - from) / dmin, to};
     }
-    // Overlapping: the witness is b's corner deepest along -axis (inside a).
-    const Corners cb = corners(b);
-    Vec2 deepest = cb.p[0];
-    for (int k = 1; k < 4; ++k)
-        if (dot(cb.p[k], sat.axis) < dot(deepest, sat.axis)) deepest = cb.p[k];
-    return {sat.gap, sat.axis, deepest};
+    // Overlapping: the witness is the corner that reaches deepest into the other rectangle along
+    // the axis (a's corners push towards +axis into b, b's towards -axis into a); only corners
+    // inside the other rectangle qualify. Two boards crossing like a plus sign have no corner
+    // inside either: then the midpoint of their centres stands in.
+    const Corners ca = corners(a), cb = corners(b);
+    const double b_low = dot(b.centre, sat.axis) - projected_radius(b, sat.axis);
+    const double a_high = dot(a.centre, sat.axis) + projected_radius(a, sat.axis);
+    double depth = -INFINITY;
+    Vec2 witness = 0.5 * (a.centre + b.centre);
+    for (int k = 0; k < 4; ++k) {
+        if (point_to_rect(ca.p[k], b).distance <= 0.0 && dot(ca.p[k], sat.axis) - b_low > depth) {
+            depth = dot(ca.p[k], sat.axis) - b_low;
+            witness = ca.p[k];
+        }
+        if (point_to_rect(cb.p[k], a).distance <= 0.0 && a_high - dot(cb.p[k], sat.axis) > depth) {
+            depth = a_high - dot(cb.p[k], sat.axis);
+            witness = cb.p[k];
+        }
+    }
+    return {sat.gap, sat.axis, witness};
 }
 
 }  // namespace dragon

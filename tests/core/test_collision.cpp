@@ -67,6 +67,18 @@ double poly_distance(const Poly& a, const Poly& b) {
     return d;
 }
 
+// Distance from a point to a convex polygon (counter-clockwise): 0 inside, else to the nearest edge.
+double point_polygon(Vec2 p, const Poly& q) {
+    bool inside = true;
+    double d = INFINITY;
+    for (size_t k = 0; k < q.size(); ++k) {
+        const Vec2 a = q[k], b = q[(k + 1) % q.size()];
+        inside &= cross(b - a, p - a) >= 0.0;
+        d = std::min(d, point_segment(p, a, b));
+    }
+    return inside ? 0.0 : d;
+}
+
 bool overlaps(const Rect& a, const Rect& b) { return area(clip(polygon(a), polygon(b))) > 1e-14; }
 
 Rect shifted(Rect r, Vec2 by) {
@@ -112,6 +124,31 @@ TEST(Separation, AgreesWithPolygonOracleOnRandomPairs) {
     }
     EXPECT_GT(apart, 500);
     EXPECT_GT(overlapping, 500);
+}
+
+// The witness point is where the boards meet: on the surface of both when apart (the nearest
+// point of b, at the reported distance from a), inside both when they overlap with a corner in.
+TEST(Separation, WitnessPointIsWhereTheBoardsMeet) {
+    std::mt19937_64 rng(11);
+    int with_corner_inside = 0;
+    for (int k = 0; k < 2000; ++k) {
+        const Rect a = random_rect(rng), b = random_rect(rng);
+        const Separation s = separation(a, b);
+        const Poly pa = polygon(a), pb = polygon(b);
+        if (s.distance > 1e-9) {
+            EXPECT_NEAR(point_polygon(s.point, pb), 0.0, 1e-12) << "pair " << k;
+            EXPECT_NEAR(point_polygon(s.point, pa), s.distance, 1e-12) << "pair " << k;
+        } else if (s.distance < -1e-9) {
+            bool corner_inside = false;
+            for (const Vec2 c : pa) corner_inside |= point_polygon(c, pb) == 0.0;
+            for (const Vec2 c : pb) corner_inside |= point_polygon(c, pa) == 0.0;
+            if (!corner_inside) continue;
+            ++with_corner_inside;
+            EXPECT_NEAR(point_polygon(s.point, pa), 0.0, 1e-12) << "pair " << k;
+            EXPECT_NEAR(point_polygon(s.point, pb), 0.0, 1e-12) << "pair " << k;
+        }
+    }
+    EXPECT_GT(with_corner_inside, 200);
 }
 
 TEST(Separation, SymmetricInItsArguments) {

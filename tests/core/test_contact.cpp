@@ -61,6 +61,20 @@ TEST(Q3, MinimumPitchMatchesPublished) {
     }
 }
 
+// The search's grid is 2.5 mm; a scan at 1 mm over the whole default range finds the same
+// feasible and infeasible pitches the search reported: no window slipped between grid points.
+TEST(Q3, AFinerScanAgreesWithTheReportedIntervals) {
+    const MinPitch m = min_pitch(Scenario{}, 0.35, 0.55);
+    for (int k = 0; k <= 200; ++k) {
+        const double p = 0.35 + 1e-3 * k;
+        bool reported = false;
+        for (const PitchInterval& iv : m.intervals)
+            if (p >= iv.lo && p <= iv.hi) reported = iv.feasible;
+        if (std::abs(p - m.pitch) < 1e-6) continue;  // on the cut itself
+        EXPECT_EQ(!contact_before_boundary(Scenario{}, p).has_value(), reported) << "pitch " << p;
+    }
+}
+
 TEST(Q2, AWidePitchCoilsToTheCentreWithoutContact) {
     // At pitch 0.7 m the dragon reaches the centre untouched: the search says so, and a scan agrees.
     Scenario s;
