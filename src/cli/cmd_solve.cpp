@@ -1,9 +1,11 @@
 // dragon solve: all five contest questions on one scenario: the workbooks, summary.json and
 // the paper-style tables.
-#include <chrono>
+#include <algorithm>
 #include <filesystem>
+#include <set>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "cli/commands.hpp"
 #include "cli/report.hpp"
@@ -20,13 +22,14 @@ namespace {
 struct SolveOptions {
     ScenarioFlags scenario;
     std::string dir = "out";
+    std::vector<std::string> only;
 };
 
-std::vector<const Frame*> pick(const std::vector<Frame>& frames, double t0, double step, double every) {
+// Every `every`-th frame of a table sampled each `step` seconds, for the printed excerpt.
+std::vector<const Frame*> pick(const std::vector<Frame>& frames, double step, double every) {
     std::vector<const Frame*> out;
     const int stride = static_cast<int>(std::lround(every / step));
     for (size_t k = 0; k < frames.size(); k += static_cast<size_t>(stride)) out.push_back(&frames[k]);
-    (void)t0;
     return out;
 }
 
@@ -47,7 +50,16 @@ void register_solve(CLI::App& app, Registry& reg) {
         "solve", "All five questions: result1/2/4.xlsx, summary.json and the paper-style tables");
     opt->scenario.add_to(sub);
     sub->add_option("-o,--out", opt->dir, "Output folder (created if missing; default out)");
+    sub->add_option("--only", opt->only, "Answer only these questions: q1 q2 q3 q4 q5 (default all)")
+        ->delimiter(',');
     reg["solve"] = [opt]() {
+        const std::set<std::string> all{"q1", "q2", "q3", "q4", "q5"};
+        for (const std::string& q : opt->only)
+            if (!all.count(q))
+                throw InputError(fmt::format("--only {} is not allowed: the questions are q1, q2, q3, q4, q5", q));
+        const auto wanted = [&](const char* q) {
+            return opt->only.empty() || std::find(opt->only.begin(), opt->only.end(), q) != opt->only.end();
+        };
         Scenario s = opt->scenario.resolve();
         s.path.kind = PathKind::spiral;
         namespace fs = std::filesystem;
@@ -56,61 +68,78 @@ void register_solve(CLI::App& app, Registry& reg) {
         if (!fs::is_directory(opt->dir))
             throw InputError(fmt::format("-o {} is not allowed: the folder cannot be created", opt->dir));
         const auto file = [&](const char* name) { return (fs::path(opt->dir) / name).string(); };
-        std::string summary = "{\n";
+        std::vector<std::string> summary, written;
 
         // Q1: coiling in, 0..300 s.
         const Simulation sim(s);
-        const double q1_end = std::min(300.0, std::floor(sim.end_time()));
-        const std::vector<Frame> q1 = simulate_table(sim, 0.0, q1_end, 1.0);
-        write_result_xlsx(q1, file("result1.xlsx"));
-        print_frame_table("Q1: positions (m) and speeds (m/s) while coiling in", pick(q1, 0.0, 1.0, 60.0));
-        summary += fmt::format("  \"q1\": {{\"file\": \"result1.xlsx\", \"times\": [0, {}]}},\n", q1_end);
+        if (wanted("q1")) {
+            const double q1_end = std::min(300.0, std::floor(sim.end_time()));
+            const std::vector<Frame> q1 = simulate_table(sim, 0.0, q1_end, 1.0);
+            write_result_xlsx(q1, file("result1.xlsx"));
+            written.push_back("result1.xlsx");
+            print_frame_table("Q1: positions (m) and speeds (m/s) while coiling in", pick(q1, 1.0, 60.0));
+            summary.push_back(fmt::format("  \"q1\": {{\"file\": \"result1.xlsx\", \"times\": [0, {}]}}", q1_end));
+        }
 
         // Q2: the termination time.
-        const std::optional<Contact> c = first_contact(sim, 0.0, sim.end_time());
-        if (c) {
-            write_result2_xlsx(c->frame, file("result2.xlsx"));
-            fmt::print("\nQ2: benches {} and {} touch at t = {:.6f} s (head radius {:.6f} m)\n", c->bench_a,
-                       c->bench_b, c->time, c->head_radius);
-            print_single_frame("", c->frame);
-            summary += fmt::format("  \"q2\": {{\"time\": {}, \"benches\": [{}, {}], \"head_radius\": {}}},\n",
-                                   json_number(c->time), c->bench_a, c->bench_b, json_number(c->head_radius));
-        } else {
-            fmt::print("\nQ2: no collision before the head reaches the centre\n");
-            summary += "  \"q2\": null,\n";
+        if (wanted("q2")) {
+            const std::optional<Contact> c = first_contact(sim, 0.0, sim.end_time());
+            if (c) {
+                write_result2_xlsx(c->frame, file("result2.xlsx"));
+                written.push_back("result2.xlsx");
+                fmt::print("\nQ2: benches {} and {} touch at t = {:.6f} s (head radius {:.6f} m)\n", c->bench_a,
+                           c->bench_b, c->time, c->head_radius);
+                print_single_frame("", c->frame);
+                summary.push_back(fmt::format("  \"q2\": {{\"time\": {}, \"benches\": [{}, {}], \"head_radius\": {}}}",
+                                              json_number(c->time), c->bench_a, c->bench_b, json_number(c->head_radius)));
+            } else {
+                fmt::print("\nQ2: no collision before the head reaches the centre\n");
+                summary.push_back("  \"q2\": null");
+            }
         }
 
         // Q3: the minimum pitch.
-        const MinPitch m = min_pitch(s, 0.35, 0.55);
-        fmt::print("\nQ3: minimum pitch {:.8f} m to reach radius {} m collision-free\n", m.pitch, s.path.turn_radius);
-        std::string iv;
-        for (const PitchInterval& i : m.intervals) {
-            fmt::print("  [{:.8f}, {:.8f}] m  {}\n", i.lo, i.hi, i.feasible ? "collision-free" : "collides");
-            iv += fmt::format("{}{{\"lo\": {}, \"hi\": {}, \"feasible\": {}}}", iv.empty() ? "" : ", ",
-                              json_number(i.lo), json_number(i.hi), i.feasible ? "true" : "false");
+        if (wanted("q3")) {
+            const MinPitch m = min_pitch(s, 0.35, 0.55);
+            fmt::print("\nQ3: minimum pitch {:.8f} m to reach radius {} m collision-free\n", m.pitch,
+                       s.path.turn_radius);
+            std::string iv;
+            for (const PitchInterval& i : m.intervals) {
+                fmt::print("  [{:.8f}, {:.8f}] m  {}\n", i.lo, i.hi, i.feasible ? "collision-free" : "collides");
+                iv += fmt::format("{}{{\"lo\": {}, \"hi\": {}, \"feasible\": {}}}", iv.empty() ? "" : ", ",
+                                  json_number(i.lo), json_number(i.hi), i.feasible ? "true" : "false");
+            }
+            summary.push_back(fmt::format("  \"q3\": {{\"pitch\": {}, \"intervals\": [{}]}}", json_number(m.pitch), iv));
         }
-        summary += fmt::format("  \"q3\": {{\"pitch\": {}, \"intervals\": [{}]}},\n", json_number(m.pitch), iv);
 
-        // Q4: the turnaround, -100..100 s.
+        // Q4 and Q5 run on the turnaround path.
         Scenario turn = s;
         turn.path.kind = PathKind::turnaround;
-        const Simulation tsim(turn);
-        const std::vector<Frame> q4 = simulate_table(tsim, -100.0, 100.0, 1.0);
-        write_result_xlsx(q4, file("result4.xlsx"));
-        const SCurve sc = design_s_curve(turn);
-        fmt::print("\nQ4: S-curve r1 = {:.6f} m, r2 = {:.6f} m, length {:.6f} m\n", sc.r1, sc.r2, sc.length);
-        print_frame_table("Q4: positions (m) and speeds (m/s) around the turn", pick(q4, -100.0, 1.0, 50.0));
-        summary += fmt::format("  \"q4\": {{\"file\": \"result4.xlsx\", \"r1\": {}, \"r2\": {}, \"length\": {}}},\n",
-                               json_number(sc.r1), json_number(sc.r2), json_number(sc.length));
+
+        // Q4: the turnaround, -100..100 s.
+        if (wanted("q4")) {
+            const Simulation tsim(turn);
+            const std::vector<Frame> q4 = simulate_table(tsim, -100.0, 100.0, 1.0);
+            write_result_xlsx(q4, file("result4.xlsx"));
+            written.push_back("result4.xlsx");
+            const SCurve sc = design_s_curve(turn);
+            fmt::print("\nQ4: S-curve r1 = {:.6f} m, r2 = {:.6f} m, length {:.6f} m\n", sc.r1, sc.r2, sc.length);
+            print_frame_table("Q4: positions (m) and speeds (m/s) around the turn", pick(q4, 1.0, 50.0));
+            summary.push_back(fmt::format("  \"q4\": {{\"file\": \"result4.xlsx\", \"r1\": {}, \"r2\": {}, \"length\": {}}}",
+                                          json_number(sc.r1), json_number(sc.r2), json_number(sc.length)));
+        }
 
         // Q5: the speed limit.
-        const MaxSpeed v = max_head_speed(turn, 2.0);
-        fmt::print("\nQ5: largest head speed {:.6f} m/s (speed ratio {:.6f} at handle {}, t = {:.6f} s)\n",
-                   v.max_head_speed, v.ratio, v.handle, v.time);
-        summary += fmt::format("  \"q5\": {{\"max_head_speed\": {}, \"ratio\": {}, \"handle\": {}, \"time\": {}}}\n}}\n",
-                               json_number(v.max_head_speed), json_number(v.ratio), v.handle, json_number(v.time));
-        write_text(file("summary.json"), summary);
-        fmt::print("\nwrote result1.xlsx, result2.xlsx, result4.xlsx and summary.json in {}\n", opt->dir);
+        if (wanted("q5")) {
+            const MaxSpeed v = max_head_speed(turn, 2.0);
+            fmt::print("\nQ5: largest head speed {:.6f} m/s (speed ratio {:.6f} at handle {}, t = {:.6f} s)\n",
+                       v.max_head_speed, v.ratio, v.handle, v.time);
+            summary.push_back(fmt::format("  \"q5\": {{\"max_head_speed\": {}, \"ratio\": {}, \"handle\": {}, \"time\": {}}}",
+                                          json_number(v.max_head_speed), json_number(v.ratio), v.handle, json_number(v.time)));
+        }
+        write_text(file("summary.json"), "{\n" + fmt::format("{}", fmt::join(summary, ",\n")) + "\n}\n");
+        written.push_back("summary.json");
+        fmt::print("\nwrote {} in {}\n", fmt::join(written, ", "), opt->dir);
         return 0;
     };
 }

@@ -20,7 +20,7 @@ constexpr double kDegrees = 57.295779513082320876798154814105;
 struct TurnaroundOptions {
     ScenarioFlags scenario;
     bool json = false;
-    bool clearance = true;
+    bool skip_clearance = false;
     double from = -100.0, to = 100.0;
     std::string out;
 };
@@ -109,7 +109,7 @@ void register_turnaround(CLI::App& app, Registry& reg) {
     opt->scenario.add_to(sub);
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
     sub->add_option("-o,--out", opt->out, "Write the length study as CSV to this file");
-    sub->add_flag("!--no-clearance", opt->clearance, "Skip the clearance check over the run");
+    sub->add_flag("--no-clearance", opt->skip_clearance, "Skip the clearance check over the run");
     sub->add_option("--from", opt->from, "Clearance check from this time, s (default -100)");
     sub->add_option("--to", opt->to, "Clearance check to this time, s (default 100)");
     reg["turnaround"] = [opt]() {
@@ -124,7 +124,7 @@ void register_turnaround(CLI::App& app, Registry& reg) {
         if (!opt->out.empty()) AtomicFile probe(opt->out);  // fail on an unwritable path first
         const TurnaroundStudy st = study_turnaround(s);
         std::optional<RunClearance> clear;
-        if (opt->clearance) clear = min_clearance(s, opt->from, opt->to);
+        if (!opt->skip_clearance) clear = min_clearance(s, opt->from, opt->to);
         if (!opt->out.empty()) write_study_csv(st, opt->out);
         if (opt->json) print_json(st, clear, opt->from, opt->to);
         else print_text(st, clear, opt->from, opt->to);
