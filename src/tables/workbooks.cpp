@@ -17,9 +17,9 @@ struct WorkbookCloser {
 };
 using WorkbookPtr = std::unique_ptr<lxw_workbook, WorkbookCloser>;
 
-WorkbookPtr new_workbook(const std::string& path) {
+WorkbookPtr new_workbook(const std::string& path, bool row_by_row = false) {
     lxw_workbook_options options{};
-    options.constant_memory = LXW_FALSE;
+    options.constant_memory = row_by_row ? LXW_TRUE : LXW_FALSE;
     WorkbookPtr wb(workbook_new_opt(path.c_str(), &options));
     if (!wb) throw std::runtime_error(fmt::format("cannot create workbook '{}'", path));
     return wb;
@@ -41,31 +41,38 @@ void close_workbook(WorkbookPtr wb, const std::string& target) {
 
 void write_result_xlsx(const std::vector<Frame>& frames, const std::string& path) {
     AtomicFile out(path);
-    WorkbookPtr wb = new_workbook(out.temp_path());
+    // Streamed row by row (libxlsxwriter's constant-memory mode): each row goes to disk as it
+    // is finished, which is what this layout needs anyway, and it is several times faster
+    // than keeping the whole table of cells in memory.
+    WorkbookPtr wb = new_workbook(out.temp_path(), true);
     lxw_worksheet* pos = add_sheet(wb.get(), "位置");
     lxw_worksheet* vel = add_sheet(wb.get(), "速度");
     const int n = frames.empty() ? 0 : static_cast<int>(frames.front().handles.size());
-    for (int i = 0; i < n; ++i) {
-        const std::string label = handle_label(i, n);
-        worksheet_write_string(pos, static_cast<lxw_row_t>(1 + 2 * i), 0, (label + "x (m)").c_str(), nullptr);
-        worksheet_write_string(pos, static_cast<lxw_row_t>(2 + 2 * i), 0, (label + "y (m)").c_str(), nullptr);
-        // The template has two spaces before "(m/s)" for body and tail rows, one for the head
-        // and the tail's rear handle.
-        const bool one_space = (i == 0 || i == n - 1);
-        worksheet_write_string(vel, static_cast<lxw_row_t>(1 + i), 0,
-                               (label + (one_space ? " (m/s)" : "  (m/s)")).c_str(), nullptr);
-    }
     for (size_t k = 0; k < frames.size(); ++k) {
         const auto col = static_cast<lxw_col_t>(k + 1);
         const std::string header = time_header(frames[k].time);
         worksheet_write_string(pos, 0, col, header.c_str(), nullptr);
         worksheet_write_string(vel, 0, col, header.c_str(), nullptr);
-        for (int i = 0; i < n; ++i) {
-            const Handle& h = frames[k].handles[static_cast<size_t>(i)];
-            worksheet_write_number(pos, static_cast<lxw_row_t>(1 + 2 * i), col, round6(h.pos.x), nullptr);
-            worksheet_write_number(pos, static_cast<lxw_row_t>(2 + 2 * i), col, round6(h.pos.y), nullptr);
-            worksheet_write_number(vel, static_cast<lxw_row_t>(1 + i), col, round6(h.speed), nullptr);
-        }
+    }
+    for (int i = 0; i < n; ++i) {
+        const std::string label = handle_label(i, n);
+        const auto x_row = static_cast<lxw_row_t>(1 + 2 * i), y_row = static_cast<lxw_row_t>(2 + 2 * i);
+        const auto v_row = static_cast<lxw_row_t>(1 + i);
+        worksheet_write_string(pos, x_row, 0, (label + "x (m)").c_str(), nullptr);
+        for (size_t k = 0; k < frames.size(); ++k)
+            worksheet_write_number(pos, x_row, static_cast<lxw_col_t>(k + 1),
+                                   round6(frames[k].handles[static_cast<size_t>(i)].pos.x), nullptr);
+        worksheet_write_string(pos, y_row, 0, (label + "y (m)").c_str(), nullptr);
+        for (size_t k = 0; k < frames.size(); ++k)
+            worksheet_write_number(pos, y_row, static_cast<lxw_col_t>(k + 1),
+                                   round6(frames[k].handles[static_cast<size_t>(i)].pos.y), nullptr);
+        // The template has two spaces before "(m/s)" for body and tail rows, one for the head
+        // and the tail's rear handle.
+        const bool one_space = (i == 0 || i == n - 1);
+        worksheet_write_string(vel, v_row, 0, (label + (one_space ? " (m/s)" : "  (m/s)")).c_str(), nullptr);
+        for (size_t k = 0; k < frames.size(); ++k)
+            worksheet_write_number(vel, v_row, static_cast<lxw_col_t>(k + 1),
+                                   round6(frames[k].handles[static_cast<size_t>(i)].speed), nullptr);
     }
     close_workbook(std::move(wb), path);
     out.commit();
