@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <ostream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -47,6 +48,9 @@ struct BadCase {
     std::string args;
     std::string word;  // the error line must name this
 };
+
+// Shown by gtest in test names and failures, instead of the object's bytes.
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.args; }
 
 class BadInput : public ::testing::TestWithParam<BadCase> {};
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <ostream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -54,6 +55,9 @@ struct BadCase {
     std::string file;
     const char* message;  // a word the one-line error must contain
 };
+
+// Shown by gtest in test names and failures, instead of the object's bytes.
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name << ": " << c.args; }
 
 class BadOptions : public ::testing::TestWithParam<BadCase> {};
 
