@@ -28,32 +28,39 @@ void consider(Clearance& best, const Frame& f, int i, int j) {
 // circle, then sweep; two rectangles within `margin` of each other have bounding circles within
 // `margin` too, so no such pair is skipped. Adjacent benches (sharing a handle) are excluded.
 std::vector<std::pair<int, int>> candidate_pairs(const Frame& f, double margin) {
-    const int n = static_cast<int>(f.benches.size());
-    struct Item {
-        double lo, hi;
-        Vec2 centre;
-        double radius;
-        int index;
-    };
-    std::vector<Item> items(static_cast<size_t>(n));
-    for (int i = 0; i < n; ++i) {
-        const Rect& r = f.benches[static_cast<size_t>(i)];
-        const double rad = bounding_radius(r);
-        items[static_cast<size_t>(i)] = {r.centre.x - rad - 0.5 * margin, r.centre.x + rad + 0.5 * margin,
-                                         r.centre, rad, i};
+    const size_t n = f.benches.size();
+    // Sorted by the left edge of the widened circle; then the sweep reads plain arrays in order,
+    // which is most of the broad phase's time.
+    std::vector<std::pair<double, int>> order(n);
+    for (size_t i = 0; i < n; ++i) {
+        const Rect& r = f.benches[i];
+        order[i] = {r.centre.x - bounding_radius(r), static_cast<int>(i)};
     }
-    std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.lo < b.lo; });
+    std::sort(order.begin(), order.end());
+    std::vector<double> lo(n), hi(n), x(n), y(n), rad(n);
+    std::vector<int> index(n);
+    for (size_t k = 0; k < n; ++k) {
+        const int i = order[k].second;
+        const Rect& r = f.benches[static_cast<size_t>(i)];
+        rad[k] = bounding_radius(r);
+        x[k] = r.centre.x;
+        y[k] = r.centre.y;
+        lo[k] = x[k] - rad[k] - 0.5 * margin;
+        hi[k] = x[k] + rad[k] + 0.5 * margin;
+        index[k] = i;
+    }
     std::vector<std::pair<int, int>> out;
-    for (size_t a = 0; a < items.size(); ++a) {
-        const Item& ia = items[a];
-        for (size_t b = a + 1; b < items.size() && items[b].lo <= ia.hi; ++b) {
-            const Item& ib = items[b];
-            const int i = std::min(ia.index, ib.index);
-            const int j = std::max(ia.index, ib.index);
-            if (j - i < 2) continue;
-            const double reach = ia.radius + ib.radius + margin;
-            const Vec2 d = ia.centre - ib.centre;
-            if (dot(d, d) <= reach * reach) out.emplace_back(i + 1, j + 1);
+    out.reserve(16 * n);
+    for (size_t a = 0; a < n; ++a) {
+        const double xa = x[a], ya = y[a], reach_a = rad[a] + margin, end = hi[a];
+        const int ia = index[a];
+        for (size_t b = a + 1; b < n && lo[b] <= end; ++b) {
+            const double reach = reach_a + rad[b];
+            const double dx = xa - x[b], dy = ya - y[b];
+            if (dx * dx + dy * dy > reach * reach) continue;
+            const int ib = index[b];
+            if (ib - ia < 2 && ia - ib < 2) continue;  // neighbours share a handle
+            out.emplace_back(std::min(ia, ib) + 1, std::max(ia, ib) + 1);
         }
     }
     return out;
