@@ -128,10 +128,16 @@ Approach approach(const Frame& f, double t, Memory& memory, bool check) {
         const double h1 = bound > 0.0 ? std::max(g, 0.0) / (kSafety * bound) : INFINITY;
         if (h1 < cap) tight.push_back({h1, bound, k});
     }
-    std::sort(tight.begin(), tight.end(), [](const Candidate& x, const Candidate& y) { return x.first_order < y.first_order; });
+    // Smallest first-order step first, popped from a heap: usually only a part of the list is
+    // looked at before the first-order steps exceed the step found so far.
+    const auto later = [](const Candidate& x, const Candidate& y) { return x.first_order > y.first_order; };
+    std::make_heap(tight.begin(), tight.end(), later);
     Memory next;
     double step = cap;
-    for (const Candidate& c : tight) {
+    while (!tight.empty()) {
+        std::pop_heap(tight.begin(), tight.end(), later);
+        const Candidate c = tight.back();
+        tight.pop_back();
         if (c.first_order >= step) break;  // this pair and the rest cannot lower the step
         const int ia = pairs[c.k].first - 1, ib = pairs[c.k].second - 1;
         const BenchMotion& ma = motion[static_cast<size_t>(ia)];
