@@ -7,6 +7,5 @@ bash scripts/install-deps.sh
 bash scripts/build.sh
 mkdir -p out
 ./build/src/dragon solve -o out
-if ./build/src/dragon figures --help >/dev/null 2>&1; then
-  ./build/src/dragon figures -o renders
-fi
+./build/src/dragon figures -o renders
+./build/src/dragon video -o renders/coil.gif --size 400x300 --colours 48 --fps 8 --speedup 40 --to collision
