@@ -13,6 +13,9 @@ namespace dragon {
 
 // Frames at t0, t0 + dt, ..., t1 (inclusive, by index so no float drift).
 std::vector<Frame> simulate_table(const Simulation& sim, double t0, double t1, double dt);
+// The same into `frames`, reusing its storage (a table of 301 frames is 7 MB: allocating and
+// first touching it costs more than computing it).
+void simulate_table_into(const Simulation& sim, double t0, double t1, double dt, std::vector<Frame>& frames);
 
 // Q2: the first moment two non-adjacent benches touch, searched over [t_from, t_to].
 struct Contact {

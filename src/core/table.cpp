@@ -12,7 +12,7 @@
 
 namespace dragon {
 
-std::vector<Frame> simulate_table(const Simulation& sim, double t0, double t1, double dt) {
+void simulate_table_into(const Simulation& sim, double t0, double t1, double dt, std::vector<Frame>& frames) {
     if (!std::isfinite(dt) || dt <= 0.0)
         throw InputError(fmt::format("--step {} is not allowed: it must be a finite number > 0", dt));
     sim.require_on_path(t0, "--from");
@@ -26,7 +26,7 @@ std::vector<Frame> simulate_table(const Simulation& sim, double t0, double t1, d
         throw InputError(fmt::format("--step {} gives {:.0f} frames x {} handles: at most 5,000,000 rows; "
                                      "use a larger step or a shorter range", dt, count,
                                      sim.scenario().bench.handle_count()));
-    std::vector<Frame> frames(static_cast<size_t>(count));
+    frames.resize(static_cast<size_t>(count));
     // Frames are independent: each core takes every n-th one (interleaved, so early and late
     // frames, which cost about the same, spread evenly). Small tables stay on this thread.
     const size_t workers = frames.size() < 64 ? 1 : std::max(1u, std::thread::hardware_concurrency());
@@ -49,6 +49,11 @@ std::vector<Frame> simulate_table(const Simulation& sim, double t0, double t1, d
     work(0);
     for (std::thread& th : pool) th.join();
     if (failure) std::rethrow_exception(failure);
+}
+
+std::vector<Frame> simulate_table(const Simulation& sim, double t0, double t1, double dt) {
+    std::vector<Frame> frames;
+    simulate_table_into(sim, t0, t1, dt, frames);
     return frames;
 }
 
