@@ -1,5 +1,6 @@
 // Writing an output file all-or-nothing: write to a temporary file beside the target, then
-// rename over it. An error (or a kill) leaves either the old file or nothing at the target.
+// rename over it. An error (or a kill) leaves either the old file or nothing at the target;
+// remove_live_temp_files() lets a signal handler clear the temporary files a kill interrupts.
 #pragma once
 
 #include <string>
@@ -25,7 +26,14 @@ private:
     std::string target_;
     std::string temp_;
     bool committed_ = false;
+    int live_slot_ = -1;  // where temp_ is registered for remove_live_temp_files()
 };
+
+// Removes the temporary file of every AtomicFile not yet committed or destroyed. Only
+// async-signal-safe calls (no allocation, no locks): made for a handler of SIGINT, SIGTERM or
+// SIGHUP that then ends the process. A file can be half renamed into place only by rename()
+// itself, which is atomic, so the target is never touched.
+void remove_live_temp_files() noexcept;
 
 // Lower-case extension of a path including the dot (".png"), or "" if none.
 std::string extension_of(const std::string& path);

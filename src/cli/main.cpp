@@ -6,10 +6,12 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/kill_cleanup.hpp"
 #include "dragon/scenario.hpp"
 
 int main(int argc, char** argv) {
     using namespace dragon;
+    cli::install_kill_cleanup();  // first: a kill at any moment leaves no temporary file
     CLI::App app{"dragon: exact simulation, collisions and pictures of the Bench Dragon (CUMCM 2024 A)"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "dragon 0.1.0");

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "core/live_temp_files.hpp"
 #include "dragon/scenario.hpp"
 
 namespace dragon {
@@ -44,6 +45,8 @@ AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {
     const std::string name = fmt::format(".{}.tmp{}-{}{}", p.stem().string(), ::getpid(),
                                          counter++, p.extension().string());
     temp_ = (dir / name).string();
+    // Registered before any writer creates the file, so a kill at any later moment finds it.
+    live_slot_ = live_temp::add(temp_);
 }
 
 AtomicFile::~AtomicFile() {
@@ -51,6 +54,7 @@ AtomicFile::~AtomicFile() {
         std::error_code ec;
         fs::remove(temp_, ec);
     }
+    live_temp::drop(live_slot_);
 }
 
 void AtomicFile::commit() {
@@ -58,6 +62,9 @@ void AtomicFile::commit() {
     fs::rename(temp_, target_, ec);
     if (ec) throw std::runtime_error(fmt::format("cannot write '{}': {}", target_, ec.message()));
     committed_ = true;
+    // A kill between the rename and here only unlinks a name that no longer exists.
+    live_temp::drop(live_slot_);
+    live_slot_ = -1;
 }
 
 }  // namespace dragon
