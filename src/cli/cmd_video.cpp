@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
-#include <regex>
 #include <string>
 #include <utility>
 
@@ -43,14 +42,25 @@ struct VideoCliOptions {
     bool no_guides = false, no_text = false;
 };
 
-// "1280x720" -> {1280, 720}. (--width is the scenario's board width, so the picture's size is
-// one option of its own.)
+// "1280x720" -> {1280, 720}: 1 to 5 digits, x or X, 1 to 5 digits, nothing else. (--width is
+// the scenario's board width, so the picture's size is one option of its own.) Parsed by hand:
+// std::regex costs a lot to compile and trips GCC's -Wmaybe-uninitialized under the sanitizers.
 std::pair<int, int> parse_size(const std::string& s) {
-    static const std::regex pattern(R"((\d{1,5})[xX](\d{1,5}))");
-    std::smatch m;
-    if (!std::regex_match(s, m, pattern))
+    const auto digits = [&s](size_t from, size_t to) {
+        if (to <= from || to - from > 5) return -1;
+        int v = 0;
+        for (size_t i = from; i < to; ++i) {
+            if (s[i] < '0' || s[i] > '9') return -1;
+            v = 10 * v + (s[i] - '0');
+        }
+        return v;
+    };
+    const size_t x = s.find_first_of("xX");
+    const int w = x == std::string::npos ? -1 : digits(0, x);
+    const int h = x == std::string::npos ? -1 : digits(x + 1, s.size());
+    if (w < 0 || h < 0)
         throw InputError(fmt::format("--size {} is not allowed: use WIDTHxHEIGHT in pixels, e.g. 1280x720", s));
-    return {std::stoi(m[1]), std::stoi(m[2])};
+    return {w, h};
 }
 
 // When the head front handle reaches the turning-space boundary: on the spiral, radius
