@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 
 #include "dragon/constants.hpp"
 #include "dragon/geometry.hpp"
@@ -26,14 +27,25 @@ struct PieceSample {
 };
 
 // eval(u) -> PieceSample; bound(ua, ub) -> max over [min, max] of |P'|^2 and |P''| as
-// {first, second}. Precondition: u0 lies on the piece; the search stops at u_end.
+// {first, second}. Precondition: u0 lies on the piece; the search stops at u_end, which must be
+// finite (an unbounded piece is clamped by its caller to where the root must lie).
 // Returns nullopt when |P(u) - q| < d all the way to u_end.
+//
+// Far from the root the march moves up to max_step at a time; near it, it converges
+// quadratically. Where the piece runs nearly along the chord's circle (a spiral turn round a
+// point near the centre) the curvature bound is loose and the steps shorter, so the allowance is
+// tol::max_march steps per max_step of the range: running out of it means a broken bound, a
+// bug, and throws std::logic_error rather than return a point that is not at the chord.
 template <class Eval, class Bound>
 std::optional<double> march_to_chord(Eval eval, Bound bound, Vec2 q, double chord, double u0,
                                      double dir, double u_end, double max_step) {
     const double d2 = chord * chord;
+    const double allowance = tol::max_march * (1.0 + std::ceil(std::abs(u_end - u0) / max_step));
+    if (!(allowance < 1e8))
+        throw std::logic_error("march_to_chord: the range to search is unbounded or too long");
+    const long steps = static_cast<long>(allowance);
     double a = u0;
-    for (int it = 0; it < tol::max_march; ++it) {
+    for (long it = 0; it < steps; ++it) {
         const PieceSample s = eval(a);
         const Vec2 w = s.p - q;
         const double h = dot(w, w) - d2;
@@ -47,13 +59,19 @@ std::optional<double> march_to_chord(Eval eval, Bound bound, Vec2 q, double chor
         // Positive root of (m/2) x^2 + p x + h = 0, in the cancellation-free form.
         double delta = -2.0 * h / (p + std::sqrt(p * p - 2.0 * m * h));
         // Past the span the bound is unproven: stop there and take a fresh bound. At the end
-        // of the piece the next pass either finds h >= 0 there or runs out of room.
-        if (delta >= span) delta = span;
+        // of the piece (landing on u_end exactly) the next pass either finds h >= 0 there or
+        // runs out of room. Only a step the root itself made tiny means convergence: a step cut
+        // short by the piece's end is not one (that took a point short of the chord, at the
+        // piece's end, for a root; found by tests/fuzz/fuzz_chain).
+        if (delta >= span) {
+            a = span == room ? u_end : a + dir * span;
+            continue;
+        }
         const double next = a + dir * delta;
         if (delta <= 4.0 * std::numeric_limits<double>::epsilon() * (1.0 + std::abs(a))) return next;
         a = next;
     }
-    return a;
+    throw std::logic_error("march_to_chord: no convergence within its allowance of steps");
 }
 
 }  // namespace dragon

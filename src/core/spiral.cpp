@@ -78,8 +78,13 @@ std::optional<Located> Spiral::behind(const Located& from, double chord) const {
             const double t = std::max(ua, ub);
             return std::pair{b * b * (1.0 + t * t), b * std::sqrt(4.0 + t * t)};
         };
-        auto u = march_to_chord(eval, bound, from.pos, chord, th, +1.0,
-                                std::numeric_limits<double>::infinity(), 0.5);
+        // Every root lies where the spiral's radius b theta' is within the chord of |q| (triangle
+        // inequality): none before (d - |q|) / b, where the march may start, and none past
+        // (d + |q|) / b, where it may stop (a radian later, so that rounding cannot put the
+        // root past the end).
+        const double r0 = norm(from.pos);
+        const double start = std::max(th, (chord - r0) / b);
+        auto u = march_to_chord(eval, bound, from.pos, chord, start, +1.0, (chord + r0) / b + 1.0, 0.5);
         if (!u) return std::nullopt;
         return at({0, *u});
     }
@@ -89,27 +94,34 @@ std::optional<Located> Spiral::behind(const Located& from, double chord) const {
     const double rad = std::sqrt(th * th + 1.0);
     double phi = (k < 2.0 * rad) ? 2.0 * std::asin(k / (2.0 * rad)) : 0.5 * kPi;
     // Halley's method (cubic convergence) with a bisection fallback. g' and g'' reuse the same
-    // cos and sin, so each iteration costs one sincos.
+    // cos and sin, so each iteration costs one sincos. g is summed as
+    //   g(phi) = phi^2 + 2 theta (theta + phi) (1 - cos phi),
+    // two positive terms: the textbook form theta^2 + (theta + phi)^2 - 2 theta (theta + phi) cos phi
+    // cancels theta^2 against itself, which far out on the spiral (a link of 1 m at radius 70 km:
+    // phi ~ 1e-5, theta ~ 1e4) left chords wrong by 1e-6 relative (found by tests/fuzz/fuzz_chain).
+    // The step is judged relative to phi for the same reason: a root of 1e-5 rad is not found
+    // to 1e-6 rad.
     double c = 1.0, s = 0.0, step = 0.0;
     for (int it = 0; it < tol::max_newton; ++it) {
         const double t2 = th + phi;
         c = std::cos(phi);
         s = std::sin(phi);
-        const double g = th * th + t2 * t2 - 2.0 * th * t2 * c - k2;
+        const double one_minus_c = c > 0.0 ? s * s / (1.0 + c) : 1.0 - c;
+        const double g = phi * phi + 2.0 * th * t2 * one_minus_c - k2;
         if (g < 0.0) lo = phi; else hi = phi;
-        const double dg = 2.0 * (t2 - th * c + th * t2 * s);
+        const double dg = 2.0 * (phi + th * one_minus_c + th * t2 * s);
         const double ddg = 2.0 * (1.0 + 2.0 * th * s + th * t2 * c);
         double next = phi - 2.0 * g * dg / (2.0 * dg * dg - g * ddg);
         // Closed bracket: at (or a rounding step from) the root, phi itself is an end of it.
         if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi);
         step = next - phi;
         phi = next;
-        if (std::abs(step) <= tol::halley_step || hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * (th + kPi)) break;
+        if (std::abs(step) <= tol::halley_step * phi || hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * (th + kPi)) break;
     }
     const double th2 = th + phi;
-    if (th < 1.0 || std::abs(step) > tol::halley_step) return at({0, th2});
-    // cos and sin of the last step's end from those of its start (|step| <= 1e-6, so the dropped
-    // terms are below 1e-18), then of theta' = theta + phi by the angle-sum rule, with cos and
+    if (th < 1.0 || std::abs(step) > tol::halley_step * phi) return at({0, th2});
+    // cos and sin of the last step's end from those of its start (|step| <= 1e-6 phi, so the
+    // dropped terms are below 1e-18), then of theta' = theta + phi by the angle-sum rule, with cos and
     // sin of theta read off the previous handle's position: one sincos per handle saved.
     const double cp = c * (1.0 - 0.5 * step * step) - s * step;
     const double sp = s * (1.0 - 0.5 * step * step) + c * step;

@@ -186,10 +186,14 @@ struct CoilBound {
 
 std::optional<Located> TurnaroundPath::behind_on_coil_in(const Located& from, double chord) const {
     if (from.place.piece == 0) return coil_in_.behind(from, chord);
-    // From a later piece: march outward from A, which never steps over the first root.
+    // From a later piece: march outward from A, which never steps over the first root. As on
+    // the plain spiral (Spiral::behind), every root has b theta within the chord of |q|: the
+    // march may start at (d - |q|) / b and stop a radian past (d + |q|) / b.
     const double b = coil_in_.b();
-    const auto u = march_to_chord(CoilPiece{b}, CoilBound{b}, from.pos, chord, design_.entry_theta,
-                                  +1.0, kInf, kMarchStep);
+    const double r0 = norm(from.pos);
+    const double start = std::max(design_.entry_theta, (chord - r0) / b);
+    const auto u = march_to_chord(CoilPiece{b}, CoilBound{b}, from.pos, chord, start, +1.0,
+                                  std::max(start, (chord + r0) / b + 1.0), kMarchStep);
     if (!u) return std::nullopt;
     return at({0, *u});
 }
@@ -210,9 +214,10 @@ std::optional<Located> TurnaroundPath::behind_on_coil_out(const Located& from, d
     const double b = coil_in_.b();
     const double th = from.place.u, tha = design_.entry_theta;
     const double k2 = (chord / b) * (chord / b);
-    auto g = [th, k2](double phi) {
-        const double t2 = th - phi;
-        return th * th + t2 * t2 - 2.0 * th * t2 * std::cos(phi) - k2;
+    // g summed without cancellation, as in Spiral::behind: phi^2 + 2 theta (theta - phi) (1 - cos phi).
+    auto one_minus_cos = [](double c, double s) { return c > 0.0 ? s * s / (1.0 + c) : 1.0 - c; };
+    auto g = [th, k2, one_minus_cos](double phi) {
+        return phi * phi + 2.0 * th * (th - phi) * one_minus_cos(std::cos(phi), std::sin(phi)) - k2;
     };
     constexpr double kQuarter = 1.5707963267948966192313216916398;
     const double room = th - tha;
@@ -228,14 +233,16 @@ std::optional<Located> TurnaroundPath::behind_on_coil_out(const Located& from, d
             if (!(phi > lo && phi < hi)) phi = 0.5 * (lo + hi);
             for (int it = 0; it < tol::max_newton; ++it) {
                 const double t2 = th - phi, c = std::cos(phi), s = std::sin(phi);
-                const double gv = th * th + t2 * t2 - 2.0 * th * t2 * c - k2;
+                const double omc = one_minus_cos(c, s);
+                const double gv = phi * phi + 2.0 * th * t2 * omc - k2;
                 if (gv < 0.0) lo = phi; else hi = phi;
-                const double dg = 2.0 * (th * c - t2 + th * t2 * s);
+                const double dg = 2.0 * (phi - th * omc + th * t2 * s);
                 double next = phi - gv / dg;
                 if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi);
                 const double step = next - phi;
                 phi = next;
-                if (std::abs(step) <= tol::newton_step ||
+                // Relative to phi: far out on the spiral the root itself is tiny.
+                if (std::abs(step) <= tol::newton_step * phi ||
                     hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * th)
                     break;
             }
