@@ -51,7 +51,9 @@ public:
     // The latest time the head stays on the path (the spiral's centre; +inf on the turnaround).
     double end_time() const;
 
-    // Throws InputError (naming `what`, e.g. "--to") unless the head is on the path at time t.
+    // Throws InputError (naming `what`, e.g. "--to") unless the head is on the path at time t
+    // and the whole chain within kMaxReach of the spiral's centre (the turnaround path is endless,
+    // but far out its points lose precision).
     void require_on_path(double t, const char* what) const;
 
     Frame frame(double t) const;
@@ -61,6 +63,7 @@ private:
     Scenario scenario_;
     std::shared_ptr<const Path> path_;
     double start_arc_ = 0.0;
+    double entry_length_ = 0.0;  // turnaround: arc length from the centre to where the turn starts
 };
 
 }  // namespace dragon

@@ -48,6 +48,10 @@ Simulation::Simulation(const Scenario& s) : scenario_(s) {
     PathBuild built = make_path(s);
     path_ = std::move(built.path);
     start_arc_ = built.start_arc;
+    if (s.path.kind == PathKind::turnaround) {
+        const Spiral coil(s.path.turn_pitch);
+        entry_length_ = coil.length_to(s.path.turn_radius / coil.b());
+    }
 }
 
 double Simulation::end_time() const {
@@ -67,6 +71,14 @@ void Simulation::require_on_path(double t, const char* what) const {
     if (s < path_->s_min()) {
         throw InputError(fmt::format("{} {} is not allowed: it puts the head before the start of the path",
                                      what, t));
+    }
+    // On the plain spiral -s is the head's arc length from the centre; on the turnaround path
+    // it is at most the entry's plus |s|. The tail is a chain's length farther out at most.
+    const double reach = entry_length_ + std::abs(s) + scenario_.bench.chain_length();
+    if (!(reach <= kMaxReach)) {
+        throw InputError(fmt::format("{} {} is not allowed: it puts the chain {:.0f} m along the path from "
+                                     "the spiral's centre; at most {:.0f} m keeps positions to 1e-8 m",
+                                     what, t, reach, kMaxReach));
     }
 }
 

@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "dragon/path.hpp"
+
 namespace dragon {
 
 namespace {
@@ -15,6 +17,26 @@ namespace {
 void require_positive(const char* name, double v) {
     if (!std::isfinite(v) || v <= 0.0)
         throw InputError(fmt::format("{} = {} is not allowed: it must be a finite number > 0", name, v));
+}
+
+// Each value's range: wide enough for any dragon (a 1 mm toy to a 1 km parade, a snail's pace
+// to a rocket's), narrow enough that the geometry stays well inside double precision: a path
+// parameter of theta ~ 1e5 rad still leaves positions good to ~1e-11 relative, and no length
+// ratio exceeds ~1e6. Beyond them the fuzzer (tests/fuzz/fuzz_chain) found infinite and NaN
+// positions (a pitch of 3e26 m, say) that validate() let through.
+struct Range {
+    double lo, hi;
+    const char* unit;
+};
+constexpr Range kLength{1e-3, 1e3, " m"};      // boards, width, pitches, turning radius
+constexpr Range kTurns{1e-3, 1e4, ""};          // start turn: theta up to 2 pi 1e4 ~ 6e4 rad
+constexpr Range kRatio{1e-3, 1e3, ""};          // arc ratio r1 / r2
+constexpr Range kSpeed{1e-9, 1e9, " m/s"};      // head speed: only the time scale depends on it
+
+void require_in(const char* name, double v, Range r) {
+    if (!(v >= r.lo && v <= r.hi))  // NaN fails too
+        throw InputError(fmt::format("{} = {} is not allowed: it must be from {}{} to {}{}", name, v, r.lo,
+                                     r.unit, r.hi, r.unit));
 }
 
 }  // namespace
@@ -31,16 +53,39 @@ void validate(const Scenario& s) {
     require_positive("width", b.width);
     if (!std::isfinite(b.hole_offset) || b.hole_offset < 0.0)
         throw InputError(fmt::format("hole offset {} is not allowed: it must be >= 0", b.hole_offset));
+    require_in("head length", b.head_length, kLength);
+    require_in("body length", b.body_length, kLength);
+    require_in("width", b.width, kLength);
     const double shortest = b.bench_count > 1 ? std::min(b.head_length, b.body_length) : b.head_length;
-    if (b.hole_offset >= 0.5 * shortest)
+    // The holes at least 1 mm apart on every board: a link of zero length has no direction.
+    if (!(shortest - 2.0 * b.hole_offset >= kLength.lo))
         throw InputError(fmt::format("hole offset {} is not allowed: it must be less than half the "
-                                     "shortest board ({} m)", b.hole_offset, 0.5 * shortest));
+                                     "shortest board ({} m) by at least 0.5 mm", b.hole_offset, 0.5 * shortest));
     require_positive("pitch", s.path.pitch);
     require_positive("head speed", s.head_speed);
     require_positive("start turn", s.path.start_turn);
     require_positive("turn radius", s.path.turn_radius);
     require_positive("turn pitch", s.path.turn_pitch);
     require_positive("arc ratio", s.path.arc_ratio);
+    require_in("pitch", s.path.pitch, kLength);
+    require_in("head speed", s.head_speed, kSpeed);
+    require_in("start turn", s.path.start_turn, kTurns);
+    require_in("turn radius", s.path.turn_radius, kLength);
+    require_in("turn pitch", s.path.turn_pitch, kLength);
+    require_in("arc ratio", s.path.arc_ratio, kRatio);
+    // The chain at the start, as far out as it goes: the head's arc length from the centre (the
+    // head starts on the plain spiral's turn start_turn, or on the turnaround's coil-in spiral
+    // at the turning space), plus the chain behind it.
+    const bool spiral = s.path.kind == PathKind::spiral;
+    const Spiral coil(s.coil_pitch());
+    constexpr double kTwoPi = 6.283185307179586476925286766559;
+    const double head = coil.length_to(spiral ? kTwoPi * s.path.start_turn : s.path.turn_radius / coil.b());
+    if (!(head + b.chain_length() <= kMaxReach))
+        throw InputError(fmt::format("{} benches {}: the chain would reach {:.4g} m along the spiral from "
+                                     "its centre (the head {:.4g} m, the chain {:.4g} m); at most {:.0f} m "
+                                     "keeps positions to 1e-8 m", b.bench_count,
+                                     spiral ? "from this start turn and pitch" : "at this turn radius and pitch",
+                                     head + b.chain_length(), head, b.chain_length(), kMaxReach));
     // Benches on neighbouring turns sit one pitch apart, centre line to centre line: a board at
     // least as wide as the pitch overlaps the next turn from the first instant.
     const double pitch = s.coil_pitch();
