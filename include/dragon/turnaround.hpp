@@ -110,9 +110,10 @@ void write_study_csv(const TurnaroundStudy& study, const std::string& path);
 // between non-adjacent benches over t in [t0, t1] (coarse scan, each local minimum refined by
 // golden section), and the exact first-contact search over the same run.
 struct RunClearance {
-    double distance;      // smallest clearance, m (negative: overlap)
+    double distance;      // smallest clearance, m (negative: overlap); when no two benches come
+                          // within the scan's cutoff (0.5 m), the cutoff, with bench_a = bench_b = 0
     double time;          // when, s
-    int bench_a, bench_b; // the closest pair then (1..N)
+    int bench_a, bench_b; // the closest pair then (1..N); 0 when none came within the cutoff
     bool collision_free;  // no contact anywhere in [t0, t1] (first_contact found none)
     double scan_step;     // s
     int evaluations;      // frames whose clearance was computed

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/contact_search.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
 #include "dragon/analyses.hpp"
@@ -35,7 +36,7 @@ void register_collide(CLI::App& app, Registry& reg) {
         if (!std::isfinite(to))
             throw InputError("--to is needed on the turnaround path (it has no end)");
         if (!opt->out.empty()) AtomicFile probe(opt->out);
-        const std::optional<Contact> c = first_contact(sim, opt->from, to);
+        const std::optional<Contact> c = first_contact_after(sim, opt->from, to);
         if (!c) {
             if (opt->json)
                 fmt::print("{{\"time\": null, \"benches\": null, \"head_radius\": null, \"from\": {}, \"to\": {}}}\n",

@@ -49,8 +49,12 @@ void register_max_speed(CLI::App& app, Registry& reg) {
         if (m.tied.size() > 1) who = fmt::format("handles {} (equal speeds)", fmt::join(m.tied, ", "));
         fmt::print("  reached by {} at t = {:.6f} s of the Q4 run (head {:.6f} m along the path "
                    "from the turn's start)\n", who, m.time, m.head_arc);
-        fmt::print("  searched t = {}..{} s: coarse scan every {:.4f} s, {} local maxima refined, {} "
-                   "chains solved\n", opt->from, opt->to, m.scan_step, m.candidates, m.evaluations);
+        // The window is in time at the scenario's head speed: say how much of the path that is,
+        // since a slow head may never reach the S-curve in it.
+        fmt::print("  searched t = {}..{} s (the head from {:.6g} m to {:.6g} m along the path at {} m/s): "
+                   "coarse scan every {:.4g} s, {} local maxima refined, {} chains solved\n", opt->from,
+                   opt->to, s.head_speed * opt->from, s.head_speed * opt->to, s.head_speed, m.scan_step,
+                   m.candidates, m.evaluations);
         return 0;
     };
 }

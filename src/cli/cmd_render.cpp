@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/contact_search.hpp"
 #include "cli/render_flags.hpp"
 #include "cli/scenario_flags.hpp"
 #include "dragon/analyses.hpp"
@@ -28,7 +29,7 @@ Contact find_contact(const Simulation& sim) {
     const bool turn = sim.scenario().path.kind == PathKind::turnaround;
     const double t0 = turn ? -100.0 : 0.0;
     const double t1 = turn ? 100.0 : sim.end_time();
-    auto c = first_contact(sim, t0, t1);
+    auto c = first_contact_after(sim, t0, t1);
     if (!c)
         throw InputError(fmt::format("--collision: no two benches touch between {} s and {} s on this "
                                      "scenario; use --time instead", t0, t1));

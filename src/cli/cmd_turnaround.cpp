@@ -62,9 +62,12 @@ void print_json(const TurnaroundStudy& st, const std::optional<RunClearance>& cl
         d.max_radius, rows_json(st.by_ratio), rows_json(st.by_entry), st.ratio_spread,
         json_string(st.conclusion));
     if (clear) {
-        s += fmt::format(", \"clearance\": {{\"distance\": {}, \"time\": {}, \"benches\": [{}, {}], "
-                         "\"collision_free\": {}, \"from\": {}, \"to\": {}}}",
-                         clear->distance, clear->time, clear->bench_a, clear->bench_b,
+        // No pair within the scan's cutoff: the distance is only a lower bound, with no pair or time.
+        const bool near = clear->bench_a > 0;
+        s += fmt::format(", \"clearance\": {{\"distance\": {}, \"at_least\": {}, \"time\": {}, "
+                         "\"benches\": {}, \"collision_free\": {}, \"from\": {}, \"to\": {}}}",
+                         clear->distance, near ? "false" : "true", near ? fmt::format("{}", clear->time) : "null",
+                         near ? fmt::format("[{}, {}]", clear->bench_a, clear->bench_b) : "null",
                          clear->collision_free ? "true" : "false", from, to);
     }
     fmt::print("{}}}\n", s);
@@ -93,7 +96,10 @@ void print_text(const TurnaroundStudy& st, const std::optional<RunClearance>& cl
         fmt::print("  {:>12.4f}  {:>14.6f}  {:>22.6f}\n", r.entry_radius, r.s_curve_length, r.inside_length);
     fmt::print("\n  {}\n", st.conclusion);
 
-    if (clear) {
+    if (clear && clear->bench_a == 0) {
+        fmt::print("\nClearance over t = {}..{} s: no two benches come within {:.6f} m; {}\n", from, to,
+                   clear->distance, clear->collision_free ? "collision-free" : "benches COLLIDE");
+    } else if (clear) {
         fmt::print("\nClearance over t = {}..{} s: smallest {:.6f} m, benches {} and {} at t = {:.6f} s; {}\n",
                    from, to, clear->distance, clear->bench_a, clear->bench_b, clear->time,
                    clear->collision_free ? "collision-free" : "benches COLLIDE");

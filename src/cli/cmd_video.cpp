@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/contact_search.hpp"
 #include "cli/scenario_flags.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
@@ -85,13 +86,22 @@ End resolve_to(const std::string& to, const Simulation& sim, double from) {
         // The turnaround path never ends: look an hour ahead, far past any run the contest asks about.
         constexpr double endless_search = 3600.0;  // s
         const double until = std::isfinite(sim.end_time()) ? sim.end_time() : from + endless_search;
-        const std::optional<Contact> c = first_contact(sim, from, until);
+        const std::optional<Contact> c = first_contact_after(sim, from, until);
         if (!c)
             throw InputError(fmt::format("--to collision: no two benches touch between t = {} s and {:.6f} s",
                                          from, until));
         return {c->time, CollisionMark{c->bench_a, c->bench_b, c->point}};
     }
-    if (what == "boundary") return {boundary_time(sim), std::nullopt};
+    if (what == "boundary") {
+        const double t = boundary_time(sim);
+        if (t <= from) {
+            const double r = norm(sim.path().at_arc(sim.head_arc(from)).pos);
+            throw InputError(fmt::format("--to boundary is not allowed: the head is already inside the turning "
+                                         "space at --from {} s (radius {:.6f} m, turning space {} m) and never "
+                                         "reaches its boundary after that", from, r, sim.scenario().path.turn_radius));
+        }
+        return {t, std::nullopt};
+    }
     if (what == "end") {
         if (!std::isfinite(sim.end_time()))
             throw InputError("--to end is not allowed on the turnaround path: it has no end; give a time");

@@ -26,6 +26,11 @@ constexpr double kTieTolerance = 1e-12;
 // whose width is set by the time a handle needs to cross a link or a join, spans many samples.
 constexpr double kSamplesPerLink = 32.0;
 
+// The coarse scan's cost cap, in handle positions solved (samples times handles): ~20 s on one
+// core. The contest's run takes 9e5; a head speed of 100 m/s over the default -100..100 s
+// (20 km of path) 9e7. Past the cap the scan would run for minutes or exhaust memory.
+constexpr double kMaxHandlePositions = 1e8;
+
 class RatioProbe {
 public:
     RatioProbe(const Path& path, const BenchSpec& spec) : path_(path), spec_(spec) {}
@@ -87,7 +92,13 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, doubl
     const double s0 = built.start_arc + v * t0, s1 = built.start_arc + v * t1;
     double shortest = s.bench.link_length(1);
     if (s.bench.bench_count > 1) shortest = std::min(shortest, s.bench.link_length(2));
-    const int steps = std::max(2, static_cast<int>(std::ceil((s1 - s0) * kSamplesPerLink / shortest)));
+    const double samples = std::ceil((s1 - s0) * kSamplesPerLink / shortest);
+    if (!(samples * s.bench.handle_count() <= kMaxHandlePositions))
+        throw InputError(fmt::format(
+            "--from {} --to {} at head speed {} m/s take the head over {:.6g} m of the path: the scan "
+            "would solve {:.3g} chains of {} handles (at most {:.0e} handle positions); narrow --from/--to",
+            t0, t1, v, s1 - s0, samples, s.bench.handle_count(), kMaxHandlePositions));
+    const int steps = std::max(2, static_cast<int>(samples));
     const double ds = (s1 - s0) / steps;
 
     std::vector<double> rho(static_cast<size_t>(steps) + 1);

@@ -15,11 +15,16 @@ namespace dragon {
 
 namespace {
 
-// Scan step, s. Between two samples the clearance can fall at most at the largest relative
-// speed of two bench points, L <= 2 max point speed (a few m/s at 1 m/s head speed), so with
-// clearances c_k, c_k+1 at the ends of a step its minimum over the step is at least
-// (c_k + c_k+1 - L dt) / 2: a positive bound certifies the step collision-free.
-constexpr double kScanStep = 0.05;
+// Scan step as head travel, m (0.05 s at the contest's 1 m/s): where the benches are depends
+// only on how far the head has come, so the scan must not coarsen with a faster head (nor crawl
+// with a slower one). Between two samples the clearance can fall at most at the largest
+// relative speed of two bench points, L <= 2 max point speed, so with clearances c_k, c_k+1 at
+// the ends of a step its minimum over the step is at least (c_k + c_k+1 - L dt) / 2: a positive
+// bound certifies the step collision-free.
+constexpr double kScanTravel = 0.05;
+// The scan's cost cap, in bench rectangles checked (samples times benches): ~20 s on one core.
+// The contest's run takes 9e5; a head speed of 100 m/s over -100..100 s 9e7.
+constexpr double kMaxBenchChecks = 1e8;
 // The point-speed bound is taken at the samples; allow it to grow by this factor within a step
 // (the benches' velocities change slowly; first_contact uses the same factor).
 constexpr double kSafety = 2.0;
@@ -54,7 +59,14 @@ RunClearance min_clearance(const Scenario& scenario, double t0, double t1) {
         return clearance(f, kCutoff);
     };
 
-    const int steps = std::max(2, static_cast<int>(std::ceil((t1 - t0) / kScanStep)));
+    const double samples = std::ceil((t1 - t0) * s.head_speed / kScanTravel);
+    if (!(samples * s.bench.bench_count <= kMaxBenchChecks))
+        throw InputError(fmt::format(
+            "--from {} --to {} at head speed {} m/s take the head over {:.6g} m of the path: the clearance "
+            "scan would check {:.3g} chains of {} benches (at most {:.0e} bench checks); narrow --from/--to "
+            "or use --no-clearance", t0, t1, s.head_speed, (t1 - t0) * s.head_speed, samples,
+            s.bench.bench_count, kMaxBenchChecks));
+    const int steps = std::max(2, static_cast<int>(samples));
     const double dt = (t1 - t0) / steps;
     out.scan_step = dt;
     std::vector<double> c(static_cast<size_t>(steps) + 1), rate(c.size());

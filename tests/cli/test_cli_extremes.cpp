@@ -1,0 +1,157 @@
+// Extreme but valid scenarios end to end: each works, or is refused with one line and exit
+// code 2. Never a crash, a hang, a NaN or a silent wrong answer. (The slow ones, such as the
+// first contact of 10,000 benches, are in docs/bad-inputs.md, not here: the suite must stay fast.)
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "support/scratch.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CliRun {
+    int code;
+    std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+    std::ifstream f(p);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+CliRun dragon(const std::string& args) {
+    const fs::path dir = dragon_test::scratch_dir();
+    const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+    const std::string cmd = std::string(DRAGON_EXE) + " " + args + " >" + out.string() + " 2>" + err.string();
+    const int status = std::system(cmd.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+}
+
+int lines(const std::string& s) {
+    int n = 0;
+    for (char c : s) n += c == '\n';
+    return n;
+}
+
+bool has(const std::string& text, const std::string& word) { return text.find(word) != std::string::npos; }
+
+// A run that must work: exit 0 and no NaN or infinity anywhere in what it printed.
+void expect_works(const CliRun& r, const std::string& args) {
+    EXPECT_EQ(r.code, 0) << args << "\n" << r.err;
+    for (const char* bad : {"nan", "inf"}) EXPECT_FALSE(has(r.out, bad)) << args << "\n" << r.out.substr(0, 400);
+}
+
+// A run that must be refused: exit 2, one line on stderr naming `word`.
+void expect_refused(const CliRun& r, const std::string& args, const std::string& word) {
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+    EXPECT_EQ(lines(r.err), 1) << args << "\n" << r.err;
+    EXPECT_TRUE(has(r.err, word)) << args << "\n" << r.err;
+}
+
+void works(const std::string& args) { expect_works(dragon(args), args); }
+void refused(const std::string& args, const std::string& word) { expect_refused(dragon(args), args, word); }
+
+std::string out_file(const std::string& name) { return (dragon_test::scratch_dir() / name).string(); }
+
+}  // namespace
+
+TEST(Extremes, OneBench) {
+    const CliRun sim = dragon("simulate --body-count 1 --to 3");
+    expect_works(sim, "simulate --body-count 1");
+    EXPECT_EQ(lines(sim.out), 1 + 4 * 2);  // header, then 4 frames of 2 handles
+    const CliRun hit = dragon("collide --body-count 1");
+    expect_works(hit, "collide --body-count 1");
+    EXPECT_TRUE(has(hit.out, "no collision")) << hit.out;
+    works("render --body-count 1 --time 10 --size 64x64 -o " + out_file("one.png"));
+    works("video --body-count 1 --to 2 --size 64x48 --fps 5 -o " + out_file("one.mp4"));
+    // One bench cannot touch another: there is no first contact to draw or film.
+    refused("render --body-count 1 --collision --size 64x64 -o " + out_file("hit.png"), "no two benches touch");
+    refused("video --body-count 1 --size 64x48 -o " + out_file("hit.mp4"), "no two benches touch");
+}
+
+TEST(Extremes, TenThousandBenches) {
+    const CliRun sim = dragon("simulate --body-count 10000 --to 0");
+    expect_works(sim, "simulate --body-count 10000");
+    EXPECT_EQ(lines(sim.out), 1 + 10001);
+    works("render --body-count 10000 --time 10 --size 64x64 -o " + out_file("long.png"));
+    // A million 20 m boards would reach 2e7 m along the spiral, where positions lose precision.
+    refused("simulate --body-count 1000000 --body-length 20 --to 0", "at most");
+}
+
+TEST(Extremes, PitchJustAboveTheWidth) {
+    works("simulate --pitch 0.3000001 --to 1");
+    // The boards overlap from the first instant: there is no first contact after t = 0.
+    refused("collide --pitch 0.3000001", "already overlap");
+    refused("render --pitch 0.3000001 --collision --size 64x64 -o " + out_file("p.png"), "already overlap");
+    refused("simulate --pitch 0.3 --to 1", "pitch");
+}
+
+TEST(Extremes, SlowHead) {
+    const CliRun sim = dragon("simulate --speed 1e-6 --to 300 --step 100");
+    expect_works(sim, "simulate --speed 1e-6");
+    EXPECT_TRUE(has(sim.out, "\n300,0,8.799997,-0.000300,0.000001\n")) << sim.out.substr(0, 300);
+    // In -100..100 s the head moves 0.2 mm and never reaches the S-curve: the answer says so.
+    const CliRun fast = dragon("max-speed --speed 1e-6");
+    expect_works(fast, "max-speed --speed 1e-6");
+    EXPECT_TRUE(has(fast.out, "from -0.0001 m to 0.0001 m")) << fast.out;
+    // No two benches come within the scan's cutoff: no pair is named.
+    const CliRun turn = dragon("turnaround --speed 1e-6 --json");
+    expect_works(turn, "turnaround --speed 1e-6");
+    EXPECT_TRUE(has(turn.out, "\"at_least\": true, \"time\": null, \"benches\": null")) << turn.out;
+    works("video --speed 1e-6 --to 100 --size 64x48 --fps 5 --speedup 50 -o " + out_file("slow.mp4"));
+}
+
+TEST(Extremes, FastHead) {
+    // Where the benches are depends only on how far the head has come: 100 times faster, the
+    // first contact comes 100 times sooner (412.473837682 s at 1 m/s).
+    const CliRun hit = dragon("collide --speed 100 --json");
+    expect_works(hit, "collide --speed 100");
+    const auto at = hit.out.find("\"time\": ");
+    ASSERT_NE(at, std::string::npos) << hit.out;
+    EXPECT_NEAR(std::stod(hit.out.substr(at + 8)), 4.12473837682, 1e-10);
+    refused("simulate --speed 100 --to 5", "centre");
+    const CliRun turn = dragon("turnaround --speed 100 --from -1 --to 1");
+    expect_works(turn, "turnaround --speed 100");
+    EXPECT_TRUE(has(turn.out, "smallest 0.279043 m, benches 1 and 17 at t = 0.301599 s")) << turn.out;
+    // 2,000 km of path to scan: refused rather than minutes of work.
+    refused("max-speed --speed 1e4", "narrow --from/--to");
+}
+
+TEST(Extremes, PastTheCollision) {
+    refused("collide --from 420", "already overlap");
+    refused("video --from 420 --size 64x48 -o " + out_file("late.mp4"), "already overlap");
+    // The head at the spiral's centre, and a moment after it.
+    works("simulate --from 442.5902564 --to 442.5902564");
+    works("render --time 442.59 --size 64x64 -o " + out_file("centre.png"));
+    refused("simulate --to 443", "centre");
+    refused("collide --from 500", "centre");
+}
+
+TEST(Extremes, TurningSpaceWiderThanTheStart) {
+    // The head starts at radius 8.8 m, already inside a 20 m turning space.
+    refused("video --turn-radius 20 --to boundary --size 64x48 -o " + out_file("b.mp4"), "already inside");
+    refused("min-pitch --turn-radius 20 --lo 0.4 --hi 0.45", "inside the turning space");
+    const CliRun turn = dragon("turnaround --turn-radius 20 --no-clearance --json");
+    expect_works(turn, "turnaround --turn-radius 20");
+    EXPECT_TRUE(has(turn.out, "\"max_radius\": 20")) << turn.out.substr(0, 300);
+    works("simulate --path turnaround --turn-radius 20 --to -99");
+}
+
+TEST(Extremes, ValuesOutOfRange) {
+    refused("simulate --start-turn 1e5 --to 1", "start turn");
+    refused("simulate --pitch 2000 --to 1", "pitch");
+    refused("simulate --speed 1e10 --to 0", "head speed");
+    refused("simulate --hole-offset 1.0999 --body-length 2.2 --to 0", "hole offset");
+    refused("simulate --path turnaround --from 1e7 --to 1e7", "--from");
+}
