@@ -17,9 +17,8 @@ export ASAN_OPTIONS=detect_leaks=1:fast_unwind_on_malloc=0:detect_stack_use_afte
 export LSAN_OPTIONS=suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
-# Left out: the Q3 minimum-pitch searches (tests named Q3.*). Each runs a whole first-contact
-# search to the turning space for dozens of pitches (7 s and 19 s in Release); under ASan they
-# take several minutes each. The code they exercise (first_contact, clearance) runs sanitized
-# in the Q2 tests.
-ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -E '^Q3\.'
+# Left out: Q3.AFinerScanAgreesWithTheReportedIntervals, 201 whole first-contact searches to the
+# turning space (19 s in Release, over 4 minutes under ASan: past the tests' 240 s timeout). The
+# same code runs sanitized in Q3.MinimumPitchMatchesPublished (about a minute) and the Q2 tests.
+ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -E '^Q3\.AFinerScanAgreesWithTheReportedIntervals$'
 echo "test-sanitized: build and tests took $((SECONDS - start)) s"
