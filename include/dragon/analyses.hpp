@@ -25,6 +25,9 @@ struct Contact {
     Vec2 point;     // contact witness point
     Frame frame;    // the whole chain at that moment
     int steps = 0;  // clearance evaluations the search used
+    // How closely `time` is known, s: tol::contact_time, finer for a head faster than 1 m/s
+    // (at most that many metres of head travel), coarser only where t's own rounding is larger.
+    double tolerance = 0.0;
 };
 std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to);
 

@@ -53,12 +53,12 @@ void register_collide(CLI::App& app, Registry& reg) {
             fmt::print("{{\"time\": {}, \"benches\": [{}, {}], \"head_radius\": {}, \"point\": [{}, {}], "
                        "\"tolerance\": {}, \"evaluations\": {}, \"handles\": {}}}\n",
                        json_number(c->time), c->bench_a, c->bench_b, json_number(c->head_radius),
-                       json_number(c->point.x), json_number(c->point.y), 1e-9, c->steps,
+                       json_number(c->point.x), json_number(c->point.y), json_number(c->tolerance), c->steps,
                        handles_json(c->frame));
         } else {
-            fmt::print("first contact at t = {:.9f} s: bench {} touches bench {}; head radius {:.6f} m\n",
-                       c->time, c->bench_a, c->bench_b, c->head_radius);
-            print_single_frame(fmt::format("handles at t = {:.6f} s", c->time), c->frame);
+            fmt::print("first contact at t = {} s: bench {} touches bench {}; head radius {:.6f} m\n",
+                       format_resolved(c->time, c->tolerance), c->bench_a, c->bench_b, c->head_radius);
+            print_single_frame(fmt::format("handles at t = {} s", format_resolved(c->time, c->tolerance)), c->frame);
         }
         return 0;
     };

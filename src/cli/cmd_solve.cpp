@@ -87,8 +87,8 @@ void register_solve(CLI::App& app, Registry& reg) {
             if (c) {
                 write_result2_xlsx(c->frame, file("result2.xlsx"));
                 written.push_back("result2.xlsx");
-                fmt::print("\nQ2: benches {} and {} touch at t = {:.6f} s (head radius {:.6f} m)\n", c->bench_a,
-                           c->bench_b, c->time, c->head_radius);
+                fmt::print("\nQ2: benches {} and {} touch at t = {} s (head radius {:.6f} m)\n", c->bench_a,
+                           c->bench_b, format_resolved(c->time, c->tolerance), c->head_radius);
                 print_single_frame("", c->frame);
                 summary.push_back(fmt::format("  \"q2\": {{\"time\": {}, \"benches\": [{}, {}], \"head_radius\": {}}}",
                                               json_number(c->time), c->bench_a, c->bench_b, json_number(c->head_radius)));

@@ -1,5 +1,6 @@
 #include "cli/report.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -27,31 +28,38 @@ void print_frame_table(const std::string& title, const std::vector<const Frame*>
     if (frames.empty()) return;
     const int n = static_cast<int>(frames.front()->handles.size());
     fmt::print("{}\n{:<18}", title, "");
-    for (const Frame* f : frames) fmt::print("{:>12}", time_header(f->time));
+    for (const Frame* f : frames) fmt::print(" {:>11}", time_header(f->time));
     fmt::print("\n");
     for (int h : summary_handles(n)) {
         const std::string name = handle_name(h, n);
         fmt::print("{:<18}", name + " x (m)");
-        for (const Frame* f : frames) fmt::print("{:>12.6f}", round6(f->handles[static_cast<size_t>(h)].pos.x));
+        for (const Frame* f : frames) fmt::print(" {:>11.6f}", round6(f->handles[static_cast<size_t>(h)].pos.x));
         fmt::print("\n{:<18}", name + " y (m)");
-        for (const Frame* f : frames) fmt::print("{:>12.6f}", round6(f->handles[static_cast<size_t>(h)].pos.y));
+        for (const Frame* f : frames) fmt::print(" {:>11.6f}", round6(f->handles[static_cast<size_t>(h)].pos.y));
         fmt::print("\n");
     }
     for (int h : summary_handles(n)) {
         fmt::print("{:<18}", handle_name(h, n) + " (m/s)");
-        for (const Frame* f : frames) fmt::print("{:>12.6f}", round6(f->handles[static_cast<size_t>(h)].speed));
+        for (const Frame* f : frames) fmt::print(" {:>11.6f}", round6(f->handles[static_cast<size_t>(h)].speed));
         fmt::print("\n");
     }
 }
 
 void print_single_frame(const std::string& title, const Frame& frame) {
     const int n = static_cast<int>(frame.handles.size());
-    fmt::print("{}\n{:<14}{:>12}{:>12}{:>12}\n", title, "", "x (m)", "y (m)", "speed (m/s)");
+    fmt::print("{}\n{:<14} {:>11} {:>11} {:>11}\n", title, "", "x (m)", "y (m)", "speed (m/s)");
     for (int h : summary_handles(n)) {
         const Handle& hd = frame.handles[static_cast<size_t>(h)];
-        fmt::print("{:<14}{:>12.6f}{:>12.6f}{:>12.6f}\n", handle_name(h, n), round6(hd.pos.x),
+        fmt::print("{:<14} {:>11.6f} {:>11.6f} {:>11.6f}\n", handle_name(h, n), round6(hd.pos.x),
                    round6(hd.pos.y), round6(hd.speed));
     }
+}
+
+std::string format_resolved(double v, double resolution) {
+    int decimals = 9;
+    if (resolution > 0.0 && std::isfinite(resolution))
+        decimals = std::clamp(static_cast<int>(std::floor(-std::log10(resolution))) - 1, 0, 17);
+    return fmt::format("{:.{}f}", v, decimals);
 }
 
 std::string json_number(double v) {

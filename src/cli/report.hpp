@@ -22,4 +22,7 @@ void print_single_frame(const std::string& title, const Frame& frame);
 std::string handles_json(const Frame& frame);
 std::string json_number(double v);
 
+// v with as many decimals as `resolution` (how closely v is known) supports: 9 for 1e-10.
+std::string format_resolved(double v, double resolution);
+
 }  // namespace dragon::cli

@@ -29,7 +29,7 @@ namespace {
 
 constexpr double kSafety = 2.0;    // slack on the closing-speed bound over one step
 constexpr double kMargin = 1.0;    // broad-phase margin, m
-constexpr double kMaxStep = 1.0;   // s; keeps the velocity bound's drift over a step small
+constexpr double kMaxTravel = 1.0; // m of head travel per step; keeps the bound's drift small
 constexpr double kProbeGap = 2e-3; // m; below this clearance, try to bracket the contact
 
 // Largest point speed of any bench in the frame rotating about the origin at rate w. A bench's
@@ -93,7 +93,7 @@ struct Approach {
 // tiny distance with zero rate still allows sqrt(2 d / M), where the first-order bound would
 // crawl. The curvature each step relied on is checked at the next evaluation; if the rates
 // changed faster, the caller retreats and retries shorter.
-Approach approach(const Frame& f, double t, Memory& memory, bool check) {
+Approach approach(const Frame& f, double t, double max_step, Memory& memory, bool check) {
     Approach a{{INFINITY, 0, 0, {}, {}}, INFINITY, 0.0, false};
     if (f.benches.size() < 3) return a;
     const std::vector<BenchMotion> motion = bench_motions(f);
@@ -101,7 +101,7 @@ Approach approach(const Frame& f, double t, Memory& memory, bool check) {
     // largest point speeds, measured in any frame rotating about the centre (a rotation moves
     // both points of a pair without changing their distance). A frame turning with the chain
     // makes those speeds far smaller than the fixed frame does.
-    const double cap = std::min(kMaxStep, kMargin / (kSafety * 2.0 * far_speed_bound(f, motion)));
+    const double cap = std::min(max_step, kMargin / (kSafety * 2.0 * far_speed_bound(f, motion)));
     const auto pairs = candidate_pairs(f, kMargin);
     struct Candidate {
         double first_order;
@@ -195,10 +195,11 @@ Approach approach(const Frame& f, double t, Memory& memory, bool check) {
 
 double head_radius(const Frame& f) { return norm(f.handles.front().pos); }
 
-Contact make_contact(const Simulation& sim, double t, int steps) {
+Contact make_contact(const Simulation& sim, double t, int steps, double time_tol) {
     Frame f = sim.frame(t);
     const Clearance c = clearance(f, kMargin);
-    return {t, c.bench_a, c.bench_b, head_radius(f), c.point, std::move(f), steps};
+    const double rounding = 2.0 * (std::nextafter(t, INFINITY) - t);
+    return {t, c.bench_a, c.bench_b, head_radius(f), c.point, std::move(f), steps, std::max(time_tol, rounding)};
 }
 
 }  // namespace
@@ -206,19 +207,27 @@ Contact make_contact(const Simulation& sim, double t, int steps) {
 std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to) {
     sim.require_on_path(t_from, "--from");
     sim.require_on_path(t_to, "--to");
+    // Everything scales with the head's speed: the chain at speed v is the chain at 1 m/s with
+    // time divided by v. A step covers at most kMaxTravel of head travel, and the contact time
+    // is found to tol::contact_time and to at most that many metres of head travel (so 1e-9 s at
+    // the contest's 1 m/s, and proportionally finer for a faster dragon).
+    const double speed = sim.scenario().head_speed;
+    const double max_step = kMaxTravel / speed;
+    const double time_tol = tol::contact_time * std::min(1.0, 1.0 / speed);
     Frame f;
     int steps = 0;
     double t = t_from;
     Memory memory;
     sim.frame_into(t, f);
-    Approach a = approach(f, t, memory, false);
+    Approach a = approach(f, t, max_step, memory, false);
     ++steps;
-    if (a.clear.distance <= 0.0) return make_contact(sim, t, steps);
+    if (a.clear.distance <= 0.0) return make_contact(sim, t, steps, time_tol);
     double retry_cap = INFINITY;  // after a broken curvature bound, retry shorter from t
 
     while (t < t_to) {
-        // A pair grazing within rounding of touching, closing too slowly to bound: contact now.
-        if (a.safe_step < tol::contact_time) return make_contact(sim, t, steps);
+        // A pair grazing within rounding of touching, closing too slowly to bound: contact now
+        // (also when the step is below the resolution of t itself, late in a slow run).
+        if (a.safe_step < time_tol || t + a.safe_step == t) return make_contact(sim, t, steps, time_tol);
         // Bracket: a Newton probe on the closest pair once it is nearly touching.
         double t_hi = std::numeric_limits<double>::quiet_NaN();
         if (a.clear.distance < kProbeGap && a.rate < 0.0) {
@@ -233,8 +242,8 @@ std::optional<Contact> first_contact(const Simulation& sim, double t_from, doubl
             sim.frame_into(next, f);
             ++steps;
             const Memory before = memory;
-            const Approach b = approach(f, next, memory, true);
-            if (b.bound_broken && next - t > tol::contact_time) {
+            const Approach b = approach(f, next, max_step, memory, true);
+            if (b.bound_broken && next - t > time_tol) {
                 // The rates turned faster than the step assumed: back to t, with the curvature
                 // now seen in memory, and a shorter step.
                 retry_cap = 0.25 * (next - t);
@@ -252,14 +261,14 @@ std::optional<Contact> first_contact(const Simulation& sim, double t_from, doubl
         }
         // Bisection on [t, t_hi]: clearance > 0 at t, <= 0 at t_hi.
         double lo = t, hi = t_hi;
-        while (hi - lo > tol::contact_time) {
+        while (hi - lo > time_tol) {
             const double mid = 0.5 * (lo + hi);
             if (mid <= lo || mid >= hi) break;
             sim.frame_into(mid, f);
             ++steps;
             if (clearance(f, kMargin).distance > 0.0) lo = mid; else hi = mid;
         }
-        return make_contact(sim, hi, steps);
+        return make_contact(sim, hi, steps, time_tol);
     }
     return std::nullopt;
 }

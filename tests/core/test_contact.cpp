@@ -1,6 +1,7 @@
 // Q2 and Q3: the published values, and that the reported first contact really is first.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "dragon/analyses.hpp"
@@ -43,6 +44,28 @@ TEST(Q2, OtherScenariosToo) {
     EXPECT_LE(clearance(c->frame).distance, 0.0);
     EXPECT_GT(clearance(sim.frame(c->time - 2e-9)).distance, 0.0);
     for (double t = 0.0; t < c->time - 0.5; t += 0.25) ASSERT_GT(clearance(sim.frame(t)).distance, 0.0);
+}
+
+TEST(Q2, ScalesWithTheHeadSpeed) {
+    // The chain at head speed v is the chain at 1 m/s with time divided by v, so the contact
+    // time times v must not depend on v. A slow dragon once crept in 1 s steps (hours at
+    // 1e-6 m/s); a fast one must still be resolved to the metres of head travel.
+    const Simulation ref_sim(Scenario{});
+    const auto ref = first_contact(ref_sim, 0.0, ref_sim.end_time());
+    ASSERT_TRUE(ref.has_value());
+    for (double v : {1e-6, 1e-3, 1e3, 1e6}) {
+        Scenario s;
+        s.head_speed = v;
+        const Simulation sim(s);
+        const auto c = first_contact(sim, 0.0, sim.end_time());
+        ASSERT_TRUE(c.has_value()) << "speed " << v;
+        EXPECT_EQ(c->bench_a, ref->bench_a) << "speed " << v;
+        EXPECT_EQ(c->bench_b, ref->bench_b) << "speed " << v;
+        // Head travel to the contact agrees to the coarser of the two runs' resolutions.
+        EXPECT_NEAR(c->time * v, ref->time, 2.0 * std::max(c->tolerance * v, ref->tolerance)) << "speed " << v;
+        EXPECT_LE(c->tolerance * v, std::max(1e-10, 4.0 * (std::nextafter(c->time, INFINITY) - c->time) * v));
+        EXPECT_LT(c->steps, 2 * ref->steps) << "speed " << v;
+    }
 }
 
 TEST(Q3, MinimumPitchMatchesPublished) {
