@@ -111,6 +111,7 @@ row render --pitch 0.3000001 --collision -o x.png
 row_last simulate --speed 1e-6 --to 300 --step 100
 row_last max-speed --speed 1e-6
 row_last turnaround --speed 1e-6
+row collide --speed 1e-6
 row collide --speed 100
 row simulate --speed 100 --to 5
 row_last turnaround --speed 100 --from -1 --to 1
@@ -129,15 +130,14 @@ row_last max-speed --turn-radius 20
 
 cat <<'TEXT'
 
-## Slow or not yet handled (not run by this script)
+## Slow (not run by this script)
 
-Times on 2 cores; Release times estimated from a sanitized build, which runs about 6 times slower.
+Wall times on 2 cores, Release build.
 
 | Input | What happens |
 |---|---|
-| `dragon turnaround --speed 100` | Works, about 10 s (58 s under ASan): the clearance scan steps by 0.05 m of head travel, and -100..100 s is 20 km of path at 100 m/s. `--speed 1000` is refused (too long to scan); narrow `--from`/`--to` or add `--no-clearance`. |
-| `dragon turnaround --body-count 10000` | Works, about 12 s (72 s under ASan; smallest clearance 0.279043 m, benches 1 and 17, as with 223 benches). |
-| `dragon max-speed --body-count 10000` | Works, about 1 s (5.6 s under ASan). |
-| `dragon collide --body-count 10000` | Works but slowly: 207 s in Release before this change set (first contact at 412.473838 s, benches 1 and 9, as with 223 benches). The first-contact search evaluates every bench at each of its ~3000 steps. |
-| `dragon collide --speed 1e-6` (also `render --collision`, `video --to collision`) | Hangs: the first-contact search steps at most 1 s at a time, and at 1e-6 m/s the contact is 4.1e8 s away. Where the benches are depends only on how far the head has come, so the step cap belongs in metres of head travel (1 m / head speed); until then, search at 1 m/s and divide the time by the speed. |
+| `dragon turnaround --speed 100` | Works, about 13 s: the clearance scan steps by 0.05 m of head travel, and -100..100 s is 20 km of path at 100 m/s. `--speed 1000` is refused (too long to scan); narrow `--from`/`--to` or add `--no-clearance`. |
+| `dragon turnaround --body-count 10000` | Works, about 16 s (smallest clearance 0.279043 m, benches 1 and 17, as with 223 benches). |
+| `dragon max-speed --body-count 10000` | Works, about 3.3 s. |
+| `dragon collide --body-count 10000` | Works, about 24 s (first contact at 412.473837682 s, benches 1 and 9, as with 223 benches): each of the search's steps evaluates all 10,000 benches. |
 TEXT
