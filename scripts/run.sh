@@ -7,5 +7,5 @@ bash scripts/install-deps.sh
 bash scripts/build.sh
 mkdir -p out
 ./build/src/dragon solve -o out
-./build/src/dragon figures -o renders
+./build/src/dragon figures -o renders --scale 0.8   # about 800 px each, 640 KB in all
 ./build/src/dragon video -o renders/coil.gif --size 400x300 --colours 48 --fps 8 --speedup 40 --to collision

@@ -249,12 +249,20 @@ void draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, double 
         render::text(cr, th.font, 13 * u, 0, 0, p.y_label, 0.5);
         cairo_restore(cr);
     }
-    if (!p.title.empty()) render::text(cr, th.font, 15 * u, f.x0, y + 24 * u, p.title, 0.0, 0.0, true);
+    // Title and note run from the frame's left edge to the image's; a long one is set smaller
+    // rather than clipped.
+    const double room = x + w - 8 * u - f.x0;
+    auto fitted = [&](double size, const std::string& s, bool bold) {
+        const double wide = render::text_width(cr, th.font, size, s, bold);
+        return wide > room ? size * room / wide : size;
+    };
+    if (!p.title.empty())
+        render::text(cr, th.font, fitted(15 * u, p.title, true), f.x0, y + 24 * u, p.title, 0.0, 0.0, true);
     if (!p.note.empty()) {
         Rgba soft = th.text;
         soft.a = 0.75;
         set_colour(cr, soft);
-        render::text(cr, th.font, 12 * u, f.x0, y + 44 * u, p.note);
+        render::text(cr, th.font, fitted(12 * u, p.note, false), f.x0, y + 44 * u, p.note);
     }
     draw_legend(cr, p, f, u);
     cairo_restore(cr);
