@@ -2,6 +2,7 @@
 // minimum pitch (Q3). The turnaround questions (Q4, Q5) are in turnaround.hpp.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,7 +30,11 @@ struct Contact {
     // (at most that many metres of head travel), coarser only where t's own rounding is larger.
     double tolerance = 0.0;
 };
-std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to);
+// `on_step`, if given, hears of every interval [from, to] the search has declared contact-free
+// by its bounds (without looking inside), for tests and tracing.
+using StepObserver = std::function<void(double from, double to)>;
+std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to,
+                                     const StepObserver& on_step = {});
 
 // Q3: smallest pitch for which the head reaches the turning-space boundary without a collision.
 struct PitchInterval {

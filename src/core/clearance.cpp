@@ -24,45 +24,60 @@ void consider(Clearance& best, const Frame& f, int i, int j) {
 
 }  // namespace
 
-// Sweep and prune on bounding circles: sort the benches by the left edge of their bounding
-// circle, then sweep; two rectangles within `margin` of each other have bounding circles within
-// `margin` too, so no such pair is skipped. Adjacent benches (sharing a handle) are excluded.
+// Sweep and prune: sort the benches by the left edge of their bounding box, then sweep along x.
+// Two rectangles within `margin` of each other have x-extents within `margin` and bounding
+// circles within `margin`, so no such pair is skipped; the box's x-extent is the sweep band
+// (narrower than the circle's for a bench lying across x), the circles are the filter.
+// Adjacent benches (sharing a handle) are excluded.
 std::vector<std::pair<int, int>> candidate_pairs(const Frame& f, double margin) {
     const size_t n = f.benches.size();
-    // Sorted by the left edge of the widened circle; then the sweep reads plain arrays in order,
-    // which is most of the broad phase's time.
-    std::vector<std::pair<double, int>> order(n);
+    // Sorted by the left edge of the box; then the sweep reads plain arrays in order, which is
+    // most of the broad phase's time.
+    auto half_x = [](const Rect& r) { return r.half_length * std::abs(r.axis.x) + r.half_width * std::abs(r.axis.y); };
+    // Scratch arrays kept per thread: this runs hundreds of times per search.
+    thread_local std::vector<std::pair<double, int>> order;
+    thread_local std::vector<double> lo, hi, x, y, rad;
+    thread_local std::vector<int> index;
+    order.resize(n);
     for (size_t i = 0; i < n; ++i) {
         const Rect& r = f.benches[i];
-        order[i] = {r.centre.x - bounding_radius(r), static_cast<int>(i)};
+        order[i] = {r.centre.x - half_x(r), static_cast<int>(i)};
     }
     std::sort(order.begin(), order.end());
-    std::vector<double> lo(n), hi(n), x(n), y(n), rad(n);
-    std::vector<int> index(n);
+    for (auto* v : {&lo, &hi, &x, &y, &rad}) v->resize(n);
+    index.resize(n);
     for (size_t k = 0; k < n; ++k) {
         const int i = order[k].second;
         const Rect& r = f.benches[static_cast<size_t>(i)];
         rad[k] = bounding_radius(r);
         x[k] = r.centre.x;
         y[k] = r.centre.y;
-        lo[k] = x[k] - rad[k] - 0.5 * margin;
-        hi[k] = x[k] + rad[k] + 0.5 * margin;
+        lo[k] = x[k] - half_x(r) - 0.5 * margin;
+        hi[k] = x[k] + half_x(r) + 0.5 * margin;
         index[k] = i;
     }
-    std::vector<std::pair<int, int>> out;
-    out.reserve(16 * n);
+    // Branch-free inner loop: every pair in the sweep band is written, and the write position
+    // advances only for the ones that pass (which pass is unpredictable, so a branch there
+    // mispredicts often; this is most of the clearance pass's time otherwise).
+    std::vector<std::pair<int, int>> out(64);
+    size_t count = 0;
     for (size_t a = 0; a < n; ++a) {
         const double xa = x[a], ya = y[a], reach_a = rad[a] + margin, end = hi[a];
         const int ia = index[a];
-        for (size_t b = a + 1; b < n && lo[b] <= end; ++b) {
+        size_t stop = a + 1;
+        while (stop < n && lo[stop] <= end) ++stop;
+        if (out.size() < count + (stop - a)) out.resize(2 * (count + (stop - a)));
+        for (size_t b = a + 1; b < stop; ++b) {
             const double reach = reach_a + rad[b];
             const double dx = xa - x[b], dy = ya - y[b];
-            if (dx * dx + dy * dy > reach * reach) continue;
             const int ib = index[b];
-            if (ib - ia < 2 && ia - ib < 2) continue;  // neighbours share a handle
-            out.emplace_back(std::min(ia, ib) + 1, std::max(ia, ib) + 1);
+            const bool near = dx * dx + dy * dy <= reach * reach;
+            const bool apart = ib - ia >= 2 || ia - ib >= 2;  // neighbours share a handle
+            out[count] = {std::min(ia, ib) + 1, std::max(ia, ib) + 1};
+            count += static_cast<size_t>(near & apart);
         }
     }
+    out.resize(count);
     return out;
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "dragon/analyses.hpp"
 
@@ -65,6 +66,60 @@ TEST(Q2, ScalesWithTheHeadSpeed) {
         EXPECT_NEAR(c->time * v, ref->time, 2.0 * std::max(c->tolerance * v, ref->tolerance)) << "speed " << v;
         EXPECT_LE(c->tolerance * v, std::max(1e-10, 4.0 * (std::nextafter(c->time, INFINITY) - c->time) * v));
         EXPECT_LT(c->steps, 2 * ref->steps) << "speed " << v;
+    }
+}
+
+// The stepper's claim, checked from outside: inside every interval it declared contact-free by
+// its bounds, without looking, the benches are apart. At least sixteen samples per step and one
+// per 0.05 m of head travel, for the contest run, a pitch just above the minimum (clearance
+// dipping to near zero and recovering), a pitch with a contact window that opens and closes
+// (a step over it would be caught here), a fast head, and the turnaround path.
+TEST(Q2, EveryStepDeclaredSafeIsSafe) {
+    struct Case {
+        const char* name;
+        Scenario s;
+        double from, to;
+    };
+    std::vector<Case> cases;
+    cases.push_back({"contest", Scenario{}, 0.0, -1.0});
+    Scenario tight;
+    tight.path.pitch = 0.4504;  // just above the minimum pitch: grazes on the way in
+    cases.push_back({"pitch 0.4504", tight, 0.0, -1.0});
+    Scenario window;
+    window.path.pitch = 0.44;  // benches 1 and 19 touch over 181.2..~189 s, part, touch again at 197.5 s
+    cases.push_back({"pitch 0.44", window, 0.0, -1.0});
+    Scenario fast;
+    fast.head_speed = 3.0;
+    fast.path.pitch = 0.6;
+    cases.push_back({"pitch 0.6, 3 m/s", fast, 0.0, -1.0});
+    Scenario turn;
+    turn.path.kind = PathKind::turnaround;
+    cases.push_back({"turnaround", turn, -100.0, 100.0});
+    for (const Case& c : cases) {
+        const Simulation sim(c.s);
+        const double to = c.to < 0.0 ? sim.end_time() : c.to;
+        int steps = 0;
+        double covered = c.from, longest = 0.0;
+        Frame f;
+        const auto contact = first_contact(sim, c.from, to, [&](double a, double b) {
+            ++steps;
+            EXPECT_DOUBLE_EQ(a, covered) << c.name << ": steps leave a gap";
+            covered = b;
+            longest = std::max(longest, b - a);
+            const int samples = std::max(16, static_cast<int>(std::ceil((b - a) * c.s.head_speed / 0.05)));
+            for (int k = 1; k <= samples; ++k) {
+                const double t = a + (b - a) * k / samples;
+                sim.frame_into(t, f);
+                const Clearance cl = clearance(f);
+                ASSERT_GT(cl.distance, 0.0) << c.name << ": benches " << cl.bench_a << " and " << cl.bench_b
+                                            << " touch at t = " << t << " inside the step [" << a << ", " << b << "]";
+            }
+        });
+        EXPECT_GT(steps, 10) << c.name;
+        // A contact ends the steps just before it; no contact: they cover the whole range.
+        if (contact) EXPECT_LE(covered, contact->time) << c.name;
+        else EXPECT_DOUBLE_EQ(covered, to) << c.name;
+        EXPECT_GT(longest, 0.1) << c.name;  // not crawling either
     }
 }
 
