@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dragon/analyses.hpp"
+#include "dragon/constants.hpp"
 
 using namespace dragon;
 
@@ -126,8 +127,10 @@ TEST(Q2, EveryStepDeclaredSafeIsSafe) {
 TEST(Q3, MinimumPitchMatchesPublished) {
     const MinPitch m = min_pitch(Scenario{}, 0.40, 0.50);
     EXPECT_NEAR(m.pitch, 0.4503, 5e-5);  // PROBLEM.md: about 0.4503
-    // Just above it the run reaches the boundary; just below it collides.
+    // At it the run reaches the boundary; the tolerance below it, the run collides.
+    EXPECT_FALSE(contact_before_boundary(Scenario{}, m.pitch).has_value());
     EXPECT_FALSE(contact_before_boundary(Scenario{}, m.pitch + 1e-7).has_value());
+    EXPECT_TRUE(contact_before_boundary(Scenario{}, m.pitch - 1.001 * tol::pitch).has_value());
     EXPECT_TRUE(contact_before_boundary(Scenario{}, m.pitch - 1e-7).has_value());
     // The intervals tile the searched range and alternate.
     ASSERT_FALSE(m.intervals.empty());
@@ -141,6 +144,29 @@ TEST(Q3, MinimumPitchMatchesPublished) {
 
 // The search's grid is 2.5 mm; a scan at 1 mm over the whole default range finds the same
 // feasible and infeasible pitches the search reported: no window slipped between grid points.
+// Other dragons: the cut is exact to the tolerance there too, whichever way it was narrowed
+// (regula falsi on the closing pair's closest approach, or k-section where that does not apply).
+TEST(Q3, OtherScenariosCutToTheTolerance) {
+    Scenario wide;
+    wide.bench.width = 0.4;
+    Scenario ring;
+    ring.path.turn_radius = 3.5;
+    Scenario short_chain;
+    short_chain.bench.bench_count = 60;
+    for (const Scenario& s : {wide, ring, short_chain}) {
+        const MinPitch m = min_pitch(s, s.bench.width + 0.05, 0.6);
+        ASSERT_TRUE(std::isfinite(m.pitch));
+        for (size_t k = 1; k < m.intervals.size(); ++k) {
+            const double cut = m.intervals[k].lo;
+            // A cut is reported at its feasible side; a tolerance across it, the run collides.
+            const bool feasible_above = m.intervals[k].feasible;
+            EXPECT_FALSE(contact_before_boundary(s, cut).has_value()) << "cut " << cut;
+            const double other = feasible_above ? cut - 1.001 * tol::pitch : cut + 1.001 * tol::pitch;
+            EXPECT_TRUE(contact_before_boundary(s, other).has_value()) << "cut " << cut;
+        }
+    }
+}
+
 TEST(Q3, AFinerScanAgreesWithTheReportedIntervals) {
     const MinPitch m = min_pitch(Scenario{}, 0.35, 0.55);
     for (int k = 0; k <= 200; ++k) {
