@@ -30,7 +30,7 @@ namespace dragon {
 namespace {
 
 constexpr double kSafety = 2.0;    // slack on the closing-speed bound over one step
-constexpr double kMargin = 1.0;    // broad-phase margin, m
+constexpr double kMargin = 0.7;    // broad-phase margin, m
 constexpr double kMaxTravel = 2.0; // m of head travel per step; keeps the bound's drift small
 constexpr double kProbeGap = 2e-3; // m; below this clearance, try to bracket the contact
 
