@@ -38,12 +38,19 @@ std::vector<std::pair<int, int>> candidate_pairs(const Frame& f, double margin) 
     thread_local std::vector<std::pair<double, int>> order;
     thread_local std::vector<double> lo, hi, x, y, rad;
     thread_local std::vector<int> index;
-    order.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-        const Rect& r = f.benches[i];
-        order[i] = {r.centre.x - half_x(r), static_cast<int>(i)};
+    // The order of the last call on this thread is kept: successive frames of a search differ
+    // little, so it is nearly sorted already and insertion sort finishes it in about n steps.
+    if (order.size() != n) {
+        order.resize(n);
+        for (size_t i = 0; i < n; ++i) order[i].second = static_cast<int>(i);
     }
-    std::sort(order.begin(), order.end());
+    for (auto& [key, i] : order) key = f.benches[static_cast<size_t>(i)].centre.x - half_x(f.benches[static_cast<size_t>(i)]);
+    for (size_t k = 1; k < n; ++k) {
+        const auto item = order[k];
+        size_t j = k;
+        for (; j > 0 && item < order[j - 1]; --j) order[j] = order[j - 1];
+        order[j] = item;
+    }
     for (auto* v : {&lo, &hi, &x, &y, &rad}) v->resize(n);
     index.resize(n);
     for (size_t k = 0; k < n; ++k) {

@@ -15,9 +15,9 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <unordered_map>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "core/corner_gaps.hpp"
 #include "core/motion.hpp"
@@ -103,9 +103,58 @@ struct PairMemory {
     std::array<double, 8> rates;
     double curvature;
 };
-using Memory = std::unordered_map<std::uint64_t, PairMemory>;
-
 std::uint64_t key_of(int a, int b) { return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b); }
+
+// The near pairs' memories by pair: a flat open-addressing table (a few hundred entries written
+// and read per evaluation; a node-based map spent more time allocating than the bounds took).
+class Memory {
+public:
+    const PairMemory* find(std::uint64_t key) const {
+        if (slots_.empty()) return nullptr;
+        for (size_t k = hash(key);; k = (k + 1) & mask()) {
+            if (slots_[k].key == key) return &slots_[k].value;
+            if (slots_[k].key == kEmpty) return nullptr;
+        }
+    }
+    void emplace(std::uint64_t key, const PairMemory& value) {
+        if (2 * (size_ + 1) > slots_.size()) grow();
+        size_t k = hash(key);
+        while (slots_[k].key != kEmpty && slots_[k].key != key) k = (k + 1) & mask();
+        if (slots_[k].key == kEmpty) ++size_;
+        slots_[k] = {key, value};
+    }
+    void clear() {
+        for (Slot& s : slots_) s.key = kEmpty;
+        size_ = 0;
+    }
+    void swap(Memory& other) noexcept {
+        slots_.swap(other.slots_);
+        std::swap(size_, other.size_);
+    }
+    template <class F>
+    void for_each(F&& f) {
+        for (Slot& s : slots_)
+            if (s.key != kEmpty) f(s.value);
+    }
+
+private:
+    static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+    struct Slot {
+        std::uint64_t key = kEmpty;
+        PairMemory value{};
+    };
+    size_t mask() const { return slots_.size() - 1; }
+    size_t hash(std::uint64_t key) const { return static_cast<size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & mask(); }
+    void grow() {
+        std::vector<Slot> old(std::max<size_t>(64, 2 * slots_.size()));
+        old.swap(slots_);
+        size_ = 0;
+        for (const Slot& s : old)
+            if (s.key != kEmpty) emplace(s.key, s.value);
+    }
+    std::vector<Slot> slots_;
+    size_t size_ = 0;
+};
 
 struct Approach {
     Clearance clear;
@@ -139,8 +188,14 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
         double bound;
         size_t k;
     };
-    std::vector<Candidate> tight;
-    std::vector<double> gaps(pairs.size());
+    // Scratch kept per thread (a search evaluates hundreds of frames).
+    thread_local std::vector<Candidate> tight;
+    thread_local std::vector<double> gaps, half_diagonal;
+    tight.clear();
+    gaps.resize(pairs.size());
+    half_diagonal.resize(f.benches.size());
+    for (size_t k = 0; k < f.benches.size(); ++k)
+        half_diagonal[k] = std::sqrt(f.benches[k].half_length * f.benches[k].half_length + f.benches[k].half_width * f.benches[k].half_width);
     double best_gap = INFINITY;
     size_t seed = 0;
     for (size_t k = 0; k < pairs.size(); ++k) {
@@ -153,11 +208,11 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
         // at most its value at a's centre plus the turn-rate difference times the half-diagonal.
         const BenchMotion& ma = motion[i];
         const BenchMotion& mb = motion[j];
-        const double bound = norm(mb.at(ma.centre) - ma.v_centre) +
-                             std::abs(mb.omega - ma.omega) * std::sqrt(ra.half_length * ra.half_length + ra.half_width * ra.half_width) +
-                             std::abs(mb.omega) * std::max(g, 0.0);
-        const double h1 = bound > 0.0 ? std::max(g, 0.0) / (kSafety * bound) : INFINITY;
-        if (h1 < cap) tight.push_back({h1, bound, k});
+        const double gap = std::max(g, 0.0);
+        const double bound = norm(mb.at(ma.centre) - ma.v_centre) + std::abs(mb.omega - ma.omega) * half_diagonal[i] +
+                             std::abs(mb.omega) * gap;
+        // First-order step gap / (kSafety bound), divided out only for the pairs that could set it.
+        if (gap < cap * kSafety * bound) tight.push_back({gap / (kSafety * bound), bound, k});
     }
     // Smallest first-order step first, popped from a heap: usually only a part of the list is
     // looked at before the first-order steps exceed the step found so far.
@@ -179,13 +234,13 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
         double observed = (std::abs(ma.omega) + std::abs(mb.omega)) * c.bound;
         const std::uint64_t key = key_of(ia, ib);
         PairMemory mem{t, {}, 0.0};
-        if (const auto it = memory.find(key); it != memory.end() && it->second.time != t) {
-            const double dt = std::abs(t - it->second.time);
+        if (const PairMemory* last = memory.find(key); last && last->time != t) {
+            const double dt = std::abs(t - last->time);
             for (size_t q = 0; q < 8; ++q) {
-                const double change = std::abs(gaps8[q].rate - it->second.rates[q]);
+                const double change = std::abs(gaps8[q].rate - last->rates[q]);
                 observed = std::max(observed, change / dt);
                 // The last step assumed the rates change by at most curvature * dt.
-                if (check && change > it->second.curvature * dt * (1.0 + 1e-9) + 1e-12) a.bound_broken = true;
+                if (check && change > last->curvature * dt * (1.0 + 1e-9) + 1e-12) a.bound_broken = true;
             }
         }
         mem.curvature = kSafety * observed;
@@ -278,7 +333,7 @@ std::optional<Contact> first_contact(const Simulation& sim, double t_from, doubl
                 // The rates turned faster than the step assumed: back to t, with a larger
                 // curvature on record, and a shorter step.
                 retry_cap = 0.25 * (next - t);
-                for (auto& [key, m] : memory) m.curvature *= 4.0;
+                memory.for_each([](PairMemory& m) { m.curvature *= 4.0; });
                 continue;
             }
             memory.swap(seen);
