@@ -136,8 +136,8 @@ Wall times on 2 cores, Release build.
 
 | Input | What happens |
 |---|---|
-| `dragon turnaround --speed 100` | Works, about 13 s: the clearance scan steps by 0.05 m of head travel, and -100..100 s is 20 km of path at 100 m/s. `--speed 1000` is refused (too long to scan); narrow `--from`/`--to` or add `--no-clearance`. |
-| `dragon turnaround --body-count 10000` | Works, about 16 s (smallest clearance 0.279043 m, benches 1 and 17, as with 223 benches). |
-| `dragon max-speed --body-count 10000` | Works, about 3.3 s. |
-| `dragon collide --body-count 10000` | Works, about 24 s (first contact at 412.473837682 s, benches 1 and 9, as with 223 benches): each of the search's steps evaluates all 10,000 benches. |
+| `dragon turnaround --speed 100` | Works, about 12 s: the clearance scan steps by 0.05 m of head travel, and -100..100 s is 20 km of path at 100 m/s. `--speed 1000` is refused (too long to scan); narrow `--from`/`--to` or add `--no-clearance`. |
+| `dragon turnaround --body-count 10000` | Works, about 18 s (smallest clearance 0.279043 m, benches 1 and 17, as with 223 benches). |
+| `dragon max-speed --body-count 10000` | Works, about 3.1 s. |
+| `dragon collide --body-count 10000` | Works, about 11 s (first contact at 412.473837682 s, benches 1 and 9, as with 223 benches): each of the search's steps evaluates all 10,000 benches. |
 TEXT
