@@ -57,7 +57,9 @@ void broad_phase(const Context& c, const std::string& path) {
     const int focus = 1;  // the head: the bench that collides first
     const double margin = 1.0;  // the clearance search's margin, m
     const Rect& r = f.benches[focus - 1];
-    const double reach = bounding_radius(r) + 0.5 * margin;
+    // The sweep band: the bench's bounding box on x, widened by half the margin each side (as in
+    // candidate_pairs; a bench whose own band overlaps it goes on to the circle test).
+    const double reach = r.half_length * std::abs(r.axis.x) + r.half_width * std::abs(r.axis.y) + 0.5 * margin;
 
     std::vector<int> candidates;
     for (auto [i, j] : candidate_pairs(f, margin))
@@ -69,7 +71,7 @@ void broad_phase(const Context& c, const std::string& path) {
     so.highlight_benches = candidates;
     so.annotation = fmt::format(
         "Broad phase around bench {} at the first contact (t = {:.2f} s): {} of {} benches are candidates\n"
-        "Sweep and prune on x, then bounding circles within a margin of {:g} m (purple); only these get the exact test.",
+        "Sweep and prune on x (box extents), then bounding circles within a margin of {:g} m (purple); only these get the exact test.",
         focus, hit.time, candidates.size(), f.benches.size() - 2, margin);
     Scene s = make_scene(sim, f, so);
 
