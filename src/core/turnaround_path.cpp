@@ -142,9 +142,14 @@ std::optional<Located> TurnaroundPath::behind_on_arc(int piece, const Located& f
         const Vec2 w = from.pos - c;
         const double dist = norm(w);
         if (dist > r + chord || dist < std::abs(r - chord) || dist == 0.0) return std::nullopt;
-        // Foot of the common chord along w, and the half-width across it.
-        const double x = (r * r + dist * dist - chord * chord) / (2.0 * dist);
-        const double y2 = (r - x) * (r + x);
+        // Foot of the common chord along w, and the half-width across it. r - x is formed as
+        // (d - e)(d + e) / 2 dist with e = dist - r: the textbook (r^2 + dist^2 - d^2) / 2 dist
+        // cancels when from sits on the arc's circle (at a join, with a link far shorter than
+        // r), which left such chords wrong by 1e-9 relative (found by tests/fuzz/fuzz_chain).
+        const double e = dist - r;
+        const double r_minus_x = (chord - e) * (chord + e) / (2.0 * dist);
+        const double x = r - r_minus_x;
+        const double y2 = r_minus_x * (2.0 * r - r_minus_x);
         psi = std::atan2(w.y, w.x);
         beta = std::atan2(std::sqrt(std::max(y2, 0.0)), x);
     }

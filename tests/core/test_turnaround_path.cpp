@@ -1,6 +1,7 @@
 // The composite turnaround path: continuity at the joins, arc positions, and the chord search
 // against a brute-force scan.
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -153,4 +154,40 @@ TEST(TurnaroundPath, ChainLinksAreExactAcrossTheTurn) {
         }
     }
     for (int c : on_piece) EXPECT_GT(c, 100);
+}
+
+// A link far shorter than the arcs' radii, with the rear handle across a join from the front
+// one: the circle-circle intersection must not cancel (the fuzzer found such chords 1e-9 off,
+// 2e-11 m on a 0.02 m link; its spec is kept here). Every link straddling a join, at many heads.
+TEST(TurnaroundPath, ShortLinksAcrossAJoinAreExact) {
+    Scenario sc;
+    sc.path.kind = PathKind::turnaround;
+    sc.bench.bench_count = 38;
+    sc.bench.head_length = 3.4655045599328278;
+    sc.bench.body_length = 0.21784931422687723;
+    sc.bench.width = 0.18022954703338087;
+    sc.bench.hole_offset = 0.099073305445957771;  // body links 0.0197 m
+    sc.path.turn_radius = 83.056350042714996;
+    sc.path.turn_pitch = 37.386267420845435;
+    sc.path.arc_ratio = 0.50078201243756304;
+    const TurnaroundPath path(design_s_curve(sc));
+    Frame f;
+    int straddling = 0;
+    for (int piece = 1; piece <= 3; ++piece) {
+        for (int k = 0; k < 400; ++k) {
+            // Heads that walk the chain's body over the join a few microns at a time.
+            solve_chain(path, sc.bench, path.join_arc(piece) + 3.4 + 0.0005 * k, 1.0, f);
+            for (size_t i = 0; i + 1 < f.handles.size(); ++i) {
+                if (f.handles[i].place.piece == f.handles[i + 1].place.piece) continue;
+                ++straddling;
+                const double link = sc.bench.link_after(static_cast<int>(i));
+                // Positions are ~80 m from the centre: a few roundings of them, nothing more.
+                const double slack = 8.0 * std::numeric_limits<double>::epsilon() * norm(f.handles[i].pos);
+                EXPECT_NEAR(distance(f.handles[i].pos, f.handles[i + 1].pos), link, slack)
+                    << "handles " << i << " (piece " << f.handles[i].place.piece << ") and " << i + 1
+                    << " (piece " << f.handles[i + 1].place.piece << ")";
+            }
+        }
+    }
+    EXPECT_GT(straddling, 300);
 }
