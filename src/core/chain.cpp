@@ -57,7 +57,11 @@ Simulation::Simulation(const Scenario& s) : scenario_(s) {
 double Simulation::end_time() const {
     const double smax = path_->s_max();
     if (std::isinf(smax)) return std::numeric_limits<double>::infinity();
-    return (smax - start_arc_) / scenario_.head_speed;
+    // The division rounds: step back until the head is on the path at the time returned, so
+    // that frame(end_time()) always works (at 180 m/s it was one rounding past the centre).
+    double t = (smax - start_arc_) / scenario_.head_speed;
+    while (head_arc(t) > smax) t = std::nextafter(t, -INFINITY);
+    return t;
 }
 
 void Simulation::require_on_path(double t, const char* what) const {

@@ -222,3 +222,22 @@ TEST(Scenario, TimesPastTheCentreAreRefused) {
     EXPECT_THROW(sim.frame(sim.end_time() + 1.0), InputError);
     EXPECT_THROW(sim.frame(std::nan("")), InputError);
 }
+
+// end_time() is the last moment the head is on the path, at any speed: frame(end_time()) works
+// and the next representable time is refused. (At 180 m/s the division used to round one step
+// past the centre: found by tests/fuzz/fuzz_scenario.)
+TEST(Scenario, TheEndTimeItselfIsOnThePath) {
+    for (double speed : {1e-6, 0.3, 1.0, 3.7, 180.0, 997.0, 1e6}) {
+        for (double turn : {3.0, 16.0, 40.5}) {
+            Scenario s;
+            s.head_speed = speed;
+            s.path.start_turn = turn;
+            const Simulation sim(s);
+            const double end = sim.end_time();
+            EXPECT_NO_THROW(sim.frame(end)) << "speed " << speed << ", start turn " << turn;
+            EXPECT_THROW(sim.frame(std::nextafter(end, INFINITY) + 4.0 * (std::nextafter(end, INFINITY) - end)),
+                         InputError)
+                << "speed " << speed << ", start turn " << turn;
+        }
+    }
+}
