@@ -30,11 +30,17 @@ struct Contact {
     // (at most that many metres of head travel), coarser only where t's own rounding is larger.
     double tolerance = 0.0;
 };
-// `on_step`, if given, hears of every interval [from, to] the search has declared contact-free
-// by its bounds (without looking inside), for tests and tracing.
+// The search runs on all cores, each taking chunks of the time range, earliest first; the
+// answer does not depend on the number of threads beyond the tolerance.
 using StepObserver = std::function<void(double from, double to)>;
+struct ContactSearchOptions {
+    // If given, hears of every interval [from, to] the search has declared contact-free by its
+    // bounds (without looking inside), in order; the search then runs on one thread.
+    StepObserver on_step;
+    int threads = 0;  // 0: one per core
+};
 std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to,
-                                     const StepObserver& on_step = {});
+                                     const ContactSearchOptions& options = {});
 
 // Q3: smallest pitch for which the head reaches the turning-space boundary without a collision.
 struct PitchInterval {

@@ -14,6 +14,10 @@
 // bisection to tol::contact_time.
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
 #include <cstdint>
 #include <cmath>
 #include <limits>
@@ -287,12 +291,11 @@ Contact make_contact(const Simulation& sim, double t, int steps, double time_tol
     return {t, c.bench_a, c.bench_b, head_radius(f), c.point, std::move(f), steps, std::max(time_tol, rounding)};
 }
 
-}  // namespace
-
-std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to,
-                                     const StepObserver& on_step) {
-    sim.require_on_path(t_from, "--from");
-    sim.require_on_path(t_to, "--to");
+// The search over one range. `stop()` is asked once per step: true abandons the search (a
+// contact was found in an earlier range). `steps` counts the evaluations.
+template <class Stop>
+std::optional<Contact> search_range(const Simulation& sim, double t_from, double t_to, const StepObserver& on_step,
+                                    const Stop& stop, int& steps) {
     // Everything scales with the head's speed: the chain at speed v is the chain at 1 m/s with
     // time divided by v. A step covers at most kMaxTravel of head travel, and the contact time
     // is found to tol::contact_time and to at most that many metres of head travel (so 1e-9 s at
@@ -301,7 +304,7 @@ std::optional<Contact> first_contact(const Simulation& sim, double t_from, doubl
     const double max_step = kMaxTravel / speed;
     const double time_tol = tol::contact_time * std::min(1.0, 1.0 / speed);
     Frame f;
-    int steps = 0;
+    steps = 0;
     double t = t_from;
     Memory memory, seen;
     sim.frame_into(t, f);
@@ -312,6 +315,7 @@ std::optional<Contact> first_contact(const Simulation& sim, double t_from, doubl
     double retry_cap = INFINITY;  // after a broken curvature bound, retry shorter from t
 
     while (t < t_to) {
+        if (stop()) return std::nullopt;
         // A pair grazing within rounding of touching, closing too slowly to bound: contact now
         // (also when the step is below the resolution of t itself, late in a slow run).
         if (a.safe_step < time_tol || t + a.safe_step == t) return make_contact(sim, t, steps, time_tol);
@@ -358,6 +362,69 @@ std::optional<Contact> first_contact(const Simulation& sim, double t_from, doubl
         return make_contact(sim, hi, steps, time_tol);
     }
     return std::nullopt;
+}
+
+}  // namespace
+
+// The range is cut into chunks searched on all cores, earliest first. Each chunk's search is
+// exact for its own range, and a chunk that starts with benches overlapping reports its start:
+// the overlap began in an earlier chunk, which then reports that contact itself. So the first
+// contact is the one of the earliest chunk reporting any; chunks after it are abandoned. Every
+// chunk before it has run to its end, so the answer (and the evaluation count) does not depend
+// on how the threads were scheduled.
+std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to,
+                                     const ContactSearchOptions& options) {
+    sim.require_on_path(t_from, "--from");
+    sim.require_on_path(t_to, "--to");
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    const size_t threads = options.on_step ? 1 : options.threads > 0 ? static_cast<size_t>(options.threads) : cores;
+    auto never = [] { return false; };
+    if (threads == 1 || !(t_to > t_from)) {
+        int steps = 0;
+        return search_range(sim, t_from, t_to, options.on_step, never, steps);
+    }
+    const size_t chunks = 8 * threads;
+    std::vector<double> edge(chunks + 1);
+    for (size_t k = 0; k <= chunks; ++k)
+        edge[k] = k == chunks ? t_to : t_from + (t_to - t_from) * static_cast<double>(k) / static_cast<double>(chunks);
+    std::vector<std::optional<Contact>> found(chunks);
+    std::vector<int> steps(chunks, 0);
+    std::atomic<size_t> next{0}, winner{chunks};
+    std::exception_ptr failure;
+    std::mutex failure_lock;
+    auto work = [&] {
+        // Latest chunk first: the one holding the contact usually costs most (short steps, then
+        // the bisection), so it starts early, and the ones after it start overlapping and end at
+        // once. The answer is the same in any order.
+        for (size_t taken; (taken = next++) < chunks;) {
+            const size_t k = chunks - 1 - taken;
+            if (winner.load() < k) continue;
+            try {
+                found[k] = search_range(sim, edge[k], edge[k + 1], {}, [&] { return winner.load(std::memory_order_relaxed) < k; },
+                                        steps[k]);
+            } catch (...) {
+                const std::lock_guard<std::mutex> hold(failure_lock);
+                if (!failure) failure = std::current_exception();
+                winner = 0;  // stop everyone
+            }
+            if (found[k]) {
+                size_t w = winner.load();
+                while (k < w && !winner.compare_exchange_weak(w, k)) {
+                }
+            }
+        }
+    };
+    std::vector<std::thread> pool;
+    for (size_t w = 1; w < threads; ++w) pool.emplace_back(work);
+    work();
+    for (std::thread& th : pool) th.join();
+    if (failure) std::rethrow_exception(failure);
+    const size_t w = winner.load();
+    if (w == chunks) return std::nullopt;
+    Contact c = std::move(*found[w]);
+    c.steps = 0;
+    for (size_t k = 0; k <= w; ++k) c.steps += steps[k];
+    return c;
 }
 
 }  // namespace dragon

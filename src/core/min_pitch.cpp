@@ -32,7 +32,8 @@ std::optional<Contact> contact_before_boundary(Scenario s, double pitch) {
     // The moment the head front handle reaches radius turn_radius.
     const double theta_end = s.path.turn_radius / spiral.b();
     const double t_end = (-spiral.length_to(theta_end) - sim.start_arc()) / s.head_speed;
-    return first_contact(sim, 0.0, t_end);
+    // One thread: min_pitch already runs one pitch per core.
+    return first_contact(sim, 0.0, t_end, {.on_step = {}, .threads = 1});
 }
 
 namespace {

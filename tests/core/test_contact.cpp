@@ -102,7 +102,7 @@ TEST(Q2, EveryStepDeclaredSafeIsSafe) {
         int steps = 0;
         double covered = c.from, longest = 0.0;
         Frame f;
-        const auto contact = first_contact(sim, c.from, to, [&](double a, double b) {
+        const auto contact = first_contact(sim, c.from, to, {.on_step = [&](double a, double b) {
             ++steps;
             EXPECT_DOUBLE_EQ(a, covered) << c.name << ": steps leave a gap";
             covered = b;
@@ -115,12 +115,39 @@ TEST(Q2, EveryStepDeclaredSafeIsSafe) {
                 ASSERT_GT(cl.distance, 0.0) << c.name << ": benches " << cl.bench_a << " and " << cl.bench_b
                                             << " touch at t = " << t << " inside the step [" << a << ", " << b << "]";
             }
-        });
+        }});
         EXPECT_GT(steps, 10) << c.name;
         // A contact ends the steps just before it; no contact: they cover the whole range.
         if (contact) EXPECT_LE(covered, contact->time) << c.name;
         else EXPECT_DOUBLE_EQ(covered, to) << c.name;
         EXPECT_GT(longest, 0.1) << c.name;  // not crawling either
+    }
+}
+
+// The search cut into chunks on several threads finds what one thread finds: the same pair, the
+// same moment to the tolerance, also where a contact window opens and closes (pitch 0.44) and
+// where there is no contact at all (a wide pitch).
+TEST(Q2, ThreadsDoNotChangeTheAnswer) {
+    std::vector<Scenario> scenarios(4);
+    scenarios[1].path.pitch = 0.44;
+    scenarios[2].path.pitch = 0.5;
+    scenarios[2].head_speed = 2.0;
+    scenarios[3].path.pitch = 0.9;
+    for (const Scenario& s : scenarios) {
+        const Simulation sim(s);
+        const auto one = first_contact(sim, 0.0, sim.end_time(), {.on_step = {}, .threads = 1});
+        for (int threads : {2, 3}) {
+            const auto many = first_contact(sim, 0.0, sim.end_time(), {.on_step = {}, .threads = threads});
+            ASSERT_EQ(one.has_value(), many.has_value()) << "pitch " << s.path.pitch << ", " << threads << " threads";
+            if (!one) continue;
+            EXPECT_EQ(one->bench_a, many->bench_a);
+            EXPECT_EQ(one->bench_b, many->bench_b);
+            EXPECT_NEAR(one->time, many->time, one->tolerance + many->tolerance) << "pitch " << s.path.pitch;
+            // Deterministic for a given thread count.
+            const auto again = first_contact(sim, 0.0, sim.end_time(), {.on_step = {}, .threads = threads});
+            EXPECT_EQ(again->time, many->time);
+            EXPECT_EQ(again->steps, many->steps);
+        }
     }
 }
 
