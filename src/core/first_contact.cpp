@@ -50,7 +50,30 @@ constexpr double kProbeGap = 2e-3; // m; below this clearance, try to bracket th
 // and each such pair not among the broad phase's candidates is more than the margin apart, and
 // at least as far apart as the groups' bounding circles. Neighbouring turns turn at nearly the
 // same rate, so W is far below twice the largest point speed in any single frame.
+//
+// That bound is weak for groups on different turns: they slide past each other at |w_G - w_H|
+// times the radius, without closing. A second bound sees this. Any point x of bench k moves at
+// (v_c - omega perp(c)) + omega perp(x), and perp(x) is square to x, so |x| changes at most at
+// u_k = |v_c - omega perp(c)| (small: the chain turns about the origin almost rigidly). If a
+// group's radii lie in [lo_G, hi_G] and another's in [lo_H, hi_H] with lo_H > hi_G, every member
+// pair is at least lo_H - hi_G apart (|x - y| >= |y| - |x|), a gap that shrinks no faster than
+// U_G + U_H (U: the largest u_k). A group pair may take the better of the two steps.
 constexpr int kGroup = 8;  // benches per group
+
+void radial_extents(const Frame& f, const std::vector<BenchMotion>& motion, std::vector<Radial>& out) {
+    out.resize(f.benches.size());
+    for (size_t k = 0; k < f.benches.size(); ++k) out[k] = radial_extent(f.benches[k], motion[k]);
+}
+
+// A lower bound on the distance between two benches, or two groups, from their radii alone
+// (not positive when their radii overlap), and the time that distance lasts at least.
+double radial_gap(const Radial& a, const Radial& b) { return std::max(b.lo - a.hi, a.lo - b.hi); }
+double radial_step(const Radial& a, const Radial& b) {
+    const double gap = radial_gap(a, b);
+    if (!(gap > 0.0)) return 0.0;
+    const double closing = a.speed + b.speed;
+    return closing > 0.0 ? gap / (kSafety * closing) : INFINITY;
+}
 
 struct Group {
     Vec2 centre;
@@ -58,9 +81,11 @@ struct Group {
     double rate;    // w_G
     double speed;   // V_G
     double reach;   // rho_G
+    Radial radii;   // the members' radii all lie in [lo, hi] and change at most at U_G
 };
 
-double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, double margin) {
+double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, const std::vector<Radial>& radial,
+                      double margin) {
     const size_t n = f.benches.size();
     std::vector<Group> groups;
     groups.reserve(n / kGroup + 1);
@@ -76,7 +101,7 @@ double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, do
             const double r2 = dot(c, c);
             if (r2 > 0.0) rate += cross(c, motion[k].v_centre) / r2, ++rated;
         }
-        Group g{0.5 * (lo + hi), 0.0, rated ? rate / rated : 0.0, 0.0, 0.0};
+        Group g{0.5 * (lo + hi), 0.0, rated ? rate / rated : 0.0, 0.0, 0.0, {INFINITY, 0.0, 0.0}};
         for (size_t k = g0; k < g1; ++k) {
             const Rect& r = f.benches[k];
             const BenchMotion& m = motion[k];
@@ -84,6 +109,8 @@ double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, do
             g.radius = std::max(g.radius, norm(m.centre - g.centre) + half_diagonal);
             g.speed = std::max(g.speed, norm(m.v_centre - g.rate * perp(m.centre)) + std::abs(m.omega - g.rate) * half_diagonal);
             g.reach = std::max(g.reach, norm(m.centre) + half_diagonal);
+            g.radii = {std::min(g.radii.lo, radial[k].lo), std::max(g.radii.hi, radial[k].hi),
+                       std::max(g.radii.speed, radial[k].speed)};
         }
         groups.push_back(g);
     }
@@ -94,7 +121,8 @@ double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, do
             const Group& gb = groups[b];
             const double closing = ga.speed + gb.speed + std::abs(ga.rate - gb.rate) * std::min(ga.reach, gb.reach);
             const double apart = std::max(margin, norm(ga.centre - gb.centre) - ga.radius - gb.radius);
-            if (closing > 0.0) step = std::min(step, apart / (kSafety * closing));
+            double pair_step = closing > 0.0 ? apart / (kSafety * closing) : INFINITY;
+            step = std::min(step, std::max(pair_step, radial_step(ga.radii, gb.radii)));
         }
     }
     return step;
@@ -161,6 +189,8 @@ private:
 };
 
 struct Approach {
+    // The closest pair among those looked at: exact whenever the true clearance is below
+    // kProbeGap (the pairs passed over are farther apart than that), else only an upper bound.
     Clearance clear;
     double safe_step;  // s: no contact can happen sooner
     double rate;       // d/dt of the closest pair's separation now (negative: closing)
@@ -185,7 +215,9 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
     if (f.benches.size() < 3) return a;
     const std::vector<BenchMotion> motion = bench_motions(f);
     // Pairs beyond the margin: bounded group by group (far_pairs_step).
-    const double cap = std::min(max_step, far_pairs_step(f, motion, kMargin));
+    thread_local std::vector<Radial> radial;
+    radial_extents(f, motion, radial);
+    const double cap = std::min(max_step, far_pairs_step(f, motion, radial, kMargin));
     const auto pairs = candidate_pairs(f, kMargin);
     struct Candidate {
         double first_order;
@@ -204,6 +236,14 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
     size_t seed = 0;
     for (size_t k = 0; k < pairs.size(); ++k) {
         const size_t i = static_cast<size_t>(pairs[k].first - 1), j = static_cast<size_t>(pairs[k].second - 1);
+        // Benches on neighbouring turns slide past each other: when their radii alone keep them
+        // apart for the whole step and farther than a probe would look, they cannot set the step,
+        // touch, or be probed, and need no closer look (most pairs, away from the centre).
+        const double radial_first_order = radial_step(radial[i], radial[j]);
+        if (radial_first_order >= cap && radial_gap(radial[i], radial[j]) >= kProbeGap) {
+            gaps[k] = INFINITY;
+            continue;
+        }
         const Rect& ra = f.benches[i];
         const double g = sat_gap(ra, f.benches[j]).gap;  // a lower bound on the distance
         gaps[k] = g;
@@ -216,7 +256,10 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
         const double bound = norm(mb.at(ma.centre) - ma.v_centre) + std::abs(mb.omega - ma.omega) * half_diagonal[i] +
                              std::abs(mb.omega) * gap;
         // First-order step gap / (kSafety bound), divided out only for the pairs that could set it.
-        if (gap < cap * kSafety * bound) tight.push_back({gap / (kSafety * bound), bound, k});
+        if (gap < cap * kSafety * bound) {
+            const double first_order = std::max(gap / (kSafety * bound), radial_first_order);
+            if (first_order < cap) tight.push_back({first_order, bound, k});
+        }
     }
     // Smallest first-order step first, popped from a heap: usually only a part of the list is
     // looked at before the first-order steps exceed the step found so far.
@@ -267,10 +310,9 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
                                         f.benches[static_cast<size_t>(pairs[k].second - 1)]);
         if (s.distance < a.clear.distance) a.clear = {s.distance, pairs[k].first, pairs[k].second, s.axis, s.point};
     };
-    exact(seed);
+    if (gaps[seed] < INFINITY) exact(seed);
     for (size_t k = 0; k < pairs.size(); ++k)
         if (k != seed && gaps[k] < a.clear.distance) exact(k);
-    if (a.clear.distance > kMargin) a.clear = clearance(f, kMargin);  // nothing near: report the margin
     if (a.clear.bench_a > 0 && a.clear.distance > 0.0) {
         // Separation rate of the closest pair: the witness on b moving away from a along the axis.
         const BenchMotion& ma = motion[static_cast<size_t>(a.clear.bench_a - 1)];

@@ -25,6 +25,15 @@ double separation_rate_bound(const Rect& a, const BenchMotion& ma, const BenchMo
     return worst + std::abs(mb.omega) * std::max(gap, 0.0);
 }
 
+Radial radial_extent(const Rect& r, const BenchMotion& m) {
+    // Nearest point: the origin's distance to the rectangle, in the rectangle's own frame.
+    const double along = std::max(std::abs(dot(r.centre, r.axis)) - r.half_length, 0.0);
+    const double across = std::max(std::abs(cross(r.axis, r.centre)) - r.half_width, 0.0);
+    double hi = 0.0;
+    for (const Vec2& p : corners(r).p) hi = std::max(hi, norm(p));  // the farthest point is a corner
+    return {std::hypot(along, across), hi, norm(m.v_centre - m.omega * perp(m.centre))};
+}
+
 double max_point_speed(const Rect& r, const BenchMotion& m) {
     return norm(m.v_centre) + std::abs(m.omega) * std::hypot(r.half_length, r.half_width);
 }

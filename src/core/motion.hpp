@@ -24,6 +24,16 @@ std::vector<BenchMotion> bench_motions(const Frame& f);
 // at a corner; moving from a's witness to b's adds at most |omega_b| times the gap.
 double separation_rate_bound(const Rect& a, const BenchMotion& ma, const BenchMotion& mb, double gap);
 
+// The bench's distances from the origin and a bound on how fast any of them changes. A point x
+// of the bench moves at (v_centre - omega perp(centre)) + omega perp(x), and perp(x) is square
+// to x, so |x| changes at most at |v_centre - omega perp(centre)|: small while the chain turns
+// about the origin almost rigidly, as it does on the spiral.
+struct Radial {
+    double lo, hi;  // the bench's points lie at distances [lo, hi] from the origin
+    double speed;   // |d|x|/dt| <= speed for every point x of the bench
+};
+Radial radial_extent(const Rect& r, const BenchMotion& m);
+
 // The largest speed of any point of the bench now.
 double max_point_speed(const Rect& r, const BenchMotion& m);
 

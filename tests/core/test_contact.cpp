@@ -96,6 +96,9 @@ TEST(Q2, EveryStepDeclaredSafeIsSafe) {
     Scenario turn;
     turn.path.kind = PathKind::turnaround;
     cases.push_back({"turnaround", turn, -100.0, 100.0});
+    Scenario turn_tight = turn;
+    turn_tight.path.turn_pitch = 1.0;  // the head meets bench 16 on the S-curve's first arc
+    cases.push_back({"turnaround, turn pitch 1.0", turn_tight, -20.0, 20.0});
     for (const Case& c : cases) {
         const Simulation sim(c.s);
         const double to = c.to < 0.0 ? sim.end_time() : c.to;
