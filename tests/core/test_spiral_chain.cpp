@@ -140,6 +140,45 @@ TEST(Chain, NearestRootAgainstDenseScan) {
     }
 }
 
+TEST(Chain, TheChordMemoIsOnlyAGuess) {
+    // Each link solved from the memo of the last one and again from scratch (memo cleared):
+    // both reach the same root, to rounding, on every sample scenario from the start to the
+    // centre. So does a memo with a poor guess, and one left over from another place.
+    int with_memo = 0, links = 0;
+    for (const Scenario& s : sample_scenarios()) {
+        const Simulation sim(s);
+        const auto& sp = static_cast<const Spiral&>(sim.path());
+        for (double t : {0.0, 0.5 * sim.end_time(), sim.end_time()}) {
+            Located cur = sp.at_arc(sim.head_arc(t));
+            for (int i = 0; i + 1 < s.bench.handle_count(); ++i) {
+                const double d = s.bench.link_after(i);
+                const auto next = sp.behind(cur, d);
+                Located plain = cur;
+                plain.memo = {};
+                const auto fresh = sp.behind(plain, d);
+                Located wrong = cur;
+                const double poor = 0.5 * cur.memo.angle + 0.01;
+                wrong.memo = {cur.place.u, d, poor, std::cos(0.5 * poor), std::sin(0.5 * poor), 0.05};
+                const auto misled = sp.behind(wrong, d);
+                Located stale = cur;
+                stale.memo.theta = cur.place.u - 0.1;  // made at another place
+                stale.memo.angle += 0.1;
+                const auto ignored = sp.behind(stale, d);
+                ASSERT_TRUE(next && fresh && misled && ignored);
+                with_memo += cur.memo.chord == d;
+                ++links;
+                const double scale = std::max(1.0, norm(fresh->pos));
+                EXPECT_NEAR(next->place.u, fresh->place.u, 4e-16 * fresh->place.u) << "t " << t << " link " << i;
+                EXPECT_NEAR(distance(next->pos, fresh->pos), 0.0, 1e-15 * scale) << "t " << t << " link " << i;
+                EXPECT_NEAR(misled->place.u, fresh->place.u, 4e-16 * fresh->place.u) << "t " << t << " link " << i;
+                EXPECT_EQ(ignored->place.u, fresh->place.u) << "t " << t << " link " << i;
+                cur = *next;
+            }
+        }
+    }
+    EXPECT_GT(with_memo, 0.9 * links);  // the memo is used, not just carried
+}
+
 TEST(Chain, NearCentreUsesTheGeneralSearch) {
     // A long link on a tight spiral: the chord reaches round past the far side of the centre,
     // where the monotone bracket (0, pi] no longer holds.
