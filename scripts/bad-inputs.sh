@@ -61,6 +61,8 @@ row simulate -o /nonexistent-dir/out.csv
 row simulate -o out.csv.txt
 row collide --pitch 0
 row min-pitch --lo 0.6 --hi 0.5
+row min-pitch --grid 0
+row min-pitch --grid 1e-9
 row solve -o /proc/forbidden
 row simulate --to 1 --scenario bad.toml
 row simulate --to 1 --scenario unknown.toml

@@ -55,6 +55,10 @@ struct MinPitch {
 };
 // Is the run to the boundary collision-free at this pitch? Returns the first contact if not.
 std::optional<Contact> contact_before_boundary(Scenario s, double pitch);
-MinPitch min_pitch(const Scenario& s, double lo, double hi);
+// The first scan's pitch grid, m: feasibility windows narrower than this can slip between two
+// grid points, so `grid` trades time for the narrowest window the scan is sure to see.
+inline constexpr double kDefaultPitchGrid = 2.5e-3;
+inline constexpr int kMaxPitchGridSteps = 100000;  // about 10 minutes of runs on 2 cores
+MinPitch min_pitch(const Scenario& s, double lo, double hi, double grid = kDefaultPitchGrid);
 
 }  // namespace dragon

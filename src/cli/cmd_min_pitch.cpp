@@ -11,7 +11,7 @@ namespace dragon::cli {
 namespace {
 struct MinPitchOptions {
     ScenarioFlags scenario;
-    double lo = 0.35, hi = 0.55;
+    double lo = 0.35, hi = 0.55, grid = kDefaultPitchGrid;
     bool json = false;
 };
 }  // namespace
@@ -23,10 +23,12 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
     opt->scenario.add_to(sub);
     sub->add_option("--lo", opt->lo, "Smallest pitch searched, m (default 0.35)");
     sub->add_option("--hi", opt->hi, "Largest pitch searched, m (default 0.55)");
+    sub->add_option("--grid", opt->grid,
+                    "Pitch spacing of the first scan, m (default 0.0025); windows narrower than this may pass unseen");
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
     reg["min-pitch"] = [opt]() {
         const Scenario s = opt->scenario.resolve();
-        const MinPitch m = min_pitch(s, opt->lo, opt->hi);
+        const MinPitch m = min_pitch(s, opt->lo, opt->hi, opt->grid);
         if (opt->json) {
             std::string iv;
             for (const PitchInterval& i : m.intervals)

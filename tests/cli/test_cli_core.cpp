@@ -98,6 +98,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"simulate -o @OUT.txt", ".txt"},
         BadCase{"collide --pitch 0", "pitch"},
         BadCase{"min-pitch --lo 0.6 --hi 0.5", "range"},
+        BadCase{"min-pitch --grid 0", "--grid 0"},
+        BadCase{"min-pitch --grid nan", "--grid nan"},
+        BadCase{"min-pitch --grid 1e-9", "at most 100000"},
         BadCase{"solve -o /proc/forbidden", "/proc/forbidden"}));
 
 TEST(Cli, MalformedScenarioFileIsRefused) {
