@@ -119,9 +119,10 @@ void first_contact_zoom(const Context& c, const std::string& path) {
     name_at(b, hit.bench_b);
     const Separation sep = separation(a, b);
     s.labels.push_back(label(p, fmt::format("contact: separation {:.1e} m", sep.distance), th.text, 13, 16, 26));
-    // The handles near the contact, numbered.
+    // The handles near the contact, numbered: those well inside the view, so that no number
+    // hides under the title band or runs off the edge.
     for (std::size_t i = 0; i < f.handles.size(); ++i)
-        if (distance(f.handles[i].pos, p) < 0.6 * extent)
+        if (const Vec2 d = f.handles[i].pos - p; std::abs(d.x) < 0.46 * extent && d.y > -0.46 * extent && d.y < 0.43 * extent)
             s.labels.push_back(label(f.handles[i].pos, fmt::format("{}", i), with_alpha(th.text, 0.7), 12, 8, 14));
 
     const int w = c.px(1000), h = c.px(1000);
