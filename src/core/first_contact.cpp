@@ -7,7 +7,9 @@
 // over the step, which holds with a wide margin because the benches' velocities change slowly
 // over a step of at most kMaxTravel of head travel. Pairs within the broad phase's margin M get
 // their own bounds (and second-order ones near grazing passes, checked at the next evaluation);
-// pairs beyond it are bounded group by group (far_pairs_step). Collide-separate-collide windows
+// pairs beyond it are bounded group by group (far_pairs_step); benches or groups on different
+// turns may instead take a bound from their radii about the centre, which neighbouring turns
+// sliding past each other do not shrink (radial_step). Collide-separate-collide windows
 // are therefore never stepped over, unlike one bisection over the whole run; the test
 // Q2.EveryStepDeclaredSafeIsSafe samples inside every step, on runs with such a window. Near
 // the contact a Newton probe on the closest pair brackets the root, which is then refined by
@@ -121,7 +123,7 @@ double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, co
             const Group& gb = groups[b];
             const double closing = ga.speed + gb.speed + std::abs(ga.rate - gb.rate) * std::min(ga.reach, gb.reach);
             const double apart = std::max(margin, norm(ga.centre - gb.centre) - ga.radius - gb.radius);
-            double pair_step = closing > 0.0 ? apart / (kSafety * closing) : INFINITY;
+            const double pair_step = closing > 0.0 ? apart / (kSafety * closing) : INFINITY;
             step = std::min(step, std::max(pair_step, radial_step(ga.radii, gb.radii)));
         }
     }
