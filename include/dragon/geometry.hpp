@@ -39,6 +39,9 @@ struct Rect {
     double half_width = 0;   // across axis
 };
 
+// Centre to corner: the radius of the rectangle's bounding circle.
+inline double half_diagonal(const Rect& r) { return std::sqrt(r.half_length * r.half_length + r.half_width * r.half_width); }
+
 // The four corners, counter-clockwise when axis points right.
 struct Corners {
     Vec2 p[4];

@@ -9,10 +9,6 @@ namespace dragon {
 
 namespace {
 
-double bounding_radius(const Rect& r) {
-    return std::sqrt(r.half_length * r.half_length + r.half_width * r.half_width);
-}
-
 void consider(Clearance& best, const Frame& f, int i, int j) {
     const Rect& a = f.benches[static_cast<size_t>(i)];
     const Rect& b = f.benches[static_cast<size_t>(j)];
@@ -56,7 +52,7 @@ std::vector<std::pair<int, int>> candidate_pairs(const Frame& f, double margin) 
     for (size_t k = 0; k < n; ++k) {
         const int i = order[k].second;
         const Rect& r = f.benches[static_cast<size_t>(i)];
-        rad[k] = bounding_radius(r);
+        rad[k] = half_diagonal(r);
         x[k] = r.centre.x;
         y[k] = r.centre.y;
         lo[k] = x[k] - half_x(r) - 0.5 * margin;

@@ -86,8 +86,8 @@ struct Group {
     Radial radii;   // the members' radii all lie in [lo, hi] and change at most at U_G
 };
 
-double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, const std::vector<Radial>& radial,
-                      double margin) {
+double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, const std::vector<double>& half_diagonals,
+                      const std::vector<Radial>& radial, double margin) {
     const size_t n = f.benches.size();
     std::vector<Group> groups;
     groups.reserve(n / kGroup + 1);
@@ -105,12 +105,11 @@ double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, co
         }
         Group g{0.5 * (lo + hi), 0.0, rated ? rate / rated : 0.0, 0.0, 0.0, {INFINITY, 0.0, 0.0}};
         for (size_t k = g0; k < g1; ++k) {
-            const Rect& r = f.benches[k];
             const BenchMotion& m = motion[k];
-            const double half_diagonal = std::sqrt(r.half_length * r.half_length + r.half_width * r.half_width);
-            g.radius = std::max(g.radius, norm(m.centre - g.centre) + half_diagonal);
-            g.speed = std::max(g.speed, norm(m.v_centre - g.rate * perp(m.centre)) + std::abs(m.omega - g.rate) * half_diagonal);
-            g.reach = std::max(g.reach, norm(m.centre) + half_diagonal);
+            const double diagonal = half_diagonals[k];
+            g.radius = std::max(g.radius, norm(m.centre - g.centre) + diagonal);
+            g.speed = std::max(g.speed, norm(m.v_centre - g.rate * perp(m.centre)) + std::abs(m.omega - g.rate) * diagonal);
+            g.reach = std::max(g.reach, norm(m.centre) + diagonal);
             g.radii = {std::min(g.radii.lo, radial[k].lo), std::max(g.radii.hi, radial[k].hi),
                        std::max(g.radii.speed, radial[k].speed)};
         }
@@ -216,24 +215,23 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
     Approach a{{INFINITY, 0, 0, {}, {}}, INFINITY, 0.0, false};
     if (f.benches.size() < 3) return a;
     const std::vector<BenchMotion> motion = bench_motions(f);
-    // Pairs beyond the margin: bounded group by group (far_pairs_step).
+    // Scratch kept per thread (a search evaluates hundreds of frames).
+    thread_local std::vector<double> gaps, half_diagonals;
     thread_local std::vector<Radial> radial;
+    half_diagonals.resize(f.benches.size());
+    for (size_t k = 0; k < f.benches.size(); ++k) half_diagonals[k] = half_diagonal(f.benches[k]);
     radial_extents(f, motion, radial);
-    const double cap = std::min(max_step, far_pairs_step(f, motion, radial, kMargin));
+    // Pairs beyond the margin: bounded group by group (far_pairs_step).
+    const double cap = std::min(max_step, far_pairs_step(f, motion, half_diagonals, radial, kMargin));
     const auto pairs = candidate_pairs(f, kMargin);
     struct Candidate {
         double first_order;
         double bound;
         size_t k;
     };
-    // Scratch kept per thread (a search evaluates hundreds of frames).
     thread_local std::vector<Candidate> tight;
-    thread_local std::vector<double> gaps, half_diagonal;
     tight.clear();
     gaps.resize(pairs.size());
-    half_diagonal.resize(f.benches.size());
-    for (size_t k = 0; k < f.benches.size(); ++k)
-        half_diagonal[k] = std::sqrt(f.benches[k].half_length * f.benches[k].half_length + f.benches[k].half_width * f.benches[k].half_width);
     double best_gap = INFINITY;
     size_t seed = 0;
     for (size_t k = 0; k < pairs.size(); ++k) {
@@ -255,7 +253,7 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
         const BenchMotion& ma = motion[i];
         const BenchMotion& mb = motion[j];
         const double gap = std::max(g, 0.0);
-        const double bound = norm(mb.at(ma.centre) - ma.v_centre) + std::abs(mb.omega - ma.omega) * half_diagonal[i] +
+        const double bound = norm(mb.at(ma.centre) - ma.v_centre) + std::abs(mb.omega - ma.omega) * half_diagonals[i] +
                              std::abs(mb.omega) * gap;
         // First-order step gap / (kSafety bound), divided out only for the pairs that could set it.
         if (gap < cap * kSafety * bound) {

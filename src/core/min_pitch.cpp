@@ -38,7 +38,6 @@ std::optional<Contact> contact_before_boundary(Scenario s, double pitch) {
 
 namespace {
 
-
 // What one run to the boundary found: feasible, or the first contact (time and pair).
 struct Probe {
     bool feasible = false;
