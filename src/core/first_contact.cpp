@@ -196,6 +196,9 @@ struct Approach {
     double safe_step;  // s: no contact can happen sooner
     double rate;       // d/dt of the closest pair's separation now (negative: closing)
     bool bound_broken; // a near pair's rates changed faster than the last step assumed
+    // s: no pair but the closest one can touch sooner. A bracket for the closest pair's contact
+    // must end by then, or the bisection in it could pass over another pair's brief contact.
+    double others_step;
 };
 
 // One pass over the broad phase's pairs gives the clearance and the safe step.
@@ -212,7 +215,7 @@ struct Approach {
 // `memory` is what the last accepted evaluation saw; this one's goes to `next` (cleared first),
 // for the caller to keep if it accepts the step.
 Approach approach(const Frame& f, double t, double max_step, const Memory& memory, Memory& next, bool check) {
-    Approach a{{INFINITY, 0, 0, {}, {}}, INFINITY, 0.0, false};
+    Approach a{{INFINITY, 0, 0, {}, {}}, INFINITY, 0.0, false, INFINITY};
     if (f.benches.size() < 3) return a;
     const std::vector<BenchMotion> motion = bench_motions(f);
     // Scratch kept per thread (a search evaluates hundreds of frames).
@@ -267,11 +270,18 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
     std::make_heap(tight.begin(), tight.end(), later);
     next.clear();
     double step = cap;
+    // Each pair looked at and the step it allows; every other allows at least `skipped`.
+    thread_local std::vector<std::pair<std::uint64_t, double>> pair_steps;
+    pair_steps.clear();
+    double skipped = cap;
     while (!tight.empty()) {
         std::pop_heap(tight.begin(), tight.end(), later);
         const Candidate c = tight.back();
         tight.pop_back();
-        if (c.first_order >= step) break;  // this pair and the rest cannot lower the step
+        if (c.first_order >= step) {  // this pair and the rest cannot lower the step
+            skipped = std::min(skipped, c.first_order);
+            break;
+        }
         const int ia = pairs[c.k].first - 1, ib = pairs[c.k].second - 1;
         const BenchMotion& ma = motion[static_cast<size_t>(ia)];
         const BenchMotion& mb = motion[static_cast<size_t>(ib)];
@@ -297,11 +307,14 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
             h2 = std::min(h2, second_order_step(gaps8[q].distance, gaps8[q].rate, mem.curvature));
         }
         next.emplace(key, mem);
-        step = std::min(step, std::max(c.first_order, h2));
+        const double pair_step = std::max(c.first_order, h2);
+        pair_steps.push_back({key, pair_step});
+        step = std::min(step, pair_step);
     }
     a.safe_step = step;
     if (pairs.empty()) {
         a.clear = clearance(f, kMargin);
+        a.others_step = step;
         return a;
     }
     // Exact distances only where the projected gap (a lower bound) could still win.
@@ -313,6 +326,12 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
     if (gaps[seed] < INFINITY) exact(seed);
     for (size_t k = 0; k < pairs.size(); ++k)
         if (k != seed && gaps[k] < a.clear.distance) exact(k);
+    const std::uint64_t closest = a.clear.bench_a > 0 ? key_of(std::min(a.clear.bench_a, a.clear.bench_b) - 1,
+                                                                std::max(a.clear.bench_a, a.clear.bench_b) - 1)
+                                                       : ~std::uint64_t{0};
+    a.others_step = skipped;
+    for (const auto& [key, pair_step] : pair_steps)
+        if (key != closest) a.others_step = std::min(a.others_step, pair_step);
     if (a.clear.bench_a > 0 && a.clear.distance > 0.0) {
         // Separation rate of the closest pair: the witness on b moving away from a along the axis.
         const BenchMotion& ma = motion[static_cast<size_t>(a.clear.bench_a - 1)];
@@ -361,10 +380,12 @@ std::optional<Contact> search_range(const Simulation& sim, double t_from, double
         // A pair grazing within rounding of touching, closing too slowly to bound: contact now
         // (also when the step is below the resolution of t itself, late in a slow run).
         if (a.safe_step < time_tol || t + a.safe_step == t) return make_contact(sim, t, steps, time_tol);
-        // Bracket: a Newton probe on the closest pair once it is nearly touching.
+        // Bracket: a Newton probe on the closest pair once it is nearly touching, no farther
+        // than any other pair could touch (the bisection below sees only the clearance's sign,
+        // and would pass over another pair's contact that opens and closes inside its bracket).
         double t_hi = std::numeric_limits<double>::quiet_NaN();
         if (a.clear.distance < kProbeGap && a.rate < 0.0) {
-            const double probe = std::min(t_to, t + 1.5 * a.clear.distance / -a.rate);
+            const double probe = std::min({t_to, t + 1.5 * a.clear.distance / -a.rate, t + a.others_step});
             sim.frame_into(probe, f);
             ++steps;
             if (clearance(f, kMargin).distance <= 0.0) t_hi = probe;

@@ -217,3 +217,24 @@ TEST(Q2, AWidePitchCoilsToTheCentreWithoutContact) {
     EXPECT_FALSE(first_contact(sim, 0.0, sim.end_time()).has_value());
     for (double t = 0.0; t <= sim.end_time(); t += 0.5) ASSERT_GT(clearance(sim.frame(t)).distance, 0.0) << t;
 }
+
+TEST(Q2, AProbeBracketNeverPassesOverAnotherPairsContact) {
+    // Pitch 0.5 m at 2 m/s, searched from 159.06 s: near 166.96 s a pair 2 mm apart and closing
+    // slowly aimed the Newton probe at 171.2 s, where benches 1 and 12 overlap; the bisection in
+    // that bracket then passed over the contact of benches 1 and 15 at 168.26 s, which opens
+    // and closes inside it (found when the search range's end moved and a chunk started at
+    // 159.06 s). The probe now stops where any other pair could touch.
+    Scenario s;
+    s.path.pitch = 0.5;
+    s.head_speed = 2.0;
+    const Simulation sim(s);
+    const auto whole = first_contact(sim, 0.0, 190.0, {.on_step = {}, .threads = 1});
+    const auto late = first_contact(sim, 159.06, 171.29, {.on_step = {}, .threads = 1});
+    ASSERT_TRUE(whole && late);
+    EXPECT_EQ(late->bench_a, 1);
+    EXPECT_EQ(late->bench_b, 15);
+    EXPECT_NEAR(late->time, whole->time, whole->tolerance + late->tolerance);
+    EXPECT_GT(clearance(sim.frame(late->time - 1e-8)).distance, 0.0);
+    // A scan of the bracket agrees: nothing touches before it.
+    for (double t = 159.06; t < late->time - 1e-3; t += 0.01) ASSERT_GT(clearance(sim.frame(t)).distance, 0.0) << t;
+}
