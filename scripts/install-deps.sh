@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
-  libeigen3-dev libfmt-dev libtomlplusplus-dev libcli11-dev libxlsxwriter-dev
+  libeigen3-dev libfmt-dev libtomlplusplus-dev libcli11-dev libxlsxwriter-dev nlohmann-json3-dev
   libcairo2-dev fonts-dejavu-core
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   libgtest-dev libbenchmark-dev

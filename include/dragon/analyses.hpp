@@ -39,6 +39,8 @@ struct ContactSearchOptions {
     StepObserver on_step;
     int threads = 0;  // 0: one per core
 };
+// Both ends must lie within the valid motion (Simulation::valid_range; throws InputError
+// otherwise): clamp `t_to` to valid_range().to to search as far as the dragon can go.
 std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to,
                                      const ContactSearchOptions& options = {});
 
@@ -47,13 +49,36 @@ struct PitchInterval {
     double lo, hi;
     bool feasible;
 };
+// A pitch at which the dragon cannot follow the spiral to the boundary at all.
+struct PitchJam {
+    double pitch;
+    Jam jam;
+};
 struct MinPitch {
-    double pitch;                          // the smallest feasible pitch found
+    // The smallest feasible pitch: where the first feasible interval begins, when that is a
+    // change found inside the range. NaN when the range holds no such change: below_range (the
+    // range's low end is already feasible, so the answer lies at or below it) or above_range
+    // (no pitch in the range is feasible).
+    double pitch;
+    bool below_range = false, above_range = false;
     std::vector<PitchInterval> intervals;  // alternating feasible / infeasible over the range
     double search_lo, search_hi;
+    double grid;                           // the first scan's pitch spacing, m
+    // The largest pitch probed at which the run cannot reach the boundary because the valid
+    // motion ends first (it is infeasible for that reason, not for a collision); none if no
+    // run was cut short.
+    std::optional<PitchJam> jam;
     std::string guarantee;                 // how the search avoids stepping over a window
 };
-// Is the run to the boundary collision-free at this pitch? Returns the first contact if not.
+// The run of the head to the boundary at one pitch: its first contact, else the end of the
+// valid motion if that comes before the boundary. Feasible when neither happens.
+struct BoundaryRun {
+    std::optional<Contact> contact;
+    std::optional<Jam> jam;
+    bool feasible() const { return !contact && !jam; }
+};
+BoundaryRun run_to_boundary(Scenario s, double pitch);
+// The first contact of that run (none also when the run jams first).
 std::optional<Contact> contact_before_boundary(Scenario s, double pitch);
 // The first scan's pitch grid, m: feasibility windows narrower than this can slip between two
 // grid points, so `grid` trades time for the narrowest window the scan is sure to see.

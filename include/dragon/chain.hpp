@@ -2,11 +2,14 @@
 #pragma once
 
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "dragon/geometry.hpp"
 #include "dragon/path.hpp"
 #include "dragon/scenario.hpp"
+#include "dragon/valid_motion.hpp"
 
 namespace dragon {
 
@@ -35,7 +38,15 @@ void solve_chain(const Path& path, const BenchSpec& spec, double head_arc, doubl
 // The rectangle of bench k (1..N) from its two handles.
 Rect bench_rect(const BenchSpec& spec, int bench, Vec2 front, Vec2 rear);
 
+// The stretch of time over which the dragon follows its path (dragon/valid_motion.hpp).
+struct ValidRange {
+    double from = 0.0, to = 0.0;       // s: the motion is continuous on [from, to]
+    std::optional<Jam> before, after;  // what ends it at each side; nullopt: the path's end, or never
+};
+
 // A scenario made runnable: its path, and the head's arc position as a function of time.
+// The motion is anchored at t = 0: it is valid from there on, forwards and backwards, until a
+// handle would have to jump. Frames are refused outside that range.
 class Simulation {
 public:
     explicit Simulation(const Scenario& s);
@@ -56,14 +67,41 @@ public:
     // but far out its points lose precision).
     void require_on_path(double t, const char* what) const;
 
+    // The whole valid range: searched once, on first use (a few milliseconds), then kept (copies
+    // of a Simulation share it).
+    ValidRange valid_range() const;
+    // The jam met between t = 0 and t (on either side of 0), if any. Searches only as far as t
+    // needs, and remembers how far it has looked.
+    std::optional<Jam> jam_before(double t) const;
+    // require_on_path, and throws InputError naming the jam if t lies past one.
+    void require_valid(double t, const char* what) const;
+    // The latest time the motion is valid: valid_range().to.
+    double valid_end() const { return valid_range().to; }
+    // [t0, t1] cut to the valid motion, and the jam that cut it (the later end's, if both did).
+    // Throws InputError (naming from_what or to_what) when an end lies off the path or the
+    // range holds no valid moment.
+    struct Span {
+        double from, to;
+        std::optional<Jam> jam;
+    };
+    Span clip_to_valid(double t0, double t1, const char* from_what, const char* to_what) const;
+
+    // The chain at time t; throws InputError unless t is within the valid range (require_valid).
     Frame frame(double t) const;
     void frame_into(double t, Frame& out) const;
 
 private:
+    struct Validity;  // what the searches have found so far, shared by copies
+    std::optional<Jam> jam_toward(double t, bool whole) const;
+
     Scenario scenario_;
     std::shared_ptr<const Path> path_;
     double start_arc_ = 0.0;
     double entry_length_ = 0.0;  // turnaround: arc length from the centre to where the turn starts
+    std::shared_ptr<Validity> validity_;
 };
+
+// One line for a message: what happens to which handle at the jam.
+std::string describe(const Jam& j);
 
 }  // namespace dragon

@@ -7,8 +7,10 @@
 // of travel; the handles of the chain sit at smaller s than the head.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "dragon/geometry.hpp"
 
@@ -53,6 +55,24 @@ public:
     virtual double s_max() const = 0;  // may be +infinity
     // Signed curvature at a place (positive when the path turns counter-clockwise).
     virtual double curvature(Place p) const = 0;
+    // Total absolute turning of the tangent from `rear` to `front` (rear not ahead of front),
+    // rad: the integral of |curvature| over the arc between them.
+    virtual double turning(Place rear, Place front) const = 0;
+    // Where the path's curvature stays small, for certifying whole stretches of motion at once.
+    // curvature_bounded_before(k): the largest arc position s such that |curvature| <= k at every
+    // place at or behind s (+infinity if everywhere; -infinity if nowhere). Requires k > 0.
+    // curvature_bounded_after(k): the smallest s such that |curvature| <= k at every place at or
+    // ahead of s (-infinity if everywhere; +infinity if nowhere).
+    virtual double curvature_bounded_before(double k) const = 0;
+    virtual double curvature_bounded_after(double k) const = 0;
+    // The pieces in travel order (Place::piece): how many, the arc position where piece k begins
+    // (-infinity for the first), and the least and largest |curvature| on it.
+    virtual int piece_count() const { return 1; }
+    virtual double piece_begin(int piece) const = 0;
+    // The piece's parameter u where it begins and where it ends, in travel order (infinite for
+    // an endless piece).
+    virtual std::pair<double, double> piece_span(int piece) const = 0;
+    virtual std::pair<double, double> curvature_span(int piece) const = 0;
 
     // The nearest place behind `from` (largest s' < s(from)) whose straight-line distance
     // from from.pos is exactly `chord`; nullopt when the path ends first.
@@ -75,7 +95,21 @@ public:
     double s_min() const override;
     double s_max() const override { return 0.0; }
     double curvature(Place p) const override;
+    double turning(Place rear, Place front) const override;
+    double curvature_bounded_before(double k) const override;
+    double curvature_bounded_after(double k) const override;
+    double piece_begin(int) const override { return s_min(); }
+    std::pair<double, double> piece_span(int) const override { return {INFINITY, 0.0}; }
+    std::pair<double, double> curvature_span(int) const override { return {0.0, 2.0 / b_}; }
     std::optional<Located> behind(const Located& from, double chord) const override;
+
+    // Curvature magnitude at theta, and the theta where it equals k (it falls as theta grows:
+    // 2 / b at the centre, about 1 / (b theta) far out); 0 when k >= 2 / b.
+    double curvature_at(double theta) const;
+    double theta_of_curvature(double k) const;
+    // The tangent's direction angle at theta up to a constant, rad: theta + atan(theta). It grows
+    // with theta, and its change between two places is the turning between them.
+    static double tangent_angle(double theta) { return theta + std::atan(theta); }
 
     // Arc length from the centre to theta, and its inverse (safeguarded Newton).
     double length_to(double theta) const;

@@ -11,6 +11,7 @@
 #include "dragon/geometry.hpp"
 #include "dragon/path.hpp"
 #include "dragon/scenario.hpp"
+#include "dragon/valid_motion.hpp"
 
 namespace dragon {
 
@@ -61,6 +62,13 @@ public:
     double s_min() const override;
     double s_max() const override;
     double curvature(Place p) const override;
+    double turning(Place rear, Place front) const override;
+    double curvature_bounded_before(double k) const override;
+    double curvature_bounded_after(double k) const override;
+    int piece_count() const override { return 4; }
+    double piece_begin(int piece) const override { return join_arc(piece); }
+    std::pair<double, double> piece_span(int piece) const override { return piece_range(piece); }
+    std::pair<double, double> curvature_span(int piece) const override;
     std::optional<Located> behind(const Located& from, double chord) const override;
 
 private:
@@ -85,6 +93,11 @@ struct TurnStudyRow {
     // boundary to the entry, the S-curve, and the coil-out spiral back out to the boundary, m.
     double inside_length;
     double max_radius;      // m; at most the turning-space radius for a turn that fits inside
+    // Can the dragon follow this S-curve the whole way through, from far out on the coil-in
+    // spiral to far out on the coil-out one? If not, where its valid motion ends (times with
+    // t = 0 where the head enters the S-curve). Filled by study_turnaround / followability.
+    std::optional<Jam> jam;
+    bool followable() const { return !jam; }
 };
 // Length against the radius ratio, entry at the turning-space boundary.
 std::vector<TurnStudyRow> length_vs_ratio(double pitch, double turn_radius,
@@ -93,17 +106,23 @@ std::vector<TurnStudyRow> length_vs_ratio(double pitch, double turn_radius,
 std::vector<TurnStudyRow> length_vs_entry_radius(double pitch, double turn_radius, double ratio,
                                                  const std::vector<double>& entry_radii);
 
+// Fills each row's jam for this dragon: the S-curve of that row (pitch, its entry radius and
+// ratio) searched the whole way through (find_jam).
+void followability(std::vector<TurnStudyRow>& rows, double pitch, const BenchSpec& bench, double head_speed);
+
 struct TurnaroundStudy {
     SCurve design;
+    std::optional<Jam> design_jam;  // where the valid motion ends on the scenario's own S-curve
     std::vector<TurnStudyRow> by_ratio;
     std::vector<TurnStudyRow> by_entry;
     double ratio_spread;    // largest minus smallest S-curve length over by_ratio, m
     std::string conclusion; // one paragraph answering Q4's question from the numbers
 };
-// The default study: ratios 0.5..5 and entry radii from the boundary in to half of it.
+// The default study: ratios 0.25..10 and entry radii from the boundary in to half of it, each
+// row with whether this dragon can follow it.
 TurnaroundStudy study_turnaround(const Scenario& s);
 // The study as CSV (header study,ratio,entry_radius,r1,r2,angle,s_curve_length,inside_length,
-// max_radius), written all-or-nothing.
+// max_radius,followable,jam_time,jam_handle,jam_kind), written all-or-nothing.
 void write_study_csv(const TurnaroundStudy& study, const std::string& path);
 
 // Is the turnaround collision-free, and how close do benches come? The smallest clearance
@@ -114,18 +133,22 @@ struct RunClearance {
                           // within the scan's cutoff (0.5 m), the cutoff, with bench_a = bench_b = 0
     double time;          // when, s
     int bench_a, bench_b; // the closest pair then (1..N); 0 when none came within the cutoff
-    bool collision_free;  // no contact anywhere in [t0, t1] (first_contact found none)
+    bool collision_free;  // no contact anywhere in [from, to] (first_contact found none)
     double scan_step;     // s
     int evaluations;      // frames whose clearance was computed
+    // The range looked at, s: [t0, t1] cut to the valid motion, and the jam that cut it.
+    double from = 0.0, to = 0.0;
+    std::optional<Jam> jam;
 };
+// Over [t0, t1] cut to the valid motion (Simulation::clip_to_valid).
 RunClearance min_clearance(const Scenario& s, double t0 = -100.0, double t1 = 100.0);
 
 // Q5: the largest head speed with every handle at or under `limit`. The speed ratio
 // (largest handle speed over the head's) does not depend on the head speed, so it is maximised
 // over the head's arc position once; the answer is limit / ratio.
 struct MaxSpeed {
-    double max_head_speed;
-    double ratio;       // largest handle speed / head speed over the range
+    double max_head_speed;  // 0 when `unbounded`
+    double ratio;       // largest handle speed (its magnitude) / head speed over the range; +inf when unbounded
     int handle;         // the handle reaching it (0..N); the first of `tied` when several do
     std::vector<int> tied;  // every handle within 1e-12 (relative) of the largest speed then
                             // (handles on one arc move at the same speed)
@@ -134,11 +157,18 @@ struct MaxSpeed {
     double scan_step;   // coarse scan step in time, s
     int candidates;     // local maxima of the coarse scan refined
     int evaluations;    // chains solved
+    // The range searched, s: [t0, t1] cut to the valid motion (Simulation::valid_range), and the
+    // jam that cut it, if one did. When that jam is a vanishing root, the rear handle's speed
+    // grows without bound as it nears: no head speed keeps every handle under any limit.
+    double from = 0.0, to = 0.0;
+    std::optional<Jam> jam;
+    bool unbounded = false;
 };
 // Searches t in [t0, t1] on the scenario's timeline (the scenario's kind is taken as turnaround).
+// Speeds are signed along the path; the limit applies to their magnitude.
 MaxSpeed max_head_speed(const Scenario& s, double limit, double t0 = -100.0, double t1 = 100.0);
 
-// The largest handle speed over the head speed at one head arc position, and which handle.
+// The largest handle speed (magnitude) over the head speed at one head arc position, and which handle.
 struct SpeedRatio {
     double ratio;
     int handle;

@@ -1,4 +1,6 @@
 // dragon collide (Q2): the first moment two benches touch.
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
@@ -19,6 +21,13 @@ struct CollideOptions {
     bool json = false;
     std::string out;
 };
+
+// With no contact the output file still answers: the table with its header and no rows, so
+// that an older file from another run is never left looking like this one's answer.
+void write_no_contact(const std::string& path) {
+    if (extension_of(path) == ".xlsx") write_result2_xlsx(Frame{}, path);
+    else write_table({}, path);
+}
 }  // namespace
 
 void register_collide(CLI::App& app, Registry& reg) {
@@ -26,23 +35,60 @@ void register_collide(CLI::App& app, Registry& reg) {
     CLI::App* sub = app.add_subcommand("collide", "Q2: the first moment two benches touch, to 1e-9 s");
     opt->scenario.add_to(sub);
     sub->add_option("--from", opt->from, "Search from this time, s (default 0)");
-    sub->add_option("--to", opt->to, "Search up to this time, s (default: until the head reaches the centre)");
+    sub->add_option("--to", opt->to,
+                    "Search up to this time, s (default: as far as the dragon can follow its path, the spiral's "
+                    "centre or the end of its valid motion; needed on the turnaround path if that never ends)");
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
-    sub->add_option("-o,--out", opt->out, "Also write the moment's handles (.xlsx: result2 layout, .csv, .json)");
+    sub->add_option("-o,--out", opt->out,
+                    "Also write the moment's handles (.xlsx: result2 layout, .csv, .json); with no contact, "
+                    "the table's header and no rows");
     reg["collide"] = [opt]() {
         const Scenario s = opt->scenario.resolve();
+        if (!std::isfinite(opt->from))
+            throw InputError(fmt::format("--from {} is not allowed: give a finite time in seconds", opt->from));
+        if (opt->to && !std::isfinite(*opt->to))
+            throw InputError(fmt::format("--to {} is not allowed: give a finite time in seconds, or leave --to out "
+                                         "to search as far as the dragon can follow its path", *opt->to));
+        if (opt->to && !(*opt->to > opt->from))
+            throw InputError(fmt::format("--to {} is not allowed: it must be after --from {}", *opt->to, opt->from));
+        if (!opt->out.empty()) {
+            const std::string ext = extension_of(opt->out);
+            if (ext != ".csv" && ext != ".json" && ext != ".xlsx")
+                throw InputError(fmt::format("--out {} has extension '{}': use .csv, .json or .xlsx", opt->out, ext));
+            AtomicFile probe(opt->out);  // fail on an unwritable path before any work
+        }
         const Simulation sim(s);
-        double to = opt->to.value_or(sim.end_time());
-        if (!std::isfinite(to))
-            throw InputError("--to is needed on the turnaround path (it has no end)");
-        if (!opt->out.empty()) AtomicFile probe(opt->out);
+        double to = 0.0;
+        std::optional<Jam> jam;  // the end of the valid motion, if it cuts the search short
+        if (opt->to) {
+            const Simulation::Span span = sim.clip_to_valid(opt->from, *opt->to, "--from", "--to");
+            to = span.to;
+            jam = span.jam;
+        } else {
+            const ValidRange valid = sim.valid_range();
+            if (!std::isfinite(valid.to))
+                throw InputError("--to is needed here: on the turnaround path the dragon's motion never ends");
+            sim.require_valid(opt->from, "--from");
+            to = valid.to;
+            jam = valid.after;
+            if (!(to > opt->from))
+                throw InputError(fmt::format("--from {} is not allowed: the search would be empty, {}", opt->from,
+                                             jam ? jam_sentence(*jam) : "the head reaches the spiral's centre then"));
+        }
         const std::optional<Contact> c = first_contact_after(sim, opt->from, to);
+        if (c) jam.reset();  // the contact comes first: the range was not cut short before it
         if (!c) {
-            if (opt->json)
-                fmt::print("{{\"time\": null, \"benches\": null, \"head_radius\": null, \"from\": {}, \"to\": {}}}\n",
-                           json_number(opt->from), json_number(to));
-            else
-                fmt::print("no collision between t = {} s and t = {} s\n", format_time(opt->from), format_time(to));
+            if (!opt->out.empty()) write_no_contact(opt->out);
+            if (opt->json) {
+                print_json({{"time", nullptr}, {"benches", nullptr}, {"head_radius", nullptr}, {"from", opt->from},
+                            {"to", to}, {"jam", jam_json(jam)}});
+            } else {
+                fmt::print("no collision between t = {} s and t = {} s\n", format_time(opt->from),
+                           jam ? format_resolved(to, jam->tolerance) : format_time(to));
+                if (jam) fmt::print("the search ends there: {}\n", jam_sentence(*jam));
+            }
+            if (!opt->out.empty())
+                fmt::print(stderr, "no contact: wrote {} with the table's header and no rows\n", opt->out);
             return 0;
         }
         if (!opt->out.empty()) {
@@ -50,11 +96,17 @@ void register_collide(CLI::App& app, Registry& reg) {
             else write_table({c->frame}, opt->out);
         }
         if (opt->json) {
-            fmt::print("{{\"time\": {}, \"benches\": [{}, {}], \"head_radius\": {}, \"point\": [{}, {}], "
-                       "\"tolerance\": {}, \"evaluations\": {}, \"handles\": {}}}\n",
-                       json_number(c->time), c->bench_a, c->bench_b, json_number(c->head_radius),
-                       json_number(c->point.x), json_number(c->point.y), json_number(c->tolerance), c->steps,
-                       handles_json(c->frame));
+            Json handles = Json::array();
+            for (const Handle& h : c->frame.handles)
+                handles.push_back({{"x", round6(h.pos.x)}, {"y", round6(h.pos.y)}, {"speed", round6(h.speed)}});
+            print_json({{"time", c->time},
+                        {"benches", {c->bench_a, c->bench_b}},
+                        {"head_radius", c->head_radius},
+                        {"point", {c->point.x, c->point.y}},
+                        {"tolerance", c->tolerance},
+                        {"evaluations", c->steps},
+                        {"jam", nullptr},
+                        {"handles", handles}});
         } else {
             fmt::print("first contact at t = {} s: bench {} touches bench {}; head radius {:.6f} m\n",
                        format_resolved(c->time, c->tolerance), c->bench_a, c->bench_b, c->head_radius);

@@ -6,10 +6,12 @@
 #include "cli/commands.hpp"
 #include "cli/contact_search.hpp"
 #include "cli/render_flags.hpp"
+#include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/render.hpp"
+#include "dragon/tables.hpp"
 #include "render/figure_kit.hpp"
 
 namespace dragon::cli {
@@ -23,16 +25,17 @@ struct RenderOptions {
     std::string out;
 };
 
-// The first contact on this scenario's path: the plain spiral from t = 0 to its centre, the
-// turnaround from -100 s to 100 s (the contest's window).
+// The first contact on this scenario's path: the plain spiral from t = 0 as far as the dragon
+// can follow it, the turnaround from -100 s to 100 s (the contest's window, cut the same way).
 Contact find_contact(const Simulation& sim) {
     const bool turn = sim.scenario().path.kind == PathKind::turnaround;
-    const double t0 = turn ? -100.0 : 0.0;
-    const double t1 = turn ? 100.0 : sim.end_time();
-    auto c = first_contact_after(sim, t0, t1);
+    const Simulation::Span span = turn ? sim.clip_to_valid(-100.0, 100.0, "--from", "--to")
+                                       : sim.clip_to_valid(0.0, sim.end_time(), "--from", "--to");
+    auto c = first_contact_after(sim, span.from, span.to);
     if (!c)
-        throw InputError(fmt::format("--collision: no two benches touch between {} s and {} s on this "
-                                     "scenario; use --time instead", t0, t1));
+        throw InputError(fmt::format("--collision: no two benches touch between {} s and {} s on this scenario{}; "
+                                     "use --time instead", format_time(span.from), format_time(span.to),
+                                     span.jam ? " (" + jam_sentence(*span.jam) + ")" : ""));
     return *c;
 }
 }  // namespace
@@ -69,7 +72,7 @@ void register_render(CLI::App& app, Registry& reg) {
                                             c.bench_a, c.bench_b);
             if (opt->look.zoom()) so.camera = Camera::at(at, *opt->look.zoom());
         } else {
-            sim.require_on_path(*opt->time, "--time");
+            sim.require_valid(*opt->time, "--time");
             frame = sim.frame(*opt->time);
         }
         const Scene scene = make_scene(sim, frame, so);

@@ -12,11 +12,13 @@
 
 #include "cli/commands.hpp"
 #include "cli/contact_search.hpp"
+#include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/path.hpp"
 #include "dragon/render.hpp"
+#include "dragon/tables.hpp"
 #include "dragon/video.hpp"
 
 namespace dragon::cli {
@@ -83,13 +85,18 @@ End resolve_to(const std::string& to, const Simulation& sim, double from) {
     const bool turn = sim.scenario().path.kind == PathKind::turnaround;
     const std::string what = to.empty() ? (turn ? "100" : "collision") : to;
     if (what == "collision") {
-        // The turnaround path never ends: look an hour ahead, far past any run the contest asks about.
+        // As far as the dragon can follow its path; where that never ends (the turnaround
+        // path, followed for ever), an hour ahead, far past any run the contest asks about.
         constexpr double endless_search = 3600.0;  // s
-        const double until = std::isfinite(sim.end_time()) ? sim.end_time() : from + endless_search;
+        sim.require_valid(from, "--from");
+        const double end = sim.valid_end();
+        const double until = std::isfinite(end) ? end : from + endless_search;
         const std::optional<Contact> c = first_contact_after(sim, from, until);
-        if (!c)
-            throw InputError(fmt::format("--to collision: no two benches touch between t = {} s and {:.6f} s",
-                                         from, until));
+        if (!c) {
+            const std::optional<Jam> jam = sim.valid_range().after;
+            throw InputError(fmt::format("--to collision: no two benches touch between t = {} s and {} s{}", from,
+                                         format_time(until), jam ? " (" + jam_sentence(*jam) + ")" : ""));
+        }
         return {c->time, CollisionMark{c->bench_a, c->bench_b, c->point}};
     }
     if (what == "boundary") {
@@ -103,9 +110,11 @@ End resolve_to(const std::string& to, const Simulation& sim, double from) {
         return {t, std::nullopt};
     }
     if (what == "end") {
-        if (!std::isfinite(sim.end_time()))
-            throw InputError("--to end is not allowed on the turnaround path: it has no end; give a time");
-        return {sim.end_time(), std::nullopt};
+        // The end of the dragon's valid motion: the spiral's centre, or where a handle would jump.
+        const double end = sim.valid_end();
+        if (!std::isfinite(end))
+            throw InputError("--to end is not allowed here: the dragon follows this path for ever; give a time");
+        return {end, std::nullopt};
     }
     try {
         size_t used = 0;
@@ -151,7 +160,8 @@ void register_video(CLI::App& app, Registry& reg) {
     sub->add_option("--from", opt->from, "First moment, simulated s (default 0; -100 on the turnaround path)");
     sub->add_option("--to", opt->to,
                     "Last moment: simulated s, or collision (first contact, marked), boundary (head at the "
-                    "turning space), end (spiral's centre). Default: collision; 100 on the turnaround path");
+                    "turning space), end (the end of the valid motion: the spiral's centre, or where a handle "
+                    "would have to jump). Default: collision; 100 on the turnaround path");
     sub->add_option("--fps", opt->fps, "Frames per second of video (default 30)");
     sub->add_option("--speedup", opt->speedup, "Simulated seconds per second of video (default 10)");
     sub->add_option("--hold", opt->hold, "Seconds the last moment stays on screen (default 1 at a collision, else 0)");

@@ -62,6 +62,25 @@ std::string format_resolved(double v, double resolution) {
     return fmt::format("{:.{}f}", v, decimals);
 }
 
+void print_json(const Json& answer) {
+    // NaN and infinities are written as null (nlohmann's choice too, made explicit).
+    fmt::print("{}\n", answer.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
+}
+
+Json jam_json(const std::optional<Jam>& j) {
+    if (!j) return nullptr;
+    return Json{{"time", j->time},
+                {"handle", j->handle},
+                {"kind", to_string(j->kind)},
+                {"point", {j->point.x, j->point.y}},
+                {"tolerance", j->tolerance}};
+}
+
+std::string jam_sentence(const Jam& j, bool ahead) {
+    return fmt::format("the dragon can follow its path only {} t = {} s, where {}", ahead ? "until" : "from",
+                       format_resolved(j.time, j.tolerance), describe(j));
+}
+
 std::string json_number(double v) {
     if (!std::isfinite(v)) return "null";
     return fmt::format("{}", v);

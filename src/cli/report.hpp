@@ -1,8 +1,11 @@
 // Paper-style summary tables on stdout, and JSON fragments for --json answers.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "dragon/analyses.hpp"
 
@@ -24,5 +27,15 @@ std::string json_number(double v);
 
 // v with as many decimals as `resolution` (how closely v is known) supports: 9 for 1e-10.
 std::string format_resolved(double v, double resolution);
+
+// --json answers: one object, keys in the order written, printed on one line.
+using Json = nlohmann::ordered_json;
+void print_json(const Json& answer);
+// The end of the valid motion as an answer's "jam" key: {"time", "handle", "kind", "point",
+// "tolerance"}, or null.
+Json jam_json(const std::optional<Jam>& j);
+// "the dragon can follow its path only until t = 432.917924228 s, where handle 1 can no longer
+// follow handle 0: ..." (from instead of until for a jam met going back).
+std::string jam_sentence(const Jam& j, bool ahead = true);
 
 }  // namespace dragon::cli

@@ -1,10 +1,14 @@
 #include "dragon/chain.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <mutex>
 
 #include <fmt/format.h>
 
+#include "core/chain_front.hpp"
 #include "core/make_path.hpp"
 
 namespace dragon {
@@ -14,12 +18,12 @@ Rect bench_rect(const BenchSpec& spec, int bench, Vec2 front, Vec2 rear) {
     return {0.5 * (front + rear), axis, 0.5 * spec.board_length(bench), 0.5 * spec.width};
 }
 
-void solve_chain(const Path& path, const BenchSpec& spec, double head_arc, double head_speed,
-                 Frame& out) {
-    const int n = spec.handle_count();
+void solve_chain_front(const Path& path, const BenchSpec& spec, double head_arc, double head_speed, int count,
+                       Frame& out) {
+    const int n = std::min(count, spec.handle_count());
     out.head_arc = head_arc;
     out.handles.resize(static_cast<size_t>(n));
-    out.benches.resize(static_cast<size_t>(spec.bench_count));
+    out.benches.resize(static_cast<size_t>(n - 1));
 
     Located cur = path.at_arc(head_arc);
     out.handles[0] = {cur.pos, cur.tangent, head_speed, cur.place};
@@ -43,11 +47,28 @@ void solve_chain(const Path& path, const BenchSpec& spec, double head_arc, doubl
     }
 }
 
+void solve_chain(const Path& path, const BenchSpec& spec, double head_arc, double head_speed,
+                 Frame& out) {
+    solve_chain_front(path, spec, head_arc, head_speed, spec.handle_count(), out);
+}
+
+// What the jam searches have found: the motion is known continuous while the head's arc position
+// is in [behind, ahead]; a side is final once searched to its end (then its jam, if any, ends it).
+// The known bounds are read without the lock on every frame; searches extend them under it.
+struct Simulation::Validity {
+    std::mutex lock;
+    std::atomic<double> ahead, behind;
+    std::optional<Jam> jam_ahead, jam_behind;
+    bool ahead_final = false, behind_final = false;
+    explicit Validity(double start) : ahead(start), behind(start) {}
+};
+
 Simulation::Simulation(const Scenario& s) : scenario_(s) {
     validate(s);
     PathBuild built = make_path(s);
     path_ = std::move(built.path);
     start_arc_ = built.start_arc;
+    validity_ = std::make_shared<Validity>(start_arc_);
     if (s.path.kind == PathKind::turnaround) {
         const Spiral coil(s.path.turn_pitch);
         entry_length_ = coil.length_to(s.path.turn_radius / coil.b());
@@ -86,8 +107,87 @@ void Simulation::require_on_path(double t, const char* what) const {
     }
 }
 
+// Searches the side of t = 0 that t is on, from where the last search stopped to t (or to the
+// side's end when `whole`), and returns the jam on it if t lies past it (any jam when `whole`).
+std::optional<Jam> Simulation::jam_toward(double t, bool whole) const {
+    Validity& v = *validity_;
+    const bool forward = t >= 0.0;
+    const double s = head_arc(t);
+    if (!whole && (forward ? s <= v.ahead.load() : s >= v.behind.load())) return std::nullopt;
+    const std::lock_guard<std::mutex> hold(v.lock);
+    std::atomic<double>& known = forward ? v.ahead : v.behind;
+    std::optional<Jam>& jam = forward ? v.jam_ahead : v.jam_behind;
+    bool& final = forward ? v.ahead_final : v.behind_final;
+    const bool covered = forward ? s <= known.load() : s >= known.load();
+    if (!final && (whole || !covered)) {
+        const double target = whole ? (forward ? end_time() : -std::numeric_limits<double>::infinity()) : t;
+        const double from = (known.load() - start_arc_) / scenario_.head_speed;
+        jam = find_jam(*path_, scenario_.bench, start_arc_, scenario_.head_speed, from, target);
+        if (jam) {
+            known = jam->head_arc;
+            final = true;
+        } else {
+            known = whole ? (forward ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity())
+                          : s;
+            final = whole;
+        }
+    }
+    // Judged in time: valid_range().to is the jam's time, and frame(valid_range().to) must work
+    // however t -> arc rounds.
+    if (jam && (whole || (forward ? t > jam->time : t < jam->time))) return jam;
+    return std::nullopt;
+}
+
+ValidRange Simulation::valid_range() const {
+    ValidRange r;
+    r.after = jam_toward(std::numeric_limits<double>::infinity(), true);
+    r.before = jam_toward(-std::numeric_limits<double>::infinity(), true);
+    r.to = r.after ? r.after->time : end_time();
+    r.from = r.before ? r.before->time : -std::numeric_limits<double>::infinity();
+    return r;
+}
+
+std::optional<Jam> Simulation::jam_before(double t) const { return jam_toward(t, false); }
+
+void Simulation::require_valid(double t, const char* what) const {
+    if (!std::isfinite(t)) require_on_path(t, what);
+    // The jam first: past the spiral's centre the dragon has stopped following its path long
+    // before, and that is the limit worth naming.
+    const double on_path = std::clamp(t, -std::numeric_limits<double>::max(), end_time());
+    if (const std::optional<Jam> j = jam_before(on_path)) {
+        throw InputError(fmt::format("{} {} is not allowed: the dragon can follow its path only {} t = {:.9f} s, "
+                                     "where {}", what, t, t >= 0.0 ? "until" : "from", j->time, describe(*j)));
+    }
+    require_on_path(t, what);
+}
+
+Simulation::Span Simulation::clip_to_valid(double t0, double t1, const char* from_what, const char* to_what) const {
+    // A range starting past a jam (or ending before one, behind t = 0) has nothing valid in it.
+    if (t0 >= 0.0) require_valid(t0, from_what);
+    if (t1 <= 0.0) require_valid(t1, to_what);
+    Span span{t0, t1, std::nullopt};
+    if (t0 < 0.0) {
+        if (const std::optional<Jam> j = jam_before(t0)) span.from = j->time, span.jam = j;
+    }
+    if (t1 > 0.0) {
+        if (const std::optional<Jam> j = jam_before(t1)) span.to = j->time, span.jam = j;
+    }
+    require_on_path(span.from, from_what);
+    require_on_path(span.to, to_what);
+    return span;
+}
+
+std::string describe(const Jam& j) {
+    const int h = j.handle;
+    if (j.kind == JamKind::root_vanishes)
+        return fmt::format("handle {} can no longer follow handle {}: the path at handle {} turns square to "
+                           "their link, so its speed has no bound", h, h - 1, h);
+    return fmt::format("handle {} would jump to a nearer point: the path between handles {} and {} swings "
+                       "back out to their link's length", h, h - 1, h);
+}
+
 void Simulation::frame_into(double t, Frame& out) const {
-    require_on_path(t, "time");
+    require_valid(t, "time");
     out.time = t;
     solve_chain(*path_, scenario_.bench, head_arc(t), scenario_.head_speed, out);
 }

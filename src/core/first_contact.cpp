@@ -437,8 +437,10 @@ std::optional<Contact> search_range(const Simulation& sim, double t_from, double
 // on how the threads were scheduled.
 std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to,
                                      const ContactSearchOptions& options) {
-    sim.require_on_path(t_from, "--from");
-    sim.require_on_path(t_to, "--to");
+    // Both ends within the valid motion (the range between them then is too); searched here,
+    // once, so that the frames below find it known.
+    sim.require_valid(t_from, "--from");
+    sim.require_valid(t_to, "--to");
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     const size_t threads = options.on_step ? 1 : options.threads > 0 ? static_cast<size_t>(options.threads) : cores;
     auto never = [] { return false; };

@@ -1,6 +1,7 @@
 // Q5: the largest head speed that keeps every handle at or under a speed limit.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <fmt/format.h>
@@ -37,9 +38,10 @@ public:
     SpeedRatio operator()(double s) {
         ++evaluations;
         solve_chain(path_, spec_, s, 1.0, frame_);
-        SpeedRatio best{frame_.handles[0].speed, 0};
+        // Speeds are signed along the path (a handle may back up); the limit is on their size.
+        SpeedRatio best{std::abs(frame_.handles[0].speed), 0};
         for (size_t i = 1; i < frame_.handles.size(); ++i)
-            if (frame_.handles[i].speed > best.ratio) best = {frame_.handles[i].speed, static_cast<int>(i)};
+            if (std::abs(frame_.handles[i].speed) > best.ratio) best = {std::abs(frame_.handles[i].speed), static_cast<int>(i)};
         return best;
     }
     int evaluations = 0;
@@ -83,13 +85,31 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, doubl
                                      "non-empty", t0, t1));
     Scenario s = scenario;
     s.path.kind = PathKind::turnaround;
-    validate(s);
-    const PathBuild built = make_path(s);
-    RatioProbe probe(*built.path, s.bench);
+    const Simulation sim(s);
+    const Path& path = sim.path();
+    RatioProbe probe(path, s.bench);
+    MaxSpeed out{};
+    // Only the valid motion counts: past its end the speeds are those of a teleporting dragon.
+    const Simulation::Span span = sim.clip_to_valid(t0, t1, "--from", "--to");
+    out.jam = span.jam;
+    out.from = t0 = span.from;
+    out.to = t1 = span.to;
+    const std::optional<Jam>& ahead = span.jam;
+    if (ahead && ahead->time == t1 && ahead->kind == JamKind::root_vanishes) {
+        // The rear handle's speed has no bound as the root vanishes: no head speed will do.
+        out.unbounded = true;
+        out.ratio = std::numeric_limits<double>::infinity();
+        out.max_head_speed = 0.0;
+        out.handle = ahead->handle;
+        out.tied = {ahead->handle};
+        out.time = ahead->time;
+        out.head_arc = ahead->head_arc;
+        return out;
+    }
 
     // Work in head arc position: the ratio depends on where the chain is, not how fast it goes.
     const double v = s.head_speed;
-    const double s0 = built.start_arc + v * t0, s1 = built.start_arc + v * t1;
+    const double s0 = sim.head_arc(t0), s1 = sim.head_arc(t1);
     double shortest = s.bench.link_length(1);
     if (s.bench.bench_count > 1) shortest = std::min(shortest, s.bench.link_length(2));
     const double samples = std::ceil((s1 - s0) * kSamplesPerLink / shortest);
@@ -112,7 +132,6 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, doubl
     for (double r : rho) best_coarse = std::max(best_coarse, r);
     const double reach = 2.0 * slope * ds;
 
-    MaxSpeed out{};
     out.ratio = -1.0;
     out.scan_step = ds / v;
     for (int k = 0; k <= steps; ++k) {
@@ -132,12 +151,12 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, doubl
     }
     // Handles on one arc all move at the same speed: report every one that ties, and the first.
     Frame f;
-    solve_chain(*built.path, s.bench, out.head_arc, 1.0, f);
+    solve_chain(path, s.bench, out.head_arc, 1.0, f);
     ++probe.evaluations;
     for (size_t i = 0; i < f.handles.size(); ++i)
-        if (f.handles[i].speed >= out.ratio * (1.0 - kTieTolerance)) out.tied.push_back(static_cast<int>(i));
+        if (std::abs(f.handles[i].speed) >= out.ratio * (1.0 - kTieTolerance)) out.tied.push_back(static_cast<int>(i));
     out.handle = out.tied.front();
-    out.time = (out.head_arc - built.start_arc) / v;
+    out.time = (out.head_arc - sim.start_arc()) / v;
     out.max_head_speed = limit / out.ratio;
     out.evaluations = probe.evaluations;
     return out;

@@ -20,7 +20,7 @@ namespace {
 constexpr double kTwoPi = 6.283185307179586476925286766559;
 }
 
-std::optional<Contact> contact_before_boundary(Scenario s, double pitch) {
+BoundaryRun run_to_boundary(Scenario s, double pitch) {
     s.path.kind = PathKind::spiral;
     s.path.pitch = pitch;
     const Simulation sim(s);
@@ -32,17 +32,25 @@ std::optional<Contact> contact_before_boundary(Scenario s, double pitch) {
     // The moment the head front handle reaches radius turn_radius.
     const double theta_end = s.path.turn_radius / spiral.b();
     const double t_end = (-spiral.length_to(theta_end) - sim.start_arc()) / s.head_speed;
+    BoundaryRun run;
+    run.jam = sim.jam_before(t_end);
     // One thread: min_pitch already runs one pitch per core.
-    return first_contact(sim, 0.0, t_end, {.on_step = {}, .threads = 1});
+    run.contact = first_contact(sim, 0.0, run.jam ? run.jam->time : t_end, {.on_step = {}, .threads = 1});
+    if (run.contact) run.jam.reset();  // the collision comes first
+    return run;
 }
+
+std::optional<Contact> contact_before_boundary(Scenario s, double pitch) { return run_to_boundary(std::move(s), pitch).contact; }
 
 namespace {
 
-// What one run to the boundary found: feasible, or the first contact (time and pair).
+// What one run to the boundary found: feasible, or the first contact (time and pair), or the
+// end of the valid motion before the boundary.
 struct Probe {
     bool feasible = false;
     double time = 0.0;
     int bench_a = 0, bench_b = 0;
+    std::optional<Jam> jam;
 };
 
 // Feasibility of several pitches at once, spread over the machine's cores: each pitch is an
@@ -55,8 +63,10 @@ std::vector<Probe> probe_at(const Scenario& s, const std::vector<double>& pitche
     auto work = [&] {
         for (size_t k; (k = next++) < pitches.size();) {
             try {
-                const std::optional<Contact> c = contact_before_boundary(s, pitches[k]);
-                out[k] = c ? Probe{false, c->time, c->bench_a, c->bench_b} : Probe{true};
+                const BoundaryRun run = run_to_boundary(s, pitches[k]);
+                if (run.contact) out[k] = Probe{false, run.contact->time, run.contact->bench_a, run.contact->bench_b, {}};
+                else if (run.jam) out[k] = Probe{false, run.jam->time, 0, 0, run.jam};
+                else out[k] = Probe{true, 0.0, 0, 0, {}};
             } catch (...) {
                 const std::lock_guard<std::mutex> hold(failure_lock);
                 if (!failure) failure = std::current_exception();
@@ -103,6 +113,7 @@ double closest_approach(const Scenario& s, double pitch, int a, int b, double t0
     q.path.pitch = pitch;
     const Simulation sim(q);
     t1 = std::min(t1, sim.end_time());
+    if (const std::optional<Jam> j = sim.jam_before(t1)) t1 = j->time;
     Frame f;
     auto gap = [&](double t) {
         sim.frame_into(t, f);
@@ -142,7 +153,8 @@ double refine_cut(const Scenario& s, double a, double b, const Probe& at_a, cons
     Probe hit = feasible_at_a ? at_b : at_a;
     double p_in = feasible_at_a ? b : a, p_ok = feasible_at_a ? a : b;
     const double dir = p_ok > p_in ? 1.0 : -1.0;
-    for (int round = 0; round < 4; ++round) {
+    // A change from a jam is no contact window: only the k-section can narrow it.
+    for (int round = 0; round < 4 && !hit.jam; ++round) {
         const double t0 = std::max(0.0, hit.time - 5.0), t1 = hit.time + 5.0;
         auto closest = [&](double p) { return closest_approach(s, p, hit.bench_a, hit.bench_b, t0, t1); };
         double lo = p_in, hi = p_ok, g_lo = closest(lo), g_hi = closest(hi);
@@ -168,7 +180,7 @@ double refine_cut(const Scenario& s, double a, double b, const Probe& at_a, cons
         const std::vector<Probe> check = probe_at(s, {ok_side, in_side});
         if (check[0].feasible && !check[1].feasible) return ok_side;
         if (check[0].feasible) break;  // feasible on both sides of this pair's cut: not the one
-        p_in = ok_side;                 // still colliding here: another pair's window closes later
+        p_in = ok_side;                 // still infeasible here: another window closes later
         hit = check[0];
     }
     return k_section(s, feasible_at_a ? a : p_in, feasible_at_a ? p_in : b, feasible_at_a);
@@ -210,15 +222,25 @@ MinPitch min_pitch(const Scenario& s, double lo, double hi, double grid) {
         state = !state;
     }
     out.intervals.push_back({start, hi, state});
+    out.grid = (hi - lo) / n;
     out.pitch = std::numeric_limits<double>::quiet_NaN();
-    // The smallest pitch p such that every pitch in [p, hi] is feasible, and the smallest feasible.
-    for (const PitchInterval& iv : out.intervals)
-        if (iv.feasible) { out.pitch = iv.lo; break; }
+    // The smallest feasible pitch is where the first feasible interval begins, if that is a
+    // change inside the range; a feasible low end says only that it lies at or below the range.
+    if (out.intervals.front().feasible) {
+        out.below_range = true;
+    } else {
+        for (const PitchInterval& iv : out.intervals)
+            if (iv.feasible) { out.pitch = iv.lo; break; }
+        out.above_range = std::isnan(out.pitch);
+    }
+    for (size_t k = pitches.size(); k-- > 0;)
+        if (ok[k].jam) { out.jam = PitchJam{pitches[k], *ok[k].jam}; break; }
     out.guarantee = fmt::format(
         "feasibility evaluated on a {:.4g} m pitch grid over [{}, {}], each change narrowed to {:.0e} m "
         "(where the touching pair's closest approach is zero, confirmed by full runs on either side); "
         "each evaluation checks the whole run to the boundary with time steps no contact can fit in "
-        "(clearance over a bound on its rate of change, second order near grazing passes); a window "
+        "(clearance over a bound on its rate of change, second order near grazing passes), and that the "
+        "dragon can follow the spiral that far (a run whose motion ends first is infeasible); a window "
         "narrower than the grid spacing could still lie unseen between two grid points of the same state "
         "(a finer --grid rules out narrower ones)",
         (hi - lo) / n, lo, hi, tol::pitch);

@@ -51,11 +51,41 @@ Located Spiral::at_arc(double s) const { return at({0, theta_at_length(-s)}); }
 
 double Spiral::s_min() const { return -std::numeric_limits<double>::infinity(); }
 
-double Spiral::curvature(Place p) const {
-    const double th = p.u;
-    const double q = 1.0 + th * th;
-    // Clockwise travel: the path turns right, so the signed curvature is negative.
-    return -(th * th + 2.0) / (b_ * q * std::sqrt(q));
+double Spiral::curvature_at(double theta) const {
+    const double q = 1.0 + theta * theta;
+    return (theta * theta + 2.0) / (b_ * q * std::sqrt(q));
+}
+
+// Clockwise travel: the path turns right, so the signed curvature is negative.
+double Spiral::curvature(Place p) const { return -curvature_at(p.u); }
+
+// curvature_at falls monotonically in theta (its derivative is -theta (theta^2 + 4) / (b
+// (1 + theta^2)^(5/2))), so bisection on a bracket finds where it equals k. Far out it is
+// ~1 / (b theta), so theta = 2 / (b k) + 2 is past the root.
+double Spiral::theta_of_curvature(double k) const {
+    if (k >= 2.0 / b_) return 0.0;
+    double lo = 0.0, hi = 2.0 / (b_ * k) + 2.0;
+    while (curvature_at(hi) > k) hi *= 2.0;
+    for (int it = 0; it < 200 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (curvature_at(mid) > k ? lo : hi) = mid;
+    }
+    return hi;  // the side where the curvature is at most k
+}
+
+double Spiral::turning(Place rear, Place front) const {
+    return std::abs(tangent_angle(rear.u) - tangent_angle(front.u));
+}
+
+// Behind a place means farther out, where the curvature is smaller.
+double Spiral::curvature_bounded_before(double k) const {
+    if (k >= 2.0 / b_) return s_max();
+    return -length_to(theta_of_curvature(k));
+}
+
+// Ahead lies the centre, where the curvature is 2 / b.
+double Spiral::curvature_bounded_after(double k) const {
+    return k >= 2.0 / b_ ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
 }
 
 // The next handle out along the spiral. With phi = theta' - theta, the squared chord over b^2 is

@@ -15,8 +15,8 @@ namespace dragon {
 void simulate_table_into(const Simulation& sim, double t0, double t1, double dt, std::vector<Frame>& frames) {
     if (!std::isfinite(dt) || dt <= 0.0)
         throw InputError(fmt::format("--step {} is not allowed: it must be a finite number > 0", dt));
-    sim.require_on_path(t0, "--from");
-    sim.require_on_path(t1, "--to");
+    sim.require_valid(t0, "--from");
+    sim.require_valid(t1, "--to");
     if (t1 < t0) throw InputError(fmt::format("--to {} is before --from {}: the time range is empty", t1, t0));
     // Count by index so the last time is exactly t1 when the step divides the range.
     const double span = (t1 - t0) / dt;

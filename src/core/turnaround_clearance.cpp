@@ -53,6 +53,11 @@ RunClearance min_clearance(const Scenario& scenario, double t0, double t1) {
     const Simulation sim(s);
     Frame f;
     RunClearance out{};
+    // Past the end of the valid motion the benches teleport: only the valid part is looked at.
+    const Simulation::Span span = sim.clip_to_valid(t0, t1, "--from", "--to");
+    out.from = t0 = span.from;
+    out.to = t1 = span.to;
+    out.jam = span.jam;
     auto probe = [&](double t) {
         ++out.evaluations;
         sim.frame_into(t, f);

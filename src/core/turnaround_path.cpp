@@ -99,6 +99,48 @@ double TurnaroundPath::curvature(Place p) const {
     }
 }
 
+// Piece by piece from rear to front: the spirals' tangent angle theta + atan(theta) changes
+// monotonically along each, and an arc turns by the angle it sweeps.
+double TurnaroundPath::turning(Place rear, Place front) const {
+    double total = 0.0;
+    for (int piece = rear.piece; piece <= front.piece; ++piece) {
+        const auto [begin, end] = piece_range(piece);
+        const double a = piece == rear.piece ? rear.u : begin;
+        const double b = piece == front.piece ? front.u : end;
+        if (piece == 1 || piece == 2) total += std::abs(a - b);
+        else total += std::abs(Spiral::tangent_angle(a) - Spiral::tangent_angle(b));
+    }
+    return total;
+}
+
+// Along the travel the curvature magnitude rises on the coil-in spiral up to its value at A,
+// is 1 / r1 and 1 / r2 on the arcs, and falls from its value at B (the same as at A) on the
+// coil-out spiral.
+double TurnaroundPath::curvature_bounded_before(double k) const {
+    const double at_entry = coil_in_.curvature_at(design_.entry_theta);
+    if (at_entry > k) return arc({0, coil_in_.theta_of_curvature(k)});
+    if (1.0 / design_.r1 > k) return 0.0;
+    if (1.0 / design_.r2 > k) return design_.length1;
+    return kInf;
+}
+
+double TurnaroundPath::curvature_bounded_after(double k) const {
+    const double at_exit = coil_in_.curvature_at(design_.entry_theta);
+    if (at_exit > k) return arc({3, coil_in_.theta_of_curvature(k)});
+    if (1.0 / design_.r2 > k) return design_.length;
+    if (1.0 / design_.r1 > k) return design_.length1;
+    return -kInf;
+}
+
+std::pair<double, double> TurnaroundPath::curvature_span(int piece) const {
+    switch (piece) {
+        case 1: return {1.0 / design_.r1, 1.0 / design_.r1};
+        case 2: return {1.0 / design_.r2, 1.0 / design_.r2};
+        // The spirals: from nearly straight far out to their curvature at A (and B).
+        default: return {0.0, coil_in_.curvature_at(design_.entry_theta)};
+    }
+}
+
 // Walks back piece by piece from `from`'s piece: the first piece holding a root holds the
 // nearest one, and each piece's search returns its root nearest the search's start.
 std::optional<Located> TurnaroundPath::behind(const Located& from, double chord) const {

@@ -2,11 +2,14 @@
 // against the radius ratio and against where the turn starts.
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <memory>
+#include <string>
 
 #include <fmt/format.h>
 
 #include "dragon/atomic_file.hpp"
+#include "dragon/chain.hpp"
 #include "dragon/turnaround.hpp"
 
 namespace dragon {
@@ -18,7 +21,7 @@ TurnStudyRow row_of(const SCurve& d, double turn_radius) {
     // Coil-in spiral from the boundary to A, and (by symmetry) coil-out from B to the boundary.
     const double approach = spiral.length_to(turn_radius / spiral.b()) - spiral.length_to(d.entry_theta);
     return {d.ratio, d.entry_radius, d.r1, d.r2, d.angle1, d.length, d.length + 2.0 * approach,
-            d.max_radius};
+            d.max_radius, std::nullopt};
 }
 
 }  // namespace
@@ -42,6 +45,30 @@ std::vector<TurnStudyRow> length_vs_entry_radius(double pitch, double turn_radiu
     return rows;
 }
 
+void followability(std::vector<TurnStudyRow>& rows, double pitch, const BenchSpec& bench, double head_speed) {
+    for (TurnStudyRow& r : rows) {
+        const TurnaroundPath path(design_s_curve(pitch, r.entry_radius, r.ratio));
+        // From far out on the coil-in spiral (where the search starts on calm path) for ever.
+        r.jam = find_jam(path, bench, path.join_arc(1), head_speed, -std::numeric_limits<double>::infinity(),
+                         std::numeric_limits<double>::infinity());
+    }
+}
+
+namespace {
+
+// "0.5, 1, 1.5 and 2" (the ratios a dragon can follow, as written in the conclusion).
+std::string ratio_list(const std::vector<TurnStudyRow>& rows, bool followable) {
+    std::vector<std::string> items;
+    for (const TurnStudyRow& r : rows)
+        if (r.followable() == followable) items.push_back(fmt::format("{:g}", r.ratio));
+    std::string out;
+    for (size_t i = 0; i < items.size(); ++i)
+        out += (i == 0 ? "" : i + 1 == items.size() ? " and " : ", ") + items[i];
+    return out;
+}
+
+}  // namespace
+
 TurnaroundStudy study_turnaround(const Scenario& s) {
     const double pitch = s.path.turn_pitch, radius = s.path.turn_radius, ratio = s.path.arc_ratio;
     TurnaroundStudy st;
@@ -53,6 +80,10 @@ TurnaroundStudy study_turnaround(const Scenario& s) {
     std::vector<double> radii;
     for (int k = 0; k <= 10; ++k) radii.push_back(radius * (1.0 - 0.05 * k));
     st.by_entry = length_vs_entry_radius(pitch, radius, ratio, radii);
+    followability(st.by_ratio, pitch, s.bench, s.head_speed);
+    followability(st.by_entry, pitch, s.bench, s.head_speed);
+    for (const TurnStudyRow& r : st.by_ratio)
+        if (r.ratio == ratio) st.design_jam = r.jam;
 
     auto [lo, hi] = std::minmax_element(st.by_ratio.begin(), st.by_ratio.end(),
                                         [](const TurnStudyRow& a, const TurnStudyRow& b) {
@@ -63,14 +94,36 @@ TurnaroundStudy study_turnaround(const Scenario& s) {
     st.conclusion = fmt::format(
         "Not by changing the ratio: tangent at A and B, r1 + r2 = R sqrt(1 + theta^2) / theta and "
         "both arcs sweep the same angle whatever r1 / r2 is, so the S-curve is {:.6f} m for every "
-        "ratio (spread {:.1e} m over ratios {}..{}). It gets shorter only if the turn starts "
-        "deeper inside the turning space ({:.6f} m from radius {:.4g} m), but then the head coils in "
-        "and out further along the spirals: its whole way inside the turning space grows from "
-        "{:.6f} m to {:.6f} m. With the turn tangent at the boundary the curve is as short as it "
-        "gets for the way through the turning space.",
-        st.design.length, st.ratio_spread, st.by_ratio.front().ratio, st.by_ratio.back().ratio,
-        inner.s_curve_length, inner.entry_radius, st.by_entry.front().inside_length,
-        inner.inside_length);
+        "ratio (spread {:.1e} m over ratios {:g}..{:g}).",
+        st.design.length, st.ratio_spread, st.by_ratio.front().ratio, st.by_ratio.back().ratio);
+    // Which of these turns can this dragon follow at all?
+    const std::string usable = ratio_list(st.by_ratio, true), unusable = ratio_list(st.by_ratio, false);
+    if (unusable.empty())
+        st.conclusion += fmt::format(" This dragon can follow it at every ratio studied.");
+    else if (usable.empty())
+        st.conclusion += " This dragon can follow it at none of them: at every ratio a handle would have to "
+                         "jump on the way through.";
+    else
+        st.conclusion += fmt::format(" This dragon can follow it only at ratios {}; at {} a handle would have to "
+                                     "jump on the way through (an arc too tight for its benches).", usable, unusable);
+    if (st.design_jam)
+        st.conclusion += fmt::format(" At the chosen ratio {:g} the dragon's motion ends at t = {:.6f} s: {}.", ratio,
+                                     st.design_jam->time, describe(*st.design_jam));
+    st.conclusion += fmt::format(
+        " The S-curve gets shorter only if the turn starts deeper inside the turning space ({:.6f} m "
+        "from radius {:.4g} m), but then the head coils in and out further along the spirals: its whole "
+        "way inside the turning space grows from {:.6f} m to {:.6f} m.",
+        inner.s_curve_length, inner.entry_radius, st.by_entry.front().inside_length, inner.inside_length);
+    // The outermost entry radius (after the boundary) this dragon cannot follow, if any.
+    for (const TurnStudyRow& r : st.by_entry) {
+        if (!r.followable()) {
+            st.conclusion += fmt::format(" This dragon cannot even follow those from entry radius {:.4g} m inward.",
+                                         r.entry_radius);
+            break;
+        }
+    }
+    st.conclusion += " With the turn tangent at the boundary the curve is as short as it gets for the way "
+                     "through the turning space.";
     return st;
 }
 
@@ -79,12 +132,16 @@ void write_study_csv(const TurnaroundStudy& study, const std::string& path) {
     {
         std::unique_ptr<FILE, int (*)(FILE*)> out(std::fopen(file.temp_path().c_str(), "w"), &std::fclose);
         if (!out) throw std::runtime_error(fmt::format("cannot write {}", file.temp_path()));
-        fmt::print(out.get(), "study,ratio,entry_radius,r1,r2,angle,s_curve_length,inside_length,max_radius\n");
+        fmt::print(out.get(), "study,ratio,entry_radius,r1,r2,angle,s_curve_length,inside_length,max_radius,"
+                              "followable,jam_time,jam_handle,jam_kind\n");
         auto rows = [&](const char* name, const std::vector<TurnStudyRow>& rs) {
-            for (const TurnStudyRow& r : rs)
-                fmt::print(out.get(), "{},{:.6f},{:.6f},{:.9f},{:.9f},{:.9f},{:.9f},{:.9f},{:.9f}\n", name,
+            for (const TurnStudyRow& r : rs) {
+                fmt::print(out.get(), "{},{:.6f},{:.6f},{:.9f},{:.9f},{:.9f},{:.9f},{:.9f},{:.9f},", name,
                            r.ratio, r.entry_radius, r.r1, r.r2, r.angle, r.s_curve_length,
                            r.inside_length, r.max_radius);
+                if (r.jam) fmt::print(out.get(), "false,{:.9f},{},{}\n", r.jam->time, r.jam->handle, to_string(r.jam->kind));
+                else fmt::print(out.get(), "true,,,\n");
+            }
         };
         rows("ratio", study.by_ratio);
         rows("entry_radius", study.by_entry);

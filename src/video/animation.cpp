@@ -67,9 +67,9 @@ Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions 
     if (!(clip.to > clip.from))
         throw InputError(fmt::format("time range --from {} --to {} is empty: --to must be after --from",
                                      clip.from, clip.to));
-    if (clip.to > sim.end_time())
-        throw InputError(fmt::format("--to {} is not allowed: the head reaches the end of the path (the "
-                                     "spiral's centre) at t = {:.6f} s", clip.to, sim.end_time()));
+    // A film never shows a moment past the end of the valid motion (nor past the path's end).
+    sim.require_valid(clip.from, "--from");
+    sim.require_valid(clip.to, "--to");
     if (!(fps > 0.0) || !std::isfinite(fps))
         throw InputError(fmt::format("--fps {} is not allowed: use a rate above 0", fps));
     if (!(clip.speedup > 0.0) || !std::isfinite(clip.speedup))

@@ -11,6 +11,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "support/scratch.hpp"
 
@@ -113,8 +114,8 @@ TEST(Extremes, SlowHead) {
     // The first contact, 4.1e8 s away: found as quickly as at 1 m/s (it once crept in 1 s steps),
     // at the same head travel, to the digits a time that large holds.
     auto time_of = [](const CliRun& r) {
-        const auto at = r.out.find("\"time\": ");
-        return at == std::string::npos ? NAN : std::stod(r.out.substr(at + 8));
+        const auto j = nlohmann::json::parse(r.out, nullptr, false);
+        return j.is_object() && j.contains("time") && j["time"].is_number() ? j["time"].get<double>() : NAN;
     };
     const CliRun ref = dragon("collide --json");
     const CliRun slow = dragon("collide --speed 1e-6 --json");
@@ -128,10 +129,9 @@ TEST(Extremes, FastHead) {
     // first contact comes 100 times sooner (412.473837682 s at 1 m/s).
     const CliRun hit = dragon("collide --speed 100 --json");
     expect_works(hit, "collide --speed 100");
-    const auto at = hit.out.find("\"time\": ");
-    ASSERT_NE(at, std::string::npos) << hit.out;
-    EXPECT_NEAR(std::stod(hit.out.substr(at + 8)), 4.12473837682, 1e-10);
-    refused("simulate --speed 100 --to 5", "centre");
+    EXPECT_NEAR(nlohmann::json::parse(hit.out).at("time").get<double>(), 4.12473837682, 1e-10) << hit.out;
+    // And 100 times sooner the dragon can no longer follow the spiral (432.917924228 s at 1 m/s).
+    refused("simulate --speed 100 --to 5", "until t = 4.329179242");
     const CliRun turn = dragon("turnaround --speed 100 --from -1 --to 1");
     expect_works(turn, "turnaround --speed 100");
     EXPECT_TRUE(has(turn.out, "smallest 0.279043 m, benches 1 and 17 at t = 0.301599 s")) << turn.out;
@@ -142,11 +142,15 @@ TEST(Extremes, FastHead) {
 TEST(Extremes, PastTheCollision) {
     refused("collide --from 420", "already overlap");
     refused("video --from 420 --size 64x48 -o " + out_file("late.mp4"), "already overlap");
-    // The head at the spiral's centre, and a moment after it.
-    works("simulate --from 442.5902564 --to 442.5902564");
-    works("render --time 442.59 --size 64x64 -o " + out_file("centre.png"));
-    refused("simulate --to 443", "centre");
-    refused("collide --from 500", "centre");
+    // The dragon cannot follow the spiral to its centre: handle 1 loses its root at 432.917924228 s
+    // (its speed has no bound there). Up to that moment it works; past it, and past the centre, it is refused.
+    works("simulate --from 432.9 --to 432.917924228");
+    works("render --time 432.9 --size 64x64 -o " + out_file("late.png"));
+    refused("simulate --from 442.5902564 --to 442.5902564", "until t = 432.917924228 s, where handle 1");
+    refused("render --time 442.59 --size 64x64 -o " + out_file("centre.png"), "handle 1 can no longer follow");
+    refused("simulate --to 443", "until t = 432.917924228");
+    refused("collide --from 500", "until t = 432.917924228");
+    refused("simulate --to 1e6", "until t = 432.917924228");
 }
 
 TEST(Extremes, TurningSpaceWiderThanTheStart) {

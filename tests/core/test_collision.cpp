@@ -167,7 +167,7 @@ TEST(Clearance, AdjacentBenchesAlwaysOverlapSoAreExcluded) {
         s.path.pitch = pitch;
         const Simulation sim(s);
         for (double frac : {0.0, 0.5, 0.9}) {
-            const Frame f = sim.frame(frac * sim.end_time());
+            const Frame f = sim.frame(frac * sim.valid_end());
             for (size_t k = 0; k + 1 < f.benches.size(); ++k)
                 EXPECT_LT(separation(f.benches[k], f.benches[k + 1]).distance, 0.0);
         }
@@ -217,13 +217,13 @@ TEST(Clearance, BroadPhaseNeverMissesAPair) {
     // margin of each other is among the candidates, and the clearance equals the all-pairs one.
     std::vector<Frame> frames;
     const Simulation sim(Scenario{});
-    for (double t = 0.0; t <= 440.0; t += 13.7) frames.push_back(sim.frame(t));
+    for (double t = 0.0; t <= sim.valid_end(); t += 13.7) frames.push_back(sim.frame(t));
     for (double t : {412.4738, 412.4739, 412.5, 415.0}) frames.push_back(sim.frame(t));
     for (double pitch : {0.36, 0.42, 0.45}) {
         Scenario s;
         s.path.pitch = pitch;
         const Simulation other(s);
-        for (double frac : {0.3, 0.7, 0.95}) frames.push_back(other.frame(frac * other.end_time()));
+        for (double frac : {0.3, 0.7, 0.95}) frames.push_back(other.frame(frac * other.valid_end()));
     }
     int touching = 0;
     for (const Frame& f : frames) {

@@ -260,15 +260,22 @@ TEST(Scenario, TimesPastTheCentreAreRefused) {
     EXPECT_GT(sim.end_time(), 412.0);
     EXPECT_THROW(sim.frame(sim.end_time() + 1.0), InputError);
     EXPECT_THROW(sim.frame(std::nan("")), InputError);
+    // The contest's dragon cannot follow the spiral that far: its motion ends 9.7 s earlier.
+    EXPECT_LT(sim.valid_end(), sim.end_time() - 9.0);
+    EXPECT_THROW(sim.frame(sim.end_time()), InputError);
+    EXPECT_NO_THROW(sim.frame(sim.valid_end()));
 }
 
 // end_time() is the last moment the head is on the path, at any speed: frame(end_time()) works
 // and the next representable time is refused. (At 180 m/s the division used to round one step
-// past the centre: found by tests/fuzz/fuzz_scenario.)
+// past the centre: found by tests/fuzz/fuzz_scenario.) Short benches on a wide spiral, which
+// the dragon can follow all the way to the centre.
 TEST(Scenario, TheEndTimeItselfIsOnThePath) {
     for (double speed : {1e-6, 0.3, 1.0, 3.7, 180.0, 997.0, 1e6}) {
         for (double turn : {3.0, 16.0, 40.5}) {
             Scenario s;
+            s.bench = {5, 0.8, 0.8, 0.2, 0.1};
+            s.path.pitch = 2.0;
             s.head_speed = speed;
             s.path.start_turn = turn;
             const Simulation sim(s);

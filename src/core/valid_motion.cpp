@@ -1,0 +1,278 @@
+// The search for the end of the valid motion (the method is described in dragon/valid_motion.hpp).
+#include "dragon/valid_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "core/chain_front.hpp"
+#include "core/link_watch.hpp"
+#include "dragon/chain.hpp"
+#include "dragon/constants.hpp"
+
+namespace dragon {
+
+const char* to_string(JamKind k) {
+    switch (k) {
+        case JamKind::root_vanishes: return "root_vanishes";
+        case JamKind::nearer_root: return "nearer_root";
+    }
+    return "?";
+}
+
+namespace {
+
+using jam::kSafety;
+using jam::LinkCheck;
+
+constexpr double kMaxTravel = jam::kMaxStep;
+// Below this fraction of half a link's length, a link's health is close enough to zero to try
+// bracketing the tangency that would end the motion.
+constexpr double kProbeHealth = 0.05;
+// A search needing more evaluations than this has a broken bound: fail loudly, never hang.
+constexpr int kMaxEvaluations = 100000;
+
+double resolution(double s, double tolerance);
+
+struct Evaluation {
+    double s = 0.0;
+    Frame frame;
+    std::vector<LinkCheck> links;
+    double step = INFINITY;  // head travel no link's margin can run out in, m
+    int critical = 0;        // the link setting it
+};
+
+// Where a jam lies: `valid` is continuous, `past` is not, |past - valid| <= the tolerance.
+struct Bracket {
+    double valid = 0.0, past = 0.0;
+    int link = 0;
+    JamKind kind = JamKind::root_vanishes;
+    Vec2 point;
+};
+
+class JamSearch {
+public:
+    JamSearch(const Path& path, const BenchSpec& spec, double dir, double arc_tolerance, JamSearchStats& stats)
+        : path_(path), spec_(spec), dir_(dir), tol_(arc_tolerance), stats_(stats),
+          calm_head_(jam::calm_for(path, spec.link_length(1))),
+          calm_body_(spec.bench_count > 1 ? jam::calm_for(path, spec.link_length(2)) : calm_head_) {}
+
+    void evaluate(double s, Evaluation& e) {
+        if (++stats_.evaluations > kMaxEvaluations)
+            throw std::logic_error("jam search: no end within its allowance of evaluations (a broken bound)");
+        e.s = s;
+        solve_chain(path_, spec_, s, 1.0, e.frame);
+        const size_t links = e.frame.benches.size();
+        e.links.resize(links);
+        e.step = INFINITY;
+        e.critical = 0;
+        for (size_t k = 0; k < links; ++k) {
+            e.links[k] = jam::check_link(path_, e.frame.handles[k], e.frame.handles[k + 1],
+                                         spec_.link_after(static_cast<int>(k)), k == 0 ? calm_head_ : calm_body_, dir_);
+            if (e.links[k].step < e.step) e.step = e.links[k].step, e.critical = static_cast<int>(k);
+        }
+    }
+
+    // Did the step from `a` to `b` keep every bound it relied on? Each margin may have fallen by
+    // at most margin * travel / step; each handle may have moved at most kSafety times its
+    // larger speed times the travel (a handle that jumped to another root moves far more).
+    // Returns -1 if so, else the first link whose bound broke.
+    int step_held(const Evaluation& a, const Evaluation& b) const {
+        const double travel = std::abs(b.s - a.s);
+        for (size_t k = 0; k < a.links.size(); ++k) {
+            const LinkCheck& x = a.links[k];
+            const LinkCheck& y = b.links[k];
+            const double floor = x.margin * (1.0 - travel / x.step) * (1.0 - 1e-9) - 1e-15;
+            if (x.calm) {
+                // Still on calm path, or at least within a quarter turn (a link that left the
+                // calm stretch early has its turning checked instead).
+                if (!y.calm && jam::kQuarterTurn - y.turn <= 0.0) return static_cast<int>(k);
+            } else if (x.gentle) {
+                // Its turning must have stayed within the allowance, whatever it is now.
+                if (jam::kQuarterTurn - y.turn < floor) return static_cast<int>(k);
+            } else if (!y.gentle && y.margin < floor) {
+                return static_cast<int>(k);  // (one that turned gentle is certified outright)
+            }
+        }
+        for (size_t i = 0; i < a.frame.handles.size(); ++i) {
+            const Handle& p = a.frame.handles[i];
+            const Handle& q = b.frame.handles[i];
+            const double reach = kSafety * std::max(std::abs(p.speed), std::abs(q.speed)) * travel + 1e-12;
+            if (!(distance(p.pos, q.pos) <= reach)) return static_cast<int>(std::max<size_t>(i, 1) - 1);
+        }
+        return -1;
+    }
+
+    // The watched tangency of link k, bracketed and narrowed to the tolerance; nullopt when its
+    // excess does not cross zero within a few predicted distances.
+    std::optional<Bracket> bracket(const Evaluation& e, int k) {
+        const double chord = spec_.link_after(k);
+        const double window = 0.5 * chord;
+        const Handle& front = e.frame.handles[static_cast<size_t>(k)];
+        const auto t0 = jam::watch_tangency(path_, front.pos, chord, e.links[static_cast<size_t>(k)].watch_arc, window);
+        if (!t0) return std::nullopt;
+        if (t0->excess == 0.0) return Bracket{e.s, e.s, k, JamKind::root_vanishes, t0->point};
+        // The tangency's excess changes with the head's travel at -dir . (velocity of handle k).
+        const double slope = -dot(t0->dir, front.tangent) * front.speed * dir_;
+        if (!(slope * t0->excess < 0.0)) return std::nullopt;  // not heading for zero
+        const double predicted = -t0->excess / slope;
+        // The excess is positive while a root-to-be-lost still has its hump beyond the chord.
+        const JamKind kind = t0->excess > 0.0 ? JamKind::root_vanishes : JamKind::nearer_root;
+        double seed = t0->arc;
+        auto excess_at = [&](double s) -> std::optional<double> {
+            solve_chain_front(path_, spec_, s, 1.0, k + 1, scratch_);
+            ++stats_.evaluations;
+            const auto t = jam::watch_tangency(path_, scratch_.handles[static_cast<size_t>(k)].pos, chord, seed, window);
+            if (!t) return std::nullopt;
+            seed = t->arc;
+            last_point_ = t->point;
+            return t->excess;
+        };
+        double valid = e.s, g_valid = t0->excess, past = NAN, g_past = NAN;
+        for (double reach : {1.5, 3.0, 6.0}) {
+            const double travel = std::min(reach * predicted, kMaxTravel);
+            const double s = e.s + dir_ * travel;
+            const auto g = excess_at(s);
+            if (!g) return std::nullopt;
+            if ((*g > 0.0) != (g_valid > 0.0) || *g == 0.0) {
+                past = s, g_past = *g;
+                break;
+            }
+            if (travel == kMaxTravel) break;
+        }
+        if (std::isnan(past)) return std::nullopt;
+        // Regula falsi (Illinois) on the head's arc position.
+        int side = 0;
+        for (int it = 0; it < 200 && std::abs(past - valid) > resolution(valid, tol_); ++it) {
+            double s = valid + g_valid * (past - valid) / (g_valid - g_past);
+            if (!((s - valid) * dir_ > 0.0 && (past - s) * dir_ > 0.0)) s = 0.5 * (valid + past);
+            if (s == valid || s == past) break;
+            const auto g = excess_at(s);
+            if (!g) return std::nullopt;
+            if ((*g > 0.0) == (g_valid > 0.0) && *g != 0.0) {
+                valid = s, g_valid = *g;
+                if (side == +1) g_past *= 0.5;
+                side = +1;
+            } else {
+                past = s, g_past = *g;
+                if (side == -1) g_valid *= 0.5;
+                side = -1;
+            }
+        }
+        return Bracket{valid, past, k, kind, last_point_};
+    }
+
+private:
+    const Path& path_;
+    const BenchSpec& spec_;
+    double dir_;
+    double tol_;
+    JamSearchStats& stats_;
+    jam::Calm calm_head_, calm_body_;  // for the head's link and the others
+    Frame scratch_;
+    Vec2 last_point_;
+};
+
+Jam make_jam(const Bracket& b, double start_arc, double head_speed, double dir) {
+    Jam j;
+    j.head_arc = b.valid;
+    j.time = (b.valid - start_arc) / head_speed;
+    j.handle = b.link + 1;
+    j.kind = b.kind;
+    j.point = b.point;
+    // How far past `time` the motion may still go: the bracket, and the rounding of t itself.
+    const double rounding = std::abs(std::nextafter(j.time, dir * INFINITY) - j.time);
+    j.tolerance = std::max(std::abs(b.past - b.valid) / head_speed, rounding);
+    return j;
+}
+
+// The tolerance on the head's arc position at s: the one asked for, or a few roundings of s
+// itself where those are larger (a slow head's 1e-10 s is below what a double holds).
+double resolution(double s, double tolerance) {
+    const double a = std::abs(s);
+    return std::max(tolerance, 4.0 * (std::nextafter(a, INFINITY) - a));
+}
+
+double longest_link(const BenchSpec& spec) {
+    double d = spec.link_length(1);
+    if (spec.bench_count > 1) d = std::max(d, spec.link_length(2));
+    return d;
+}
+
+}  // namespace
+
+std::optional<Jam> find_jam(const Path& path, const BenchSpec& spec, double start_arc, double head_speed,
+                            double t_from, double t_to, JamSearchStats* stats_out) {
+    JamSearchStats stats;
+    const double s_from = start_arc + head_speed * t_from;
+    const double s_to = start_arc + head_speed * t_to;
+    if (!(s_to != s_from)) return std::nullopt;
+    const double dir = s_to > s_from ? 1.0 : -1.0;
+    // As the first-contact search: 1e-10 s, and 1e-10 m of head travel for a fast head.
+    const double arc_tol = tol::contact_time * std::min(1.0, head_speed);
+    const double bend = jam::kCalmBend / longest_link(spec);
+    // Head at or behind `calm_head`: every link lies where the curvature is small for the
+    // longest link, and moving back it stays there (all handles move with the head then).
+    const double calm_head = path.curvature_bounded_before(bend);
+    double s = s_from;
+    if (dir > 0.0 && s < calm_head) s = std::min(calm_head, s_to);
+    if (dir < 0.0 && s <= calm_head) return std::nullopt;
+    if (s == s_to) return std::nullopt;
+
+    JamSearch search(path, spec, dir, arc_tol, stats);
+    Evaluation cur, next;
+    search.evaluate(s, cur);
+    std::optional<Bracket> candidate;
+    double probed_at = INFINITY;  // the margin at the last probe that found nothing
+    double retry_cap = INFINITY;
+    auto done = [&](std::optional<Jam> j) {
+        if (stats_out) *stats_out = stats;
+        return j;
+    };
+    for (;;) {
+        // Every link on calm path and moving away from where it ends: with all links calm every
+        // handle moves with the head, so they stay calm for ever.
+        if (cur.step == INFINITY) return done(std::nullopt);
+        if (dir < 0.0 && cur.s <= calm_head) return done(std::nullopt);
+        const LinkCheck& crit = cur.links[static_cast<size_t>(cur.critical)];
+        if (candidate && (candidate->valid - cur.s) * dir <= cur.step)
+            return done(make_jam(*candidate, start_arc, head_speed, dir));
+        const double here_tol = resolution(cur.s, arc_tol);
+        if (!(cur.step > here_tol)) {
+            // The margins ran out here without a bracket: the jam is at this moment, to the tolerance.
+            const Bracket b{cur.s, cur.s + dir * here_tol, cur.critical,
+                            crit.at_root ? JamKind::root_vanishes : JamKind::nearer_root,
+                            path.at_arc(crit.gentle ? cur.s : crit.watch_arc).pos};
+            return done(make_jam(b, start_arc, head_speed, dir));
+        }
+        const double probe_below = kProbeHealth * 0.5 * spec.link_after(cur.critical);
+        if (!candidate && !crit.gentle && crit.margin < probe_below && crit.margin < 0.5 * probed_at) {
+            candidate = search.bracket(cur, cur.critical);
+            if (!candidate) probed_at = crit.margin;
+            continue;
+        }
+        const double travel = std::min({cur.step, kMaxTravel, retry_cap, (s_to - cur.s) * dir});
+        const double to = travel == (s_to - cur.s) * dir ? s_to : cur.s + dir * travel;
+        search.evaluate(to, next);
+        if (const int broken = search.step_held(cur, next); broken >= 0) {
+            if (travel > here_tol) {
+                retry_cap = 0.25 * travel;
+                ++stats.retreats;
+                continue;
+            }
+            // Within the tolerance of here, link `broken` lost its root.
+            const LinkCheck& l = cur.links[static_cast<size_t>(broken)];
+            const Bracket b{cur.s, to, broken, l.gentle || l.at_root ? JamKind::root_vanishes : JamKind::nearer_root,
+                            cur.frame.handles[static_cast<size_t>(broken) + 1].pos};
+            return done(make_jam(b, start_arc, head_speed, dir));
+        }
+        std::swap(cur, next);
+        retry_cap = INFINITY;
+        if (candidate && (cur.s - candidate->valid) * dir > 0.0) candidate.reset();  // it was not in the way
+        if (cur.s == s_to) return done(std::nullopt);
+    }
+}
+
+}  // namespace dragon
