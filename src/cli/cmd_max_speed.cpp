@@ -7,7 +7,9 @@
 #include <fmt/ranges.h>
 
 #include "cli/commands.hpp"
+#include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
+#include "dragon/tables.hpp"
 #include "dragon/turnaround.hpp"
 
 namespace dragon::cli {
@@ -35,16 +37,31 @@ void register_max_speed(CLI::App& app, Registry& reg) {
         s.path.kind = PathKind::turnaround;
         const MaxSpeed m = max_head_speed(s, opt->limit, opt->from, opt->to);
         if (opt->json) {
-            fmt::print("{{\"max_head_speed\": {}, \"ratio\": {}, \"handle\": {}, \"time\": {}, "
-                       "\"tied\": [{}], \"head_arc\": {}, \"limit\": {}, \"from\": {}, \"to\": {}, \"scan_step\": {}, "
-                       "\"candidates\": {}, \"evaluations\": {}}}\n",
-                       m.max_head_speed, m.ratio, m.handle, m.time, fmt::join(m.tied, ", "), m.head_arc, opt->limit, opt->from,
-                       opt->to, m.scan_step, m.candidates, m.evaluations);
+            print_json({{"max_head_speed", m.max_head_speed},
+                        {"ratio", m.unbounded ? Json(nullptr) : Json(m.ratio)},
+                        {"unbounded", m.unbounded},
+                        {"handle", m.handle},
+                        {"time", m.time},
+                        {"tied", m.tied},
+                        {"head_arc", m.head_arc},
+                        {"limit", opt->limit},
+                        {"from", m.from},
+                        {"to", m.to},
+                        {"jam", jam_json(m.jam)},
+                        {"scan_step", m.unbounded ? Json(nullptr) : Json(m.scan_step)},
+                        {"candidates", m.candidates},
+                        {"evaluations", m.evaluations}});
+            return 0;
+        }
+        if (m.unbounded) {
+            fmt::print("No head speed keeps every handle at or under {} m/s: {}\n", opt->limit, jam_sentence(*m.jam));
+            fmt::print("  as that moment nears, handle {}'s speed grows without bound, whatever the head's speed\n",
+                       m.jam->handle);
             return 0;
         }
         fmt::print("Largest head speed with every handle at or under {} m/s: {:.6f} m/s\n", opt->limit,
                    m.max_head_speed);
-        fmt::print("  speed ratio (fastest handle / head): {:.9f}\n", m.ratio);
+        fmt::print("  speed ratio (fastest handle / head, by magnitude): {:.9f}\n", m.ratio);
         std::string who = fmt::format("handle {}", m.handle);
         if (m.tied.size() > 1) who = fmt::format("handles {} (equal speeds)", fmt::join(m.tied, ", "));
         fmt::print("  reached by {} at t = {:.6f} s of the Q4 run (head {:.6f} m along the path "
@@ -52,9 +69,10 @@ void register_max_speed(CLI::App& app, Registry& reg) {
         // The window is in time at the scenario's head speed: say how much of the path that is,
         // since a slow head may never reach the S-curve in it.
         fmt::print("  searched t = {}..{} s (the head from {:.6g} m to {:.6g} m along the path at {} m/s): "
-                   "coarse scan every {:.4g} s, {} local maxima refined, {} chains solved\n", opt->from,
-                   opt->to, s.head_speed * opt->from, s.head_speed * opt->to, s.head_speed, m.scan_step,
+                   "coarse scan every {:.4g} s, {} local maxima refined, {} chains solved\n", format_time(m.from),
+                   format_time(m.to), s.head_speed * m.from, s.head_speed * m.to, s.head_speed, m.scan_step,
                    m.candidates, m.evaluations);
+        if (m.jam) fmt::print("  the search ends there, short of t = {} s: {}\n", opt->to, jam_sentence(*m.jam));
         return 0;
     };
 }

@@ -1,4 +1,7 @@
 // dragon min-pitch (Q3): the smallest pitch that reaches the turning space collision-free.
+#include <cmath>
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
@@ -30,24 +33,37 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
         const Scenario s = opt->scenario.resolve();
         const MinPitch m = min_pitch(s, opt->lo, opt->hi, opt->grid);
         if (opt->json) {
-            std::string iv;
+            Json intervals = Json::array();
             for (const PitchInterval& i : m.intervals)
-                iv += fmt::format("{}{{\"lo\": {}, \"hi\": {}, \"feasible\": {}}}", iv.empty() ? "" : ", ",
-                                  json_number(i.lo), json_number(i.hi), i.feasible ? "true" : "false");
-            fmt::print("{{\"pitch\": {}, \"turn_radius\": {}, \"search\": [{}, {}], \"intervals\": [{}], "
-                       "\"guarantee\": \"{}\"}}\n",
-                       json_number(m.pitch), json_number(s.path.turn_radius), json_number(m.search_lo),
-                       json_number(m.search_hi), iv, m.guarantee);
+                intervals.push_back({{"lo", i.lo}, {"hi", i.hi}, {"feasible", i.feasible}});
+            Json jam = jam_json(m.jam ? std::optional<Jam>(m.jam->jam) : std::nullopt);
+            if (m.jam) jam["pitch"] = m.jam->pitch;
+            print_json({{"pitch", std::isnan(m.pitch) ? Json(nullptr) : Json(m.pitch)},
+                        {"below_range", m.below_range},
+                        {"above_range", m.above_range},
+                        {"turn_radius", s.path.turn_radius},
+                        {"search", {m.search_lo, m.search_hi}},
+                        {"grid", m.grid},
+                        {"intervals", intervals},
+                        {"jam", jam},
+                        {"guarantee", m.guarantee}});
             return 0;
         }
-        if (std::isnan(m.pitch))
-            fmt::print("no pitch in [{}, {}] m reaches radius {} m without a collision\n", m.search_lo,
-                       m.search_hi, s.path.turn_radius);
+        // The pitch is resolved to tol::pitch (1e-9 m): ten decimals show it.
+        if (m.below_range)
+            fmt::print("the range's low end, {} m, already reaches radius {} m with no collision: the minimum "
+                       "pitch lies at or below it (lower --lo to find it)\n", m.search_lo, s.path.turn_radius);
+        else if (m.above_range)
+            fmt::print("no pitch in [{}, {}] m reaches radius {} m without a collision: the minimum pitch lies "
+                       "above {} m (raise --hi to find it)\n", m.search_lo, m.search_hi, s.path.turn_radius, m.search_hi);
         else
-            fmt::print("minimum pitch: {:.8f} m (head reaches radius {} m with no collision on the way)\n",
+            fmt::print("minimum pitch: {:.10f} m (head reaches radius {} m with no collision on the way)\n",
                        m.pitch, s.path.turn_radius);
         for (const PitchInterval& i : m.intervals)
-            fmt::print("  [{:.8f}, {:.8f}] m  {}\n", i.lo, i.hi, i.feasible ? "collision-free" : "collides");
+            fmt::print("  [{:.10f}, {:.10f}] m  {}\n", i.lo, i.hi, i.feasible ? "collision-free" : "collides");
+        if (m.jam)
+            fmt::print("at pitch {} m (the largest of the scan where this happens) the dragon cannot follow the spiral "
+                       "to radius {} m at all: {}\n", m.jam->pitch, s.path.turn_radius, jam_sentence(m.jam->jam));
         fmt::print("search: {}\n", m.guarantee);
         return 0;
     };
