@@ -10,6 +10,7 @@
 
 #include "dragon/geometry.hpp"
 #include "dragon/path.hpp"
+#include "dragon/progress.hpp"
 #include "dragon/scenario.hpp"
 
 namespace dragon {
@@ -118,7 +119,9 @@ struct RunClearance {
     double scan_step;     // s
     int evaluations;      // frames whose clearance was computed
 };
-RunClearance min_clearance(const Scenario& s, double t0 = -100.0, double t1 = 100.0);
+// `progress` hears of the coarse scan's samples (most of the time taken).
+RunClearance min_clearance(const Scenario& s, double t0 = -100.0, double t1 = 100.0,
+                           const WorkProgress& progress = {});
 
 // Q5: the largest head speed with every handle at or under `limit`. The speed ratio
 // (largest handle speed over the head's) does not depend on the head speed, so it is maximised
