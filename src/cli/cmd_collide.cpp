@@ -5,6 +5,7 @@
 #include "cli/contact_search.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
+#include "cli/status.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/tables.hpp"
@@ -18,18 +19,27 @@ struct CollideOptions {
     std::optional<double> to;
     bool json = false;
     std::string out;
+    std::optional<int> digits;
+    bool quiet = false;
 };
 }  // namespace
 
 void register_collide(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<CollideOptions>();
     CLI::App* sub = app.add_subcommand("collide", "Q2: the first moment two benches touch, to 1e-9 s");
-    opt->scenario.add_to(sub);
+    opt->scenario.add_to(sub, ScenarioUse::either_path());
     sub->add_option("--from", opt->from, "Search from this time, s (default 0)");
     sub->add_option("--to", opt->to, "Search up to this time, s (default: until the head reaches the centre)");
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
     sub->add_option("-o,--out", opt->out, "Also write the moment's handles (.xlsx: result2 layout, .csv, .json)");
+    sub->add_option("--digits", opt->digits, "Decimals of x, y and speed in a .csv or .json -o, 0 to 17 (default 6)");
+    add_quiet_flag(sub, opt->quiet);
     reg["collide"] = [opt]() {
+        const std::string ext = extension_of(opt->out);
+        if (opt->digits && ext != ".csv" && ext != ".json")
+            throw InputError(fmt::format("--digits {} is not allowed {}: it sets the decimals of a .csv or .json -o",
+                                         *opt->digits, opt->out.empty() ? "without -o" : "with " + ext));
+        const int digits = checked_digits(opt->digits);
         const Scenario s = opt->scenario.resolve();
         const Simulation sim(s);
         double to = opt->to.value_or(sim.end_time());
@@ -47,7 +57,8 @@ void register_collide(CLI::App& app, Registry& reg) {
         }
         if (!opt->out.empty()) {
             if (extension_of(opt->out) == ".xlsx") write_result2_xlsx(c->frame, opt->out);
-            else write_table({c->frame}, opt->out);
+            else write_table({c->frame}, opt->out, digits);
+            status(opt->quiet, "wrote {}", opt->out);
         }
         if (opt->json) {
             fmt::print("{{\"time\": {}, \"benches\": [{}, {}], \"head_radius\": {}, \"point\": [{}, {}], "
