@@ -36,7 +36,10 @@ void register_figures(CLI::App& app, Registry& reg) {
     sub->add_option("--theme", opt->theme, "Colour theme: light, dark or a .toml file (default light)")->excludes(list);
     sub->add_option("--scale", opt->scale, "Pixel size relative to the gallery's ~1000 px (0.25..8, default 1)")
         ->excludes(list);
-    sub->add_option("--only", opt->only, "Make only these figures (names as --list prints them)")->excludes(list);
+    sub->add_option("--only", opt->only, "Make only these figures, e.g. fig1_link_geometry,plot_speeds (as --list "
+                                         "names them)")
+        ->delimiter(',')  // as solve --only q1,q2
+        ->excludes(list);
     add_quiet_flag(sub, opt->quiet);
     reg["figures"] = [opt]() {
         if (opt->list) {

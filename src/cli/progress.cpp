@@ -23,7 +23,9 @@ std::string progress_text(const std::string& unit, std::int64_t done, std::int64
     if (done > 0 && elapsed > 0.0) {
         const double rate = static_cast<double>(done) / elapsed;
         const auto left = static_cast<long long>(static_cast<double>(total - done) / rate + 0.5);
-        text += fmt::format("  {:.3g}/s  {}:{:02d} left", rate, left / 60, static_cast<int>(left % 60));
+        // "2345/s", "3.1/s", "0.05/s": whole numbers once there are some, never "2.3e+03".
+        const std::string per_second = rate >= 100.0 ? fmt::format("{:.0f}", rate) : fmt::format("{:.3g}", rate);
+        text += fmt::format("  {}/s  {}:{:02d} left", per_second, left / 60, static_cast<int>(left % 60));
     }
     return text;
 }

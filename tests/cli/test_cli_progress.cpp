@@ -62,6 +62,8 @@ TEST(Progress, TheLineSaysHowFarHowFastAndHowLong) {
     EXPECT_EQ(progress_text("frames", 300, 300, 4.0), line(24, "300/300 frames  75/s  0:00 left"));
     // 1 of 1000 in 10 s: 0.1 a second, 9990 s to go.
     EXPECT_EQ(progress_text("samples", 1, 1000, 10.0), line(0, "1/1000 samples  0.1/s  166:30 left"));
+    // 2345 a second: a whole number, not 2.35e+03.
+    EXPECT_EQ(progress_text("samples", 2345, 4690, 1.0), line(12, "2345/4690 samples  2345/s  0:01 left"));
 }
 
 TEST(Progress, ShownOnATerminalAndErasedAtTheEnd) {
