@@ -70,14 +70,24 @@ void ScenarioFlags::add_to(CLI::App* sub, ScenarioUse use) {
     reasons()[sub] = use.why_not;
     sub->add_option("--scenario", file_, "Scenario TOML file (see assets/cumcm2024.toml); flags override it");
     if (use.path_choice) sub->add_option("--path", path_kind_, "Path: spiral (Q1-Q3, default) or turnaround (Q4-Q5)");
-    std::optional<double>* const slots[] = {&pitch_,       &speed_,      nullptr,       &head_length_,
-                                            &body_length_, &width_,      &hole_offset_, &start_turn_,
-                                            &turn_radius_, &turn_pitch_, &arc_ratio_};
-    for (size_t i = 0; i < std::size(kFlags); ++i) {
-        const FlagInfo& f = kFlags[i];
+    // Where each value's flag is stored (the bench count is a whole number of its own).
+    const auto slot = [this](ScenarioValues v) -> std::optional<double>* {
+        if (v == value::pitch) return &pitch_;
+        if (v == value::head_speed) return &speed_;
+        if (v == value::head_length) return &head_length_;
+        if (v == value::body_length) return &body_length_;
+        if (v == value::width) return &width_;
+        if (v == value::hole_offset) return &hole_offset_;
+        if (v == value::start_turn) return &start_turn_;
+        if (v == value::turn_radius) return &turn_radius_;
+        if (v == value::turn_pitch) return &turn_pitch_;
+        if (v == value::arc_ratio) return &arc_ratio_;
+        return nullptr;
+    };
+    for (const FlagInfo& f : kFlags) {
         if (!(use.all() & f.value)) continue;
-        if (slots[i]) sub->add_option(f.name, *slots[i], f.help);
-        else sub->add_option(f.name, bench_count_, f.help);
+        if (f.value == value::bench_count) sub->add_option(f.name, bench_count_, f.help);
+        else sub->add_option(f.name, *slot(f.value), f.help);
     }
 }
 
