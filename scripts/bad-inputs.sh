@@ -11,6 +11,9 @@ trap 'rm -rf "$work"' EXIT
 cd "$work"
 printf '[dragon\nwidth = 0.3\n' > bad.toml
 printf '[dragon]\nwidht = 0.3\n' > unknown.toml
+printf '[[dragon]]\nwidth = 0.3\n' > array.toml
+printf '[dragon]\nwidth = nan\n' > nan.toml
+printf '[path]\npitch = 0.1\n' > narrow.toml
 
 # One table row: the command, its exit code, and the first line of stderr (or, for a run that
 # works, the first line of stdout; with row_last, its last line). Pipes are escaped for the table.
@@ -23,8 +26,10 @@ row() {
   if [ "$code" -eq 0 ]; then line="(works) $($pick -n 1 out.txt)"; else line=$(head -n 1 err.txt); fi
   [ "$code" -eq 0 ] && [ ! -s out.txt ] && line="(works) $(head -n 1 err.txt)"
   [ "$code" -ne 0 ] && [ "$(wc -l <err.txt)" -ne 1 ] && line="$line (+$(($(wc -l <err.txt) - 1)) more lines)"
-  printf '| `dragon %s` | %s | %s |\n' "$*" "$code" "${line//|/\\|}"
-  rm -f out.* a.* film* x.* *.png *.mp4 *.gif *.webm
+  local shown="" a quotes="''"
+  for a in "$@"; do shown+="${shown:+ }${a:-$quotes}"; done  # an empty argument shows as ''
+  printf '| `dragon %s` | %s | %s |\n' "$shown" "$code" "${line//|/\\|}"
+  rm -rf out.* a.* film* x.* *.png *.mp4 *.gif *.webm out
 }
 header() { printf '\n## %s\n\n| Input | Exit | Message |\n|---|---|---|\n' "$1"; }
 
@@ -46,7 +51,7 @@ row simulate --head-length -1 -o out.csv
 row simulate --body-length 0 -o out.csv
 row simulate --width nan -o out.csv
 row simulate --hole-offset 1.1 -o out.csv
-row simulate --body-count 0 -o out.csv
+row simulate --bench-count 0 -o out.csv
 row simulate --pitch 0.25 -o out.csv
 row simulate --start-turn 0 -o out.csv
 row simulate --start-turn -3 -o out.csv
@@ -66,6 +71,51 @@ row min-pitch --grid 1e-9
 row solve -o /proc/forbidden
 row simulate --to 1 --scenario bad.toml
 row simulate --to 1 --scenario unknown.toml
+row simulate --to 1 --scenario array.toml
+row simulate --to 1 --scenario nan.toml
+row simulate --to 1 --scenario /tmp
+row simulate --hole-offset nan -o out.csv
+row min-pitch --hi 1e308
+row min-pitch --grid 1e-300
+row simulate --step 1e-300 -o out.csv
+row simulate --digits 18 -o out.csv
+row simulate --digits 3 -o out.xlsx
+row collide --digits 3
+row simulate --to 1 -o /proc/x.csv
+
+# The same under a file size limit of 8 KiB: every write past it fails as on a full disk.
+row_full() { (trap '' XFSZ; ulimit -f 8; row "$@"); }
+
+header "A full disk: the file size limited to 8 KiB (tests/cli/test_cli_outputs.cpp)"
+row_full render --time 1 -o x.png
+row_full simulate --to 100 -o x.xlsx
+row_full solve --only q1 -o out
+
+header "Command line and flags (tests/cli/test_cli_core.cpp, tests/cli/test_cli_flags.cpp)"
+row
+row simulat --to 1
+row foo
+row simulate --pich 0.6
+row simulate --body-count 3
+row simulate 5
+row simulate --pitch '' -o out.csv
+row simulate --pitch= -o out.csv
+row simulate -o ''
+row solve -o ''
+row collide --to ''
+row simulate --scenario ''
+row turnaround --pitch 5
+row max-speed --start-turn 3
+row min-pitch --pitch 0.1
+row min-pitch --path turnaround
+row solve --path turnaround
+row figures --path turnaround
+row simulate --turn-pitch 2 -o out.csv
+row simulate --path turnaround --pitch 0.6 -o out.csv
+row solve --only q4 --pitch 0.5
+row turnaround --no-clearance --to 5
+row figures --list --scale 2
+row max-speed --quiet
 
 header "dragon video (tests/cli/test_cli_video.cpp)"
 row video -o a.mp4 --size 65x48 --to 1
@@ -82,6 +132,12 @@ row video -o a.mp4 --size big --to 1
 row video -o a.mp4 --size 64x48 --fps 5 --from 0 --to 1 --preset glacial
 row video -o a.gif --size 64x48 --fps 5 --from 0 --to 1 --colours 1
 row video -o a.mp4 --size 64x48 --fps 5 --from 0 --to 1 --speedup -1
+row video -o a.mp4 --size 64x48 --fps 5 --from 0 --to 1 --crf -1
+row video -o a.gif --size 64x48 --fps 5 --from 0 --to 1 --crf 20
+row video -o a.webm --size 64x48 --fps 5 --from 0 --to 1 --preset fast
+row video -o a.mp4 --size 64x48 --fps 5 --from 0 --to 1 --colours 64
+row video -o a.mp4 --size 64x48 --fps 1e-9 --to 1
+row video -o a.mp4 --size 64x48 --speedup 1e-300 --to 1
 
 header "dragon render and figures (tests/render/test_cli_render.cpp)"
 row render --time 100 -o bad.bmp
@@ -91,6 +147,7 @@ row render --time 100 --theme sepia -o x.png
 row render --time 1e6 -o x.png
 row render --time 100 -o /no/such/dir/x.png
 row figures --only no_such_figure -o figs
+row render --time 1 --theme /tmp -o x.png
 
 header "Out of range (tests/cli/test_cli_extremes.cpp)"
 row simulate --start-turn 1e5 --to 1
@@ -98,15 +155,15 @@ row simulate --pitch 2000 --to 1
 row simulate --speed 1e10 --to 0
 row simulate --hole-offset 1.0999 --body-length 2.2 --to 0
 row simulate --path turnaround --from 1e7 --to 1e7
-row simulate --body-count 1000000 --body-length 20 --to 0
+row simulate --bench-count 1000000 --body-length 20 --to 0
 
 header "Extreme but valid scenarios (tests/cli/test_cli_extremes.cpp)"
-row_last simulate --body-count 1 --to 3
-row collide --body-count 1
-row render --body-count 1 --collision -o x.png
-row video --body-count 1 --size 64x48 -o x.mp4
-row_last simulate --body-count 10000 --to 0
-row render --body-count 10000 --time 10 --size 64x64 -o x.png
+row_last simulate --bench-count 1 --to 3
+row collide --bench-count 1
+row render --bench-count 1 --collision -o x.png
+row video --bench-count 1 --size 64x48 -o x.mp4
+row_last simulate --bench-count 10000 --to 0
+row render --bench-count 10000 --time 10 --size 64x64 -o x.png
 row_last simulate --pitch 0.3000001 --to 1
 row collide --pitch 0.3000001
 row render --pitch 0.3000001 --collision -o x.png
@@ -129,6 +186,8 @@ row min-pitch --turn-radius 20 --lo 1.3 --hi 1.4
 row turnaround --turn-radius 20 --no-clearance
 row_last turnaround --turn-radius 20
 row_last max-speed --turn-radius 20
+row min-pitch --scenario narrow.toml --lo 0.44 --hi 0.46 --grid 0.01
+row_last max-speed --scenario narrow.toml
 
 cat <<'TEXT'
 
@@ -139,7 +198,7 @@ Wall times on 2 cores, Release build.
 | Input | What happens |
 |---|---|
 | `dragon turnaround --speed 100` | Works, about 12 s: the clearance scan steps by 0.05 m of head travel, and -100..100 s is 20 km of path at 100 m/s. `--speed 1000` is refused (too long to scan); narrow `--from`/`--to` or add `--no-clearance`. |
-| `dragon turnaround --body-count 10000` | Works, about 18 s (smallest clearance 0.279043 m, benches 1 and 17, as with 223 benches). |
-| `dragon max-speed --body-count 10000` | Works, about 3.1 s. |
-| `dragon collide --body-count 10000` | Works, about 11 s (first contact at 412.473837682 s, benches 1 and 9, as with 223 benches): each of the search's steps evaluates all 10,000 benches. |
+| `dragon turnaround --bench-count 10000` | Works, about 18 s (smallest clearance 0.279043 m, benches 1 and 17, as with 223 benches). |
+| `dragon max-speed --bench-count 10000` | Works, about 3.1 s. |
+| `dragon collide --bench-count 10000` | Works, about 11 s (first contact at 412.473837682 s, benches 1 and 9, as with 223 benches): each of the search's steps evaluates all 10,000 benches. |
 TEXT

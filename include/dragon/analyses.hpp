@@ -9,6 +9,7 @@
 
 #include "dragon/chain.hpp"
 #include "dragon/collision.hpp"
+#include "dragon/progress.hpp"
 
 namespace dragon {
 
@@ -84,6 +85,8 @@ std::optional<Contact> contact_before_boundary(Scenario s, double pitch);
 // grid points, so `grid` trades time for the narrowest window the scan is sure to see.
 inline constexpr double kDefaultPitchGrid = 2.5e-3;
 inline constexpr int kMaxPitchGridSteps = 100000;  // about 10 minutes of runs on 2 cores
-MinPitch min_pitch(const Scenario& s, double lo, double hi, double grid = kDefaultPitchGrid);
+// `progress` hears of the first scan's runs, one per grid pitch (most of the time taken).
+MinPitch min_pitch(const Scenario& s, double lo, double hi, double grid = kDefaultPitchGrid,
+                   const WorkProgress& progress = {});
 
 }  // namespace dragon

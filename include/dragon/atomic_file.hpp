@@ -3,14 +3,17 @@
 // remove_live_temp_files() lets a signal handler clear the temporary files a kill interrupts.
 #pragma once
 
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace dragon {
 
 class AtomicFile {
 public:
-    // Checks the target's folder is writable now, so a bad path fails before any work.
-    // Throws InputError naming the path if not.
+    // Creates the (empty) temporary file now, so a bad path fails before any work: throws
+    // InputError naming the target and why (a folder, a missing folder, no permission, a
+    // file system that refuses it).
     explicit AtomicFile(std::string target);
     ~AtomicFile();  // removes the temporary file unless commit() succeeded; never throws
     AtomicFile(const AtomicFile&) = delete;
@@ -21,13 +24,22 @@ public:
     const std::string& target() const { return target_; }
     // Renames the temporary file over the target. Throws std::runtime_error on failure.
     void commit();
+    // The error for a failed write: "cannot write '<target>': <reason>". It names the target,
+    // never the hidden temporary file the user did not choose.
+    std::runtime_error write_error(const std::string& reason) const;
 
 private:
+    friend void commit_together(const std::vector<AtomicFile*>& files);
     std::string target_;
     std::string temp_;
     bool committed_ = false;
     int live_slot_ = -1;  // where temp_ is registered for remove_live_temp_files()
 };
+
+// Commits several files as one: every target ends up new or, if a rename fails, every target
+// as it was (those already renamed are put back from hard links to the old files, made first).
+// Throws std::runtime_error naming the target that failed.
+void commit_together(const std::vector<AtomicFile*>& files);
 
 // Removes the temporary file of every AtomicFile not yet committed or destroyed. Only
 // async-signal-safe calls (no allocation, no locks): made for a handler of SIGINT, SIGTERM or

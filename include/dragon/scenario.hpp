@@ -56,11 +56,54 @@ struct Scenario {
     double coil_pitch() const { return path.kind == PathKind::spiral ? path.pitch : path.turn_pitch; }
 };
 
-// Throws InputError naming the first bad value and what is allowed.
+// The values of a scenario, one bit each, so that a check covers only what a computation reads:
+// a turnaround study never reads the plain spiral's pitch, so a file's pitch of 0.1 m is no
+// reason to refuse it.
+using ScenarioValues = unsigned;
+namespace value {
+inline constexpr ScenarioValues bench_count = 1u << 0;
+inline constexpr ScenarioValues head_length = 1u << 1;
+inline constexpr ScenarioValues body_length = 1u << 2;
+inline constexpr ScenarioValues width = 1u << 3;
+inline constexpr ScenarioValues hole_offset = 1u << 4;
+inline constexpr ScenarioValues head_speed = 1u << 5;
+inline constexpr ScenarioValues pitch = 1u << 6;        // the plain spiral's
+inline constexpr ScenarioValues start_turn = 1u << 7;   // the plain spiral's
+inline constexpr ScenarioValues turn_radius = 1u << 8;  // the turning space
+inline constexpr ScenarioValues turn_pitch = 1u << 9;   // the turnaround path's spirals
+inline constexpr ScenarioValues arc_ratio = 1u << 10;   // the turnaround path's S-curve
+inline constexpr ScenarioValues bench = bench_count | head_length | body_length | width | hole_offset;
+inline constexpr ScenarioValues all = (1u << 11) - 1;
+}  // namespace value
+
+// What a Simulation on a path of this kind reads: the benches and the head speed, and the
+// plain spiral's pitch and start turn or the turnaround path's turn radius, pitch and ratio.
+ScenarioValues values_read(PathKind kind);
+
+// A value that is not allowed, and which values the failed rule involves (one, or two or
+// more for a rule between them, such as the pitch against the width).
+struct ScenarioError : InputError {
+    ScenarioError(const std::string& what, ScenarioValues involved) : InputError(what), values(involved) {}
+    ScenarioValues values;
+};
+
+// Throws ScenarioError naming the first bad value among `values` and what is allowed. A rule
+// between values is checked when all of them are among `values`.
+void validate(const Scenario& s, ScenarioValues values);
+// validate(s, values_read(s.path.kind)): what a Simulation of s needs.
 void validate(const Scenario& s);
 
-// Reads a TOML scenario over `base` (missing keys keep base's values); throws InputError
-// for an unreadable or malformed file, an unknown key or a bad value.
+// A scenario read from a TOML file, and which values the file set.
+struct LoadedScenario {
+    Scenario scenario;
+    ScenarioValues values = 0;
+};
+// Reads a TOML scenario over `base` (missing keys keep base's values); throws InputError for an
+// unreadable or malformed file (or a folder), an unknown section or key, or a value of the
+// wrong type. Values are not range-checked here: validate() does that for those a computation
+// reads.
+LoadedScenario read_scenario_file(const std::string& path, Scenario base = {});
+// read_scenario_file(path, base).scenario.
 Scenario load_scenario(const std::string& path, Scenario base = {});
 
 const char* to_string(PathKind k);

@@ -2,12 +2,15 @@
 // Every writer is all-or-nothing (temporary file, then rename).
 #pragma once
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
 #include "dragon/chain.hpp"
 
 namespace dragon {
+
+class AtomicFile;
 
 // The contest's row label of a handle (0..N): 龙头, 第k节龙身, 龙尾, 龙尾（后）.
 std::string handle_label(int handle, int handle_count);
@@ -16,16 +19,33 @@ std::string format_time(double t);
 // A time header as the contest writes it: "0 s", "-100 s", "0.5 s".
 std::string time_header(double t);
 
-// Long form, header t,handle,x,y,speed; one row per handle per frame; 6 decimals.
-void write_csv(const std::vector<Frame>& frames, const std::string& path);
+// Decimals of the CSV and JSON tables: 6 by default (the contest's), at most 17 (every bit of a
+// double, for a reader who wants the value itself).
+inline constexpr int kDefaultDigits = 6;
+inline constexpr int kMaxDigits = 17;
+// v with `digits` decimals (0..17) as the tables print it, never "-0.000": by round6's rule
+// (v * 10^digits to the nearest integer, halves away from zero) while that product is below
+// 2^52, so that 6 digits print what the workbooks hold; beyond, v's exact decimal expansion.
+std::string format_fixed(double v, int digits);
+
+// Long form, header t,handle,x,y,speed; one row per handle per frame; `digits` decimals.
+void write_csv(const std::vector<Frame>& frames, const std::string& path, int digits = kDefaultDigits);
+// The same CSV on an open stream (stdout, say); throws std::runtime_error if it cannot be written.
+void print_csv(const std::vector<Frame>& frames, std::FILE* out, int digits = kDefaultDigits);
 // {"times": [...], "handles": N, "frames": [{"t", "x": [...], "y": [...], "speed": [...]}]}
-void write_json(const std::vector<Frame>& frames, const std::string& path);
+void write_json(const std::vector<Frame>& frames, const std::string& path, int digits = kDefaultDigits);
 // result1.xlsx / result4.xlsx layout: sheets 位置 and 速度, one column per frame.
 void write_result_xlsx(const std::vector<Frame>& frames, const std::string& path);
 // result2.xlsx layout: Sheet1, one row per handle with x, y and speed.
 void write_result2_xlsx(const Frame& frame, const std::string& path);
-// Picks CSV, JSON or XLSX by the extension; throws InputError for any other.
-void write_table(const std::vector<Frame>& frames, const std::string& path);
+// The two workbooks into an AtomicFile the caller commits: several files made all new or all
+// old together (see commit_together). Workbooks hold 6 decimals, as the contest's templates,
+// and are the same bytes for the same frames (their creation time is fixed).
+void write_result_xlsx(const std::vector<Frame>& frames, AtomicFile& out);
+void write_result2_xlsx(const Frame& frame, AtomicFile& out);
+// Picks CSV, JSON or XLSX by the extension; throws InputError for any other. `digits` is for
+// CSV and JSON.
+void write_table(const std::vector<Frame>& frames, const std::string& path, int digits = kDefaultDigits);
 
 // Rounds to 6 decimals the way the tables print, without a negative zero.
 double round6(double v);

@@ -10,6 +10,7 @@
 
 #include "dragon/geometry.hpp"
 #include "dragon/path.hpp"
+#include "dragon/progress.hpp"
 #include "dragon/scenario.hpp"
 #include "dragon/valid_motion.hpp"
 
@@ -140,8 +141,10 @@ struct RunClearance {
     double from = 0.0, to = 0.0;
     std::optional<Jam> jam;
 };
-// Over [t0, t1] cut to the valid motion (Simulation::clip_to_valid).
-RunClearance min_clearance(const Scenario& s, double t0 = -100.0, double t1 = 100.0);
+// Over [t0, t1] cut to the valid motion (Simulation::clip_to_valid). `progress` hears of the
+// coarse scan's samples (most of the time taken).
+RunClearance min_clearance(const Scenario& s, double t0 = -100.0, double t1 = 100.0,
+                           const WorkProgress& progress = {});
 
 // Q5: the largest head speed with every handle at or under `limit`. The speed ratio
 // (largest handle speed over the head's) does not depend on the head speed, so it is maximised

@@ -28,11 +28,11 @@ const char* to_string(VideoFormat f);
 struct VideoOptions {
     int width = 1280;   // pixels; even for mp4 and webm (yuv420p halves the chroma planes)
     int height = 720;
-    double fps = 30.0;  // frames per second of the video, (0, 240]
-    // Quality: constant rate factor; lower is better and larger. -1: the codec's default here
+    double fps = 30.0;  // frames per second of the video, 0.01 to 240
+    // Quality: constant rate factor; lower is better and larger. None: the codec's default here
     // (H.264: 20, sharper than x264's 23 on thin lines at little cost in size; VP9: 32).
-    // Ignored for GIF.
-    int crf = -1;
+    // GIF has none.
+    std::optional<int> crf;
     // libx264 preset (ultrafast .. veryslow). Encoding costs as much as drawing here, and only
     // "ultrafast" (~6 ms of CPU per 720p frame against ~15 for "veryfast") leaves two cores
     // room for 100 frames/s at 720p and 50 at 1080p. It is sharp at crf 20 (no deblocking
@@ -43,8 +43,8 @@ struct VideoOptions {
     // palette keeps small distinct patches (head, tail) down to ~32.
     int colours = 256;
 };
-// Throws InputError for a size or rate the format cannot take (odd size for yuv420p, fps <= 0,
-// an unknown preset, a crf or palette size out of range).
+// Throws InputError for a size or rate the format cannot take (odd size for yuv420p, fps out
+// of range, an unknown preset, a crf or palette size out of range, a crf for GIF).
 void validate(const VideoOptions& opt, VideoFormat format);
 
 // Encodes frames to a file as they come; never holds more than the codec's own look-ahead.

@@ -7,6 +7,7 @@
 #include "cli/contact_search.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
+#include "cli/status.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/tables.hpp"
@@ -20,6 +21,8 @@ struct CollideOptions {
     std::optional<double> to;
     bool json = false;
     std::string out;
+    std::optional<int> digits;
+    bool quiet = false;
 };
 
 // With no contact the output file still answers: the table with its header and no rows, so
@@ -33,7 +36,7 @@ void write_no_contact(const std::string& path) {
 void register_collide(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<CollideOptions>();
     CLI::App* sub = app.add_subcommand("collide", "Q2: the first moment two benches touch, to 1e-9 s");
-    opt->scenario.add_to(sub);
+    opt->scenario.add_to(sub, ScenarioUse::either_path());
     sub->add_option("--from", opt->from, "Search from this time, s (default 0)");
     sub->add_option("--to", opt->to,
                     "Search up to this time, s (default: as far as the dragon can follow its path, the spiral's "
@@ -42,7 +45,14 @@ void register_collide(CLI::App& app, Registry& reg) {
     sub->add_option("-o,--out", opt->out,
                     "Also write the moment's handles (.xlsx: result2 layout, .csv, .json); with no contact, "
                     "the table's header and no rows");
+    sub->add_option("--digits", opt->digits, "Decimals of x, y and speed in a .csv or .json -o, 0 to 17 (default 6)");
+    add_quiet_flag(sub, opt->quiet);
     reg["collide"] = [opt]() {
+        const std::string ext = extension_of(opt->out);
+        if (opt->digits && ext != ".csv" && ext != ".json")
+            throw InputError(fmt::format("--digits {} is not allowed {}: it sets the decimals of a .csv or .json -o",
+                                         *opt->digits, opt->out.empty() ? "without -o" : "with " + ext));
+        const int digits = checked_digits(opt->digits);
         const Scenario s = opt->scenario.resolve();
         if (!std::isfinite(opt->from))
             throw InputError(fmt::format("--from {} is not allowed: give a finite time in seconds", opt->from));
@@ -52,7 +62,6 @@ void register_collide(CLI::App& app, Registry& reg) {
         if (opt->to && !(*opt->to > opt->from))
             throw InputError(fmt::format("--to {} is not allowed: it must be after --from {}", *opt->to, opt->from));
         if (!opt->out.empty()) {
-            const std::string ext = extension_of(opt->out);
             if (ext != ".csv" && ext != ".json" && ext != ".xlsx")
                 throw InputError(fmt::format("--out {} has extension '{}': use .csv, .json or .xlsx", opt->out, ext));
             AtomicFile probe(opt->out);  // fail on an unwritable path before any work
@@ -87,13 +96,13 @@ void register_collide(CLI::App& app, Registry& reg) {
                            jam ? format_resolved(to, jam->tolerance) : format_time(to));
                 if (jam) fmt::print("the search ends there: {}\n", jam_sentence(*jam));
             }
-            if (!opt->out.empty())
-                fmt::print(stderr, "no contact: wrote {} with the table's header and no rows\n", opt->out);
+            if (!opt->out.empty()) status(opt->quiet, "no contact: wrote {} with the table's header and no rows", opt->out);
             return 0;
         }
         if (!opt->out.empty()) {
             if (extension_of(opt->out) == ".xlsx") write_result2_xlsx(c->frame, opt->out);
-            else write_table({c->frame}, opt->out);
+            else write_table({c->frame}, opt->out, digits);
+            status(opt->quiet, "wrote {}", opt->out);
         }
         if (opt->json) {
             Json handles = Json::array();

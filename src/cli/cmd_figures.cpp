@@ -1,8 +1,12 @@
 // dragon figures: the gallery (the paper's five figures done right, and the plots behind them).
+#include <cstdint>
+
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "cli/scenario_flags.hpp"
+#include "cli/status.hpp"
 #include "dragon/figures.hpp"
 
 namespace dragon::cli {
@@ -15,18 +19,28 @@ struct FiguresOptions {
     double scale = 1.0;
     std::vector<std::string> only;
     bool list = false;
+    bool quiet = false;
 };
 }  // namespace
 
 void register_figures(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<FiguresOptions>();
     CLI::App* sub = app.add_subcommand("figures", "The figure gallery: the paper's figures done right, and plots");
-    opt->scenario.add_to(sub);
-    sub->add_option("-o,--out", opt->out, "Folder for the PNG files (default renders)");
-    sub->add_option("--theme", opt->theme, "Colour theme: light, dark or a .toml file (default light)");
-    sub->add_option("--scale", opt->scale, "Pixel size relative to the gallery's ~1000 px (0.25..8, default 1)");
-    sub->add_option("--only", opt->only, "Make only these figures (names as --list prints them)");
-    sub->add_flag("--list", opt->list, "List the figures and exit");
+    opt->scenario.add_to(sub, ScenarioUse::both_paths("the gallery draws both paths: the coil-in figures on the "
+                                                      "plain spiral, the turnaround ones on the turnaround path"));
+    auto* list = sub->add_flag("--list", opt->list, "List the figures and exit (takes no other option)");
+    // --list makes nothing: every option that shapes the figures would do nothing with it.
+    for (CLI::Option* o : sub->get_options())
+        if (o != list && o->get_name() != "--help") o->excludes(list);
+    sub->add_option("-o,--out", opt->out, "Folder for the PNG files (default renders)")->excludes(list);
+    sub->add_option("--theme", opt->theme, "Colour theme: light, dark or a .toml file (default light)")->excludes(list);
+    sub->add_option("--scale", opt->scale, "Pixel size relative to the gallery's ~1000 px (0.25..8, default 1)")
+        ->excludes(list);
+    sub->add_option("--only", opt->only, "Make only these figures, e.g. fig1_link_geometry,plot_speeds (as --list "
+                                         "names them)")
+        ->delimiter(',')  // as solve --only q1,q2
+        ->excludes(list);
+    add_quiet_flag(sub, opt->quiet);
     reg["figures"] = [opt]() {
         if (opt->list) {
             for (const auto& f : figure_list()) fmt::print("{:<22} {}\n", f.name, f.caption);
@@ -36,8 +50,13 @@ void register_figures(CLI::App& app, Registry& reg) {
         fo.theme = load_theme(opt->theme, DRAGON_ASSET_DIR);
         fo.scale = opt->scale;
         fo.only = opt->only;
-        write_figures(opt->out, opt->scenario.resolve(), fo,
-                      [](const FigureInfo&, const std::string& path) { fmt::print(stderr, "wrote {}\n", path); });
+        const std::int64_t total = static_cast<std::int64_t>(fo.only.empty() ? figure_list().size() : fo.only.size());
+        std::int64_t done = 0;
+        ProgressLine progress("figures", opt->quiet);
+        write_figures(opt->out, opt->scenario.resolve(), fo, [&](const FigureInfo&, const std::string& path) {
+            if (!opt->quiet) progress.print_above(fmt::format("wrote {}", path));
+            progress.update(++done, total);
+        });
         return 0;
     };
 }

@@ -27,7 +27,7 @@ void register_max_speed(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<MaxSpeedOptions>();
     CLI::App* sub = app.add_subcommand(
         "max-speed", "Q5: the largest head speed with every handle at or under the limit");
-    opt->scenario.add_to(sub);
+    opt->scenario.add_to(sub, ScenarioUse::turnaround_only());
     sub->add_option("--limit", opt->limit, "Handle speed limit, m/s (default 2)");
     sub->add_option("--from", opt->from, "Search from this time of the Q4 run, s (default -100)");
     sub->add_option("--to", opt->to, "Search to this time of the Q4 run, s (default 100)");

@@ -5,8 +5,10 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
+#include "cli/status.hpp"
 #include "dragon/analyses.hpp"
 
 namespace dragon::cli {
@@ -16,6 +18,7 @@ struct MinPitchOptions {
     ScenarioFlags scenario;
     double lo = 0.35, hi = 0.55, grid = kDefaultPitchGrid;
     bool json = false;
+    bool quiet = false;
 };
 }  // namespace
 
@@ -23,15 +26,20 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<MinPitchOptions>();
     CLI::App* sub = app.add_subcommand(
         "min-pitch", "Q3: the smallest pitch with which the head reaches the turning space collision-free");
-    opt->scenario.add_to(sub);
+    opt->scenario.add_to(sub, ScenarioUse::pitch_search());
     sub->add_option("--lo", opt->lo, "Smallest pitch searched, m (default 0.35)");
     sub->add_option("--hi", opt->hi, "Largest pitch searched, m (default 0.55)");
     sub->add_option("--grid", opt->grid,
                     "Pitch spacing of the first scan, m (default 0.0025); windows narrower than this may pass unseen");
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
+    add_quiet_flag(sub, opt->quiet);
     reg["min-pitch"] = [opt]() {
         const Scenario s = opt->scenario.resolve();
-        const MinPitch m = min_pitch(s, opt->lo, opt->hi, opt->grid);
+        const MinPitch m = [&] {
+            ProgressLine progress("pitches", opt->quiet);  // erased before the answer is printed
+            return min_pitch(s, opt->lo, opt->hi, opt->grid,
+                             [&progress](std::int64_t done, std::int64_t total) { progress.update(done, total); });
+        }();
         if (opt->json) {
             Json intervals = Json::array();
             for (const PitchInterval& i : m.intervals)

@@ -8,6 +8,7 @@
 #include "cli/render_flags.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
+#include "cli/status.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/render.hpp"
@@ -23,6 +24,7 @@ struct RenderOptions {
     std::optional<double> time;
     bool collision = false;
     std::string out;
+    bool quiet = false;
 };
 
 // The first contact on this scenario's path: the plain spiral from t = 0 as far as the dragon
@@ -43,13 +45,14 @@ Contact find_contact(const Simulation& sim) {
 void register_render(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<RenderOptions>();
     CLI::App* sub = app.add_subcommand("render", "Draw one moment of the dragon to PNG or SVG");
-    opt->scenario.add_to(sub);
+    opt->scenario.add_to(sub, ScenarioUse::drawing());
     auto* when = sub->add_option("--time", opt->time, "The moment to draw, s");
     auto* hit = sub->add_flag("--collision", opt->collision,
                               "Draw the first contact (the termination of coiling in), touching benches marked");
     when->excludes(hit);
     sub->add_option("-o,--out", opt->out, "Output file: .png or .svg")->required();
     opt->look.add_to(sub);
+    add_quiet_flag(sub, opt->quiet);
     reg["render"] = [opt]() {
         const std::string ext = extension_of(opt->out);
         if (ext != ".png" && ext != ".svg")
@@ -79,7 +82,7 @@ void register_render(CLI::App& app, Registry& reg) {
         const auto [w, h] = opt->look.size();
         if (ext == ".png") render_png(scene, w, h, opt->out);
         else render_svg(scene, w, h, opt->out);
-        fmt::print(stderr, "wrote {} ({} x {} px, t = {:.6f} s)\n", opt->out, w, h, frame.time);
+        status(opt->quiet, "wrote {} ({} x {} px, t = {:.6f} s)", opt->out, w, h, frame.time);
         return 0;
     };
 }

@@ -1,7 +1,13 @@
 // dragon solve: all five contest questions on one scenario: the workbooks, summary.json and
 // the paper-style tables.
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
 #include <set>
 
 #include <fmt/format.h>
@@ -10,6 +16,7 @@
 #include "cli/commands.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
+#include "cli/status.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/tables.hpp"
@@ -23,6 +30,7 @@ struct SolveOptions {
     ScenarioFlags scenario;
     std::string dir = "out";
     std::vector<std::string> only;
+    bool quiet = false;
 };
 
 // Every `every`-th frame of a table sampled each `step` seconds, for the printed excerpt.
@@ -33,13 +41,23 @@ std::vector<const Frame*> pick(const std::vector<Frame>& frames, double step, do
     return out;
 }
 
-void write_text(const std::string& path, const std::string& text) {
-    AtomicFile out(path);
+void write_text(AtomicFile& out, const std::string& text) {
+    errno = 0;
     std::FILE* f = std::fopen(out.temp_path().c_str(), "wb");
-    if (!f) throw std::runtime_error(fmt::format("cannot create '{}'", path));
+    if (!f) throw out.write_error(std::strerror(errno));
     const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-    if (std::fclose(f) != 0 || !ok) throw std::runtime_error(fmt::format("cannot write '{}'", path));
-    out.commit();
+    const int err = errno;
+    if (std::fclose(f) != 0 || !ok) throw out.write_error(std::strerror(ok ? errno : err));
+}
+
+// The scenario values the questions asked for read: a value none of them reads is not checked
+// (a file's pitch does not matter to --only q4), and a flag for one is refused.
+ScenarioValues values_read_by(const std::function<bool(const char*)>& wanted) {
+    ScenarioValues v = 0;
+    if (wanted("q1") || wanted("q2")) v |= values_read(PathKind::spiral);
+    if (wanted("q3")) v |= value::bench | value::head_speed | value::start_turn | value::turn_radius;
+    if (wanted("q4") || wanted("q5")) v |= values_read(PathKind::turnaround);
+    return v;
 }
 
 }  // namespace
@@ -48,45 +66,65 @@ void register_solve(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<SolveOptions>();
     CLI::App* sub = app.add_subcommand(
         "solve", "All five questions: result1/2/4.xlsx, summary.json and the paper-style tables");
-    opt->scenario.add_to(sub);
+    opt->scenario.add_to(sub, ScenarioUse::both_paths("it answers Q1-Q3 on the plain spiral and Q4-Q5 on the "
+                                                      "turnaround path"));
     sub->add_option("-o,--out", opt->dir, "Output folder (created if missing; default out)");
     sub->add_option("--only", opt->only, "Answer only these questions: q1 q2 q3 q4 q5 (default all)")
         ->delimiter(',');
+    add_quiet_flag(sub, opt->quiet);
     reg["solve"] = [opt]() {
         const std::set<std::string> all{"q1", "q2", "q3", "q4", "q5"};
         for (const std::string& q : opt->only)
             if (!all.count(q))
                 throw InputError(fmt::format("--only {} is not allowed: the questions are q1, q2, q3, q4, q5", q));
-        const auto wanted = [&](const char* q) {
+        const std::function<bool(const char*)> wanted = [&](const char* q) {
             return opt->only.empty() || std::find(opt->only.begin(), opt->only.end(), q) != opt->only.end();
         };
-        Scenario s = opt->scenario.resolve();
+        Scenario s = opt->scenario.resolve(values_read_by(wanted),
+                                           fmt::format("no question of --only {} reads it", fmt::join(opt->only, ",")));
         s.path.kind = PathKind::spiral;
         namespace fs = std::filesystem;
         std::error_code ec;
         fs::create_directories(opt->dir, ec);
         if (!fs::is_directory(opt->dir))
             throw InputError(fmt::format("-o {} is not allowed: the folder cannot be created", opt->dir));
-        const auto file = [&](const char* name) { return (fs::path(opt->dir) / name).string(); };
-        std::vector<std::string> summary, written;
 
-        // Q1: coiling in, 0..300 s.
-        const Simulation sim(s);
-        if (wanted("q1")) {
+        // Every target is checked, and its temporary file made, before any work: a folder or an
+        // unwritable name in the way fails here with no file touched. They are renamed into
+        // place together at the end, so the set is all new or all old.
+        std::vector<std::unique_ptr<AtomicFile>> files;
+        std::vector<std::string> written;
+        const auto target = [&](bool needed, const char* name) -> AtomicFile* {
+            if (!needed) return nullptr;
+            files.push_back(std::make_unique<AtomicFile>((fs::path(opt->dir) / name).string()));
+            written.push_back(name);
+            return files.back().get();
+        };
+        AtomicFile* result1 = target(wanted("q1"), "result1.xlsx");
+        AtomicFile* result2 = target(wanted("q2"), "result2.xlsx");
+        AtomicFile* result4 = target(wanted("q4"), "result4.xlsx");
+        AtomicFile* summary_json = target(true, "summary.json");
+        std::vector<std::string> summary;
+
+        // Q1: coiling in, 0..300 s (the simulation only if Q1 or Q2 reads it: --only q4 does
+        // not read the plain spiral's values, which may not even make one).
+        std::optional<Simulation> coil;
+        if (result1 || result2) coil.emplace(s);
+        if (result1) {
+            const Simulation& sim = *coil;
             const double q1_end = std::min(300.0, std::floor(sim.valid_end()));
             const std::vector<Frame> q1 = simulate_table(sim, 0.0, q1_end, 1.0);
-            write_result_xlsx(q1, file("result1.xlsx"));
-            written.push_back("result1.xlsx");
+            write_result_xlsx(q1, *result1);
             print_frame_table("Q1: positions (m) and speeds (m/s) while coiling in", pick(q1, 1.0, 60.0));
             summary.push_back(fmt::format("  \"q1\": {{\"file\": \"result1.xlsx\", \"times\": [0, {}]}}", q1_end));
         }
 
         // Q2: the termination time.
-        if (wanted("q2")) {
+        if (result2) {
+            const Simulation& sim = *coil;
             const std::optional<Contact> c = first_contact(sim, 0.0, sim.valid_end());
             if (c) {
-                write_result2_xlsx(c->frame, file("result2.xlsx"));
-                written.push_back("result2.xlsx");
+                write_result2_xlsx(c->frame, *result2);
                 fmt::print("\nQ2: benches {} and {} touch at t = {} s (head radius {:.6f} m)\n", c->bench_a,
                            c->bench_b, format_resolved(c->time, c->tolerance), c->head_radius);
                 print_single_frame("", c->frame);
@@ -96,6 +134,8 @@ void register_solve(CLI::App& app, Registry& reg) {
                 fmt::print("\nQ2: no collision as far as the dragon can follow the spiral (t = {} s)\n",
                            format_time(sim.valid_end()));
                 summary.push_back("  \"q2\": null");
+                // The contest's layout with no rows, so no older answer is left looking like this one's.
+                write_result2_xlsx(Frame{}, *result2);
             }
         }
 
@@ -118,11 +158,10 @@ void register_solve(CLI::App& app, Registry& reg) {
         turn.path.kind = PathKind::turnaround;
 
         // Q4: the turnaround, -100..100 s.
-        if (wanted("q4")) {
+        if (result4) {
             const Simulation tsim(turn);
             const std::vector<Frame> q4 = simulate_table(tsim, -100.0, 100.0, 1.0);
-            write_result_xlsx(q4, file("result4.xlsx"));
-            written.push_back("result4.xlsx");
+            write_result_xlsx(q4, *result4);
             const SCurve sc = design_s_curve(turn);
             fmt::print("\nQ4: S-curve r1 = {:.6f} m, r2 = {:.6f} m, length {:.6f} m\n", sc.r1, sc.r2, sc.length);
             print_frame_table("Q4: positions (m) and speeds (m/s) around the turn", pick(q4, 1.0, 50.0));
@@ -138,9 +177,12 @@ void register_solve(CLI::App& app, Registry& reg) {
             summary.push_back(fmt::format("  \"q5\": {{\"max_head_speed\": {}, \"ratio\": {}, \"handle\": {}, \"time\": {}}}",
                                           json_number(v.max_head_speed), json_number(v.ratio), v.handle, json_number(v.time)));
         }
-        write_text(file("summary.json"), "{\n" + fmt::format("{}", fmt::join(summary, ",\n")) + "\n}\n");
-        written.push_back("summary.json");
-        fmt::print("\nwrote {} in {}\n", fmt::join(written, ", "), opt->dir);
+        write_text(*summary_json, "{\n" + fmt::format("{}", fmt::join(summary, ",\n")) + "\n}\n");
+        std::vector<AtomicFile*> set;
+        for (const auto& f : files) set.push_back(f.get());
+        require_stdout_written();  // the tables all printed, or no file changes
+        commit_together(set);
+        status(opt->quiet, "wrote {} in {}", fmt::join(written, ", "), opt->dir);
         return 0;
     };
 }

@@ -7,7 +7,9 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "cli/scenario_flags.hpp"
+#include "cli/status.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/turnaround.hpp"
 
@@ -23,6 +25,7 @@ struct TurnaroundOptions {
     bool skip_clearance = false;
     double from = -100.0, to = 100.0;
     std::string out;
+    bool quiet = false;
 };
 
 std::string point(Vec2 p) { return fmt::format("[{}, {}]", p.x, p.y); }
@@ -112,12 +115,14 @@ void register_turnaround(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<TurnaroundOptions>();
     CLI::App* sub = app.add_subcommand(
         "turnaround", "Q4: the S-curve turnaround, whether it can be shorter, and its clearance");
-    opt->scenario.add_to(sub);
+    opt->scenario.add_to(sub, ScenarioUse::turnaround_only());
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
     sub->add_option("-o,--out", opt->out, "Write the length study as CSV to this file");
-    sub->add_flag("--no-clearance", opt->skip_clearance, "Skip the clearance check over the run");
-    sub->add_option("--from", opt->from, "Clearance check from this time, s (default -100)");
-    sub->add_option("--to", opt->to, "Clearance check to this time, s (default 100)");
+    auto* skip = sub->add_flag("--no-clearance", opt->skip_clearance, "Skip the clearance check over the run");
+    // The range is the clearance check's: without the check it would do nothing.
+    sub->add_option("--from", opt->from, "Clearance check from this time, s (default -100)")->excludes(skip);
+    sub->add_option("--to", opt->to, "Clearance check to this time, s (default 100)")->excludes(skip);
+    add_quiet_flag(sub, opt->quiet);
     reg["turnaround"] = [opt]() {
         Scenario s = opt->scenario.resolve();
         s.path.kind = PathKind::turnaround;
@@ -130,11 +135,15 @@ void register_turnaround(CLI::App& app, Registry& reg) {
         if (!opt->out.empty()) AtomicFile probe(opt->out);  // fail on an unwritable path first
         const TurnaroundStudy st = study_turnaround(s);
         std::optional<RunClearance> clear;
-        if (!opt->skip_clearance) clear = min_clearance(s, opt->from, opt->to);
+        if (!opt->skip_clearance) {
+            ProgressLine progress("samples", opt->quiet);  // long chains and fast heads take seconds
+            clear = min_clearance(s, opt->from, opt->to,
+                                  [&progress](std::int64_t done, std::int64_t total) { progress.update(done, total); });
+        }
         if (!opt->out.empty()) write_study_csv(st, opt->out);
         if (opt->json) print_json(st, clear, opt->from, opt->to);
         else print_text(st, clear, opt->from, opt->to);
-        if (!opt->out.empty()) fmt::print(stderr, "wrote {}\n", opt->out);
+        if (!opt->out.empty()) status(opt->quiet, "wrote {}", opt->out);
         return 0;
     };
 }

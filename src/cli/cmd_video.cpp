@@ -1,7 +1,4 @@
 // dragon video: a film of the dragon, MP4 (H.264), WebM (VP9) or GIF by the file's extension.
-#include <unistd.h>
-
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -13,7 +10,9 @@
 #include "cli/commands.hpp"
 #include "cli/contact_search.hpp"
 #include "cli/report.hpp"
+#include "cli/progress.hpp"
 #include "cli/scenario_flags.hpp"
+#include "cli/status.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/path.hpp"
@@ -34,7 +33,7 @@ struct VideoCliOptions {
     double speedup = 10.0;
     std::optional<double> hold;
     std::string size = "1280x720";
-    int crf = -1;
+    std::optional<int> crf;
     std::string preset = "ultrafast";
     int threads = 0;
     int colours = 256;
@@ -43,6 +42,7 @@ struct VideoCliOptions {
     std::string theme = "light";
     bool colour_by_speed = false;
     bool no_guides = false, no_text = false;
+    bool quiet = false;
 };
 
 // "1280x720" -> {1280, 720}: 1 to 5 digits, x or X, 1 to 5 digits, nothing else. (--width is
@@ -125,48 +125,24 @@ End resolve_to(const std::string& to, const Simulation& sim, double from) {
     throw InputError(fmt::format("--to {} is not allowed: give a time in seconds, collision, boundary or end", to));
 }
 
-// A one-line bar on stderr, redrawn at most ten times a second: frames, rate, time left.
-class ProgressBar {
-public:
-    explicit ProgressBar(bool enabled) : enabled_(enabled) {}
-    void operator()(const Progress& p) {
-        if (!enabled_) return;
-        const auto now = std::chrono::steady_clock::now();
-        if (p.done < p.total && now - last_ < std::chrono::milliseconds(100)) return;
-        last_ = now;
-        constexpr int width = 30;
-        const int filled = p.total > 0 ? width * p.done / p.total : width;
-        const double rate = p.elapsed > 0 ? p.done / p.elapsed : 0.0;
-        const double left = rate > 0 ? (p.total - p.done) / rate : 0.0;
-        fmt::print(stderr, "\r[{}{}] {}/{} frames  {:.1f} fps  {}:{:02d} left ", std::string(filled, '#'),
-                   std::string(width - filled, '.'), p.done, p.total, rate, static_cast<int>(left) / 60,
-                   static_cast<int>(left) % 60);
-        if (p.done == p.total) fmt::print(stderr, "\n");
-        std::fflush(stderr);
-    }
-
-private:
-    bool enabled_;
-    std::chrono::steady_clock::time_point last_{};
-};
-
 }  // namespace
 
 void register_video(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<VideoCliOptions>();
     CLI::App* sub = app.add_subcommand("video", "Animate to MP4 (H.264), WebM (VP9) or GIF");
-    opt->scenario.add_to(sub);
+    opt->scenario.add_to(sub, ScenarioUse::drawing());
     sub->add_option("-o,--out", opt->out, "Output file: .mp4, .webm or .gif")->required();
     sub->add_option("--from", opt->from, "First moment, simulated s (default 0; -100 on the turnaround path)");
     sub->add_option("--to", opt->to,
                     "Last moment: simulated s, or collision (first contact, marked), boundary (head at the "
                     "turning space), end (the end of the valid motion: the spiral's centre, or where a handle "
                     "would have to jump). Default: collision; 100 on the turnaround path");
-    sub->add_option("--fps", opt->fps, "Frames per second of video (default 30)");
+    sub->add_option("--fps", opt->fps, "Frames per second of video, 0.01 to 240 (default 30)");
     sub->add_option("--speedup", opt->speedup, "Simulated seconds per second of video (default 10)");
     sub->add_option("--hold", opt->hold, "Seconds the last moment stays on screen (default 1 at a collision, else 0)");
     sub->add_option("--size", opt->size, "Picture size in pixels, WIDTHxHEIGHT (default 1280x720; even for mp4/webm)");
-    sub->add_option("--crf", opt->crf, "Quality, lower is better: H.264 0-51 (default 20), VP9 0-63 (default 32)");
+    sub->add_option("--crf", opt->crf,
+                    "Quality, lower is better: H.264 0-51 (default 20), VP9 0-63 (default 32); not for GIF");
     sub->add_option("--preset", opt->preset, "libx264 preset, ultrafast .. veryslow (default ultrafast, the fastest; "
                                          "veryfast makes ~3x smaller files at ~2x the encoding time)");
     sub->add_option("--threads", opt->threads, "Encoder threads, 0 = automatic (default)");
@@ -178,8 +154,9 @@ void register_video(CLI::App& app, Registry& reg) {
     sub->add_flag("--speed-colours", opt->colour_by_speed, "Colour each bench by its speed, with a colour bar");
     sub->add_flag("--no-guides", opt->no_guides, "Leave out the path and the turning-space circle");
     sub->add_flag("--no-text", opt->no_text, "Leave out all text");
+    add_quiet_flag(sub, opt->quiet);
 
-    reg["video"] = [opt]() {
+    reg["video"] = [opt, sub]() {
         // Everything that can be checked without simulating first, so bad options fail at once
         // and leave no file.
         const VideoFormat format = video_format_for(opt->out);
@@ -191,6 +168,13 @@ void register_video(CLI::App& app, Registry& reg) {
         vo.threads = opt->threads;
         vo.colours = opt->colours;
         validate(vo, format);
+        // Options of the other formats' encoders would do nothing.
+        if (format != VideoFormat::mp4 && sub->count("--preset") > 0)
+            throw InputError(fmt::format("--preset {} is not allowed for .{}: it is libx264's, for .mp4", opt->preset,
+                                         to_string(format)));
+        if (format != VideoFormat::gif && sub->count("--colours") > 0)
+            throw InputError(fmt::format("--colours {} is not allowed for .{}: it sets a GIF's palette", opt->colours,
+                                         to_string(format)));
         if (opt->zoom && !(*opt->zoom > 0.0))
             throw InputError(fmt::format("--zoom {} is not allowed: use metres above 0", *opt->zoom));
         { AtomicFile probe(opt->out); }  // an unwritable path fails here, before any work
@@ -211,11 +195,12 @@ void register_video(CLI::App& app, Registry& reg) {
         const Animation anim(sim, clip, vo.fps, scene, end.mark);
 
         quiet_codec_logs();
-        ProgressBar bar(::isatty(::fileno(stderr)) != 0);
-        const EncodeStats stats = write_video(anim, opt->out, vo, [&](const Progress& p) { bar(p); });
-        fmt::print("wrote {}: {} frames, {}x{}, {:.2f} s of video for t = {:.6f} .. {:.6f} s ({:.1f} frames/s)\n",
-                   opt->out, stats.frames, vo.width, vo.height, stats.frames / vo.fps, clip.from, clip.to,
-                   stats.fps());
+        const EncodeStats stats = [&] {
+            ProgressLine progress("frames", opt->quiet);
+            return write_video(anim, opt->out, vo, [&progress](const Progress& p) { progress.update(p.done, p.total); });
+        }();
+        status(opt->quiet, "wrote {}: {} frames, {}x{}, {:.2f} s of video for t = {:.6f} .. {:.6f} s ({:.1f} frames/s)",
+               opt->out, stats.frames, vo.width, vo.height, stats.frames / vo.fps, clip.from, clip.to, stats.fps());
         if (end.mark)
             fmt::print("benches {} and {} touch at t = {:.6f} s\n", end.mark->bench_a, end.mark->bench_b, clip.to);
         return 0;

@@ -1,18 +1,37 @@
 // dragon: the Bench Dragon command-line tool. A thin layer over the benchdragon library.
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <system_error>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/kill_cleanup.hpp"
 #include "dragon/scenario.hpp"
+
+namespace {
+
+// stdout holds the answers: a run whose answers did not all reach it (a full disk, a closed
+// pipe, `> /dev/full`) has failed, whatever it wrote to files. Buffered output fails only when
+// flushed, so the check is at the end. Returns false, with errno set, if anything was lost.
+bool stdout_intact() { return std::fflush(stdout) == 0 && std::ferror(stdout) == 0; }
+
+int stdout_failed(int err) {
+    std::fprintf(stderr, "dragon: failed: cannot write the answers to standard output: %s\n", std::strerror(err));
+    return 1;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     using namespace dragon;
     cli::install_kill_cleanup();  // first: a kill at any moment leaves no temporary file
     CLI::App app{"dragon: exact simulation, collisions and pictures of the Bench Dragon (CUMCM 2024 A)"};
+    app.name("dragon");
     app.require_subcommand(1);
     app.set_version_flag("--version", "dragon 0.1.0");
     cli::Registry reg;
@@ -26,27 +45,22 @@ int main(int argc, char** argv) {
     cli::register_figures(app, reg);
     cli::register_video(app, reg);
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForVersion& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        // One line, naming the bad value; CLI11's own exit codes are not ours.
-        std::fprintf(stderr, "dragon: error: %s (see dragon --help)\n", e.what());
-        return 2;
-    }
+    if (const std::optional<int> done = cli::parse_command_line(app, argc, argv))
+        return stdout_intact() ? *done : stdout_failed(errno);
+    int code = 0;
     try {
         const std::string name = app.get_subcommands().front()->get_name();
-        return reg.at(name)();
+        code = reg.at(name)();
     } catch (const InputError& e) {
         std::fprintf(stderr, "dragon: error: %s\n", e.what());
         return 2;
     } catch (const std::exception& e) {
+        // A write to stdout that failed (fmt::print throws then): the one cause worth naming.
+        const auto* sys = dynamic_cast<const std::system_error*>(&e);
+        if (std::ferror(stdout)) return stdout_failed(sys ? sys->code().value() : errno);
         std::fprintf(stderr, "dragon: failed: %s\n", e.what());
         return 1;
     }
+    if (!stdout_intact()) return stdout_failed(errno);
+    return code;
 }

@@ -81,6 +81,13 @@ std::string jam_sentence(const Jam& j, bool ahead) {
                        format_resolved(j.time, j.tolerance), describe(j));
 }
 
+int checked_digits(const std::optional<int>& digits) {
+    const int d = digits.value_or(kDefaultDigits);
+    if (d < 0 || d > kMaxDigits)
+        throw InputError(fmt::format("--digits {} is not allowed: use 0 to {} decimals", d, kMaxDigits));
+    return d;
+}
+
 std::string json_number(double v) {
     if (!std::isfinite(v)) return "null";
     return fmt::format("{}", v);

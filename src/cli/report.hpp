@@ -25,6 +25,10 @@ void print_single_frame(const std::string& title, const Frame& frame);
 std::string handles_json(const Frame& frame);
 std::string json_number(double v);
 
+// --digits: the decimals of CSV and JSON tables, kDefaultDigits if not given; throws InputError
+// outside 0..kMaxDigits.
+int checked_digits(const std::optional<int>& digits);
+
 // v with as many decimals as `resolution` (how closely v is known) supports: 9 for 1e-10.
 std::string format_resolved(double v, double resolution);
 

@@ -1,5 +1,5 @@
-// The scenario flags every subcommand shares. Precedence: flags over --scenario file over the
-// contest defaults.
+// The scenario flags of the subcommands. Each command takes exactly the flags of the values it
+// reads; precedence: flags over the --scenario file over the contest defaults.
 #pragma once
 
 #include <optional>
@@ -11,13 +11,48 @@
 
 namespace dragon::cli {
 
+// Which scenario values a command reads, on each path it can run on.
+struct ScenarioUse {
+    ScenarioValues on_spiral = 0;      // read on the plain spiral (0: the command never runs on it)
+    ScenarioValues on_turnaround = 0;  // read on the turnaround path (0: never runs on it)
+    bool path_choice = false;          // --path picks one of the two; else it runs on those above
+    // Why the scenario flags it does not take are of no use to it, for the error message.
+    const char* why_not = "";
+
+    // simulate, collide: either path, chosen by --path (or the file's [path] kind).
+    static ScenarioUse either_path();
+    // render, video: either path; on the spiral the turning space is drawn (and video's --to
+    // boundary is its edge), so the turn radius is read there too.
+    static ScenarioUse drawing();
+    // Q3: the plain spiral with the pitch searched, up to the turning space.
+    static ScenarioUse pitch_search();
+    // Q4, Q5: the turnaround path alone.
+    static ScenarioUse turnaround_only();
+    // solve, figures: both paths in one run.
+    static ScenarioUse both_paths(const char* why_not);
+
+    ScenarioValues all() const { return on_spiral | on_turnaround; }
+};
+
 class ScenarioFlags {
 public:
-    void add_to(CLI::App* sub);
-    // The scenario these flags describe, validated (throws InputError).
+    // Registers --scenario and the flags of the values `use` reads (and --path if it chooses).
+    void add_to(CLI::App* sub, ScenarioUse use);
+    // The scenario, validated for the values the command reads on its path (InputError names a
+    // bad value, and the file when the value came from it). Refuses a flag the chosen path does
+    // not read (--turn-pitch on the spiral, say). The path kind is the command's: the one
+    // --path or the file picks, else its only path, else (both paths) the spiral.
     Scenario resolve() const;
+    // The same for a run that reads only `reads` of the values (solve --only q4): values outside
+    // it are not checked, and a flag for one is refused with "<flag> is not used: <why>".
+    Scenario resolve(ScenarioValues reads, const std::string& why) const;
+
+    // For an option a subcommand does not take: if it is a scenario flag, one sentence saying
+    // so and why (for the command line's error); else "".
+    static std::string not_taken(const CLI::App& sub, const std::string& flag);
 
 private:
+    ScenarioUse use_;
     std::string file_;
     std::string path_kind_;
     std::optional<double> pitch_, speed_, head_length_, body_length_, width_, hole_offset_;

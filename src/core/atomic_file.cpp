@@ -1,11 +1,15 @@
 #include "dragon/atomic_file.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cctype>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
@@ -25,6 +29,21 @@ std::string extension_of(const std::string& path) {
     return ext;
 }
 
+namespace {
+
+// A hidden name beside the target, unique per process and per call, with the target's
+// extension (some writers pick the format by it), in its folder so renames stay on one file
+// system: ".result1.tmp1234-0.xlsx".
+std::string hidden_name(const fs::path& target, const char* kind) {
+    static std::atomic<unsigned> counter{0};
+    fs::path dir = target.parent_path();
+    if (dir.empty()) dir = ".";
+    return (dir / fmt::format(".{}.{}{}-{}{}", target.stem().string(), kind, ::getpid(), counter++,
+                              target.extension().string())).string();
+}
+
+}  // namespace
+
 AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {
     if (target_.empty()) throw InputError("output path is empty: give a file name");
     const fs::path p(target_);
@@ -39,14 +58,19 @@ AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {
     if (::access(dir.c_str(), W_OK) != 0)
         throw InputError(fmt::format("output path '{}' is not writable: no permission to write in '{}'",
                                      target_, dir.string()));
-    // Hidden, unique per process and per object, same extension (some writers pick the format
-    // by it), in the target's folder so the final rename stays on one file system.
-    static std::atomic<unsigned> counter{0};
-    const std::string name = fmt::format(".{}.tmp{}-{}{}", p.stem().string(), ::getpid(),
-                                         counter++, p.extension().string());
-    temp_ = (dir / name).string();
-    // Registered before any writer creates the file, so a kill at any later moment finds it.
+    temp_ = hidden_name(p, "tmp");
+    // Registered before the file exists, so a kill at any later moment finds it.
     live_slot_ = live_temp::add(temp_);
+    // Created now: a folder that looks writable but is not (/proc, a read-only mount) fails
+    // here, before any work, and not halfway through writing.
+    const int fd = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        const int err = errno;
+        live_temp::drop(live_slot_);
+        throw InputError(fmt::format("output path '{}' is not writable: no file can be made in '{}' ({})", target_,
+                                     dir.string(), std::strerror(err)));
+    }
+    ::close(fd);
 }
 
 AtomicFile::~AtomicFile() {
@@ -60,11 +84,62 @@ AtomicFile::~AtomicFile() {
 void AtomicFile::commit() {
     std::error_code ec;
     fs::rename(temp_, target_, ec);
-    if (ec) throw std::runtime_error(fmt::format("cannot write '{}': {}", target_, ec.message()));
+    if (ec) throw write_error(ec.message());
     committed_ = true;
     // A kill between the rename and here only unlinks a name that no longer exists.
     live_temp::drop(live_slot_);
     live_slot_ = -1;
+}
+
+std::runtime_error AtomicFile::write_error(const std::string& reason) const {
+    return std::runtime_error(fmt::format("cannot write '{}': {}", target_, reason));
+}
+
+void commit_together(const std::vector<AtomicFile*>& files) {
+    struct Backup {
+        std::string path;  // empty: there was no old file
+        int slot = -1;
+    };
+    std::vector<Backup> backups(files.size());
+    const auto drop_backups = [&backups] {
+        for (Backup& b : backups) {
+            if (b.path.empty()) continue;
+            ::unlink(b.path.c_str());
+            live_temp::drop(b.slot);
+        }
+    };
+    // A second name for each old file, so that a rename failing halfway can put back the
+    // ones already replaced.
+    for (size_t i = 0; i < files.size(); ++i) {
+        struct stat st {};
+        if (::lstat(files[i]->target_.c_str(), &st) != 0) continue;
+        Backup b{hidden_name(files[i]->target_, "old"), -1};
+        b.slot = live_temp::add(b.path);
+        if (::link(files[i]->target_.c_str(), b.path.c_str()) != 0) {
+            const int err = errno;
+            live_temp::drop(b.slot);
+            drop_backups();
+            throw files[i]->write_error(fmt::format("cannot keep the old file while replacing it ({}); no "
+                                                    "file was changed", std::strerror(err)));
+        }
+        backups[i] = b;
+    }
+    for (size_t i = 0; i < files.size(); ++i) {
+        if (::rename(files[i]->temp_.c_str(), files[i]->target_.c_str()) == 0) continue;
+        const int err = errno;
+        for (size_t j = 0; j < i; ++j) {
+            if (backups[j].path.empty()) ::unlink(files[j]->target_.c_str());
+            else ::rename(backups[j].path.c_str(), files[j]->target_.c_str());
+        }
+        drop_backups();
+        throw files[i]->write_error(fmt::format("{}; no file was changed", std::strerror(err)));
+    }
+    for (AtomicFile* f : files) {
+        f->committed_ = true;
+        live_temp::drop(f->live_slot_);
+        f->live_slot_ = -1;
+    }
+    drop_backups();
 }
 
 }  // namespace dragon

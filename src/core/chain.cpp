@@ -101,7 +101,7 @@ void Simulation::require_on_path(double t, const char* what) const {
     // it is at most the entry's plus |s|. The tail is a chain's length farther out at most.
     const double reach = entry_length_ + std::abs(s) + scenario_.bench.chain_length();
     if (!(reach <= kMaxReach)) {
-        throw InputError(fmt::format("{} {} is not allowed: it puts the chain {:.0f} m along the path from "
+        throw InputError(fmt::format("{} {} is not allowed: it puts the chain {:.8g} m along the path from "
                                      "the spiral's centre; at most {:.0f} m keeps positions to 1e-8 m",
                                      what, t, reach, kMaxReach));
     }

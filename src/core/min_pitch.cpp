@@ -2,6 +2,7 @@
 #include <cmath>
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <exception>
 #include <limits>
 #include <mutex>
@@ -55,11 +56,13 @@ struct Probe {
 
 // Feasibility of several pitches at once, spread over the machine's cores: each pitch is an
 // independent run of the dragon to the boundary.
-std::vector<Probe> probe_at(const Scenario& s, const std::vector<double>& pitches) {
+std::vector<Probe> probe_at(const Scenario& s, const std::vector<double>& pitches,
+                            const WorkProgress& progress = {}) {
     std::vector<Probe> out(pitches.size());
     std::atomic<size_t> next{0};
     std::exception_ptr failure;
     std::mutex failure_lock;
+    std::int64_t done = 0;  // under failure_lock: the callback hears one thread at a time
     auto work = [&] {
         for (size_t k; (k = next++) < pitches.size();) {
             try {
@@ -67,6 +70,10 @@ std::vector<Probe> probe_at(const Scenario& s, const std::vector<double>& pitche
                 if (run.contact) out[k] = Probe{false, run.contact->time, run.contact->bench_a, run.contact->bench_b, {}};
                 else if (run.jam) out[k] = Probe{false, run.jam->time, 0, 0, run.jam};
                 else out[k] = Probe{true, 0.0, 0, 0, {}};
+                if (progress) {
+                    const std::lock_guard<std::mutex> hold(failure_lock);
+                    progress(++done, static_cast<std::int64_t>(pitches.size()));
+                }
             } catch (...) {
                 const std::lock_guard<std::mutex> hold(failure_lock);
                 if (!failure) failure = std::current_exception();
@@ -190,8 +197,13 @@ double refine_cut(const Scenario& s, double a, double b, const Probe& at_a, cons
 
 // For the contest's dragon, a 1 mm scan of 0.35..0.55 m (tests) and a 0.1 mm one (README) find
 // no window the default grid misses.
-MinPitch min_pitch(const Scenario& s, double lo, double hi, double grid) {
-    if (!(lo > s.bench.width) || !(hi > lo) || !std::isfinite(hi))
+MinPitch min_pitch(const Scenario& s, double lo, double hi, double grid, const WorkProgress& progress) {
+    // What every run reads but the pitch, which the search sets.
+    validate(s, value::bench | value::head_speed | value::start_turn | value::turn_radius);
+    constexpr double kMaxPitch = 1e3;  // m, the largest pitch validate() allows
+    if (!(hi <= kMaxPitch))
+        throw InputError(fmt::format("--hi {} is not allowed: a pitch is at most {} m", hi, kMaxPitch));
+    if (!(lo > s.bench.width) || !(hi > lo))
         throw InputError(fmt::format("pitch search range [{}, {}] is not allowed: it needs width {} < lo < hi",
                                      lo, hi, s.bench.width));
     if (!(grid > 0.0) || !std::isfinite(grid))
@@ -199,7 +211,7 @@ MinPitch min_pitch(const Scenario& s, double lo, double hi, double grid) {
     // Grid steps: a range that is a whole number of spacings up to rounding gets that number.
     const double steps = std::ceil((hi - lo) / grid * (1.0 - 1e-12));
     if (steps > kMaxPitchGridSteps)
-        throw InputError(fmt::format("--grid {} is not allowed: it makes {:.0f} grid steps over [{}, {}]; at most {} "
+        throw InputError(fmt::format("--grid {} is not allowed: it makes {:.3g} grid steps over [{}, {}]; at most {} "
                                      "(a grid of at least {:.2g} m)", grid, steps, lo, hi,
                                      kMaxPitchGridSteps, (hi - lo) / kMaxPitchGridSteps));
     MinPitch out{};
@@ -209,7 +221,7 @@ MinPitch min_pitch(const Scenario& s, double lo, double hi, double grid) {
     const int n = std::max(2, static_cast<int>(steps));
     std::vector<double> pitches(static_cast<size_t>(n + 1));
     for (int k = 0; k <= n; ++k) pitches[static_cast<size_t>(k)] = k == n ? hi : lo + (hi - lo) * k / n;
-    const std::vector<Probe> ok = probe_at(s, pitches);
+    const std::vector<Probe> ok = probe_at(s, pitches, progress);
     std::vector<double> cuts;
     for (size_t k = 0; k + 1 < pitches.size(); ++k)
         if (ok[k].feasible != ok[k + 1].feasible)

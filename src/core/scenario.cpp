@@ -1,6 +1,7 @@
 #include "dragon/scenario.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -14,9 +15,12 @@ namespace dragon {
 
 namespace {
 
-void require_positive(const char* name, double v) {
-    if (!std::isfinite(v) || v <= 0.0)
-        throw InputError(fmt::format("{} = {} is not allowed: it must be a finite number > 0", name, v));
+// A rule between values, or on one, failed: the message, and which values it involves.
+[[noreturn]] void refuse(ScenarioValues involved, const std::string& what) { throw ScenarioError(what, involved); }
+
+void require_positive(ScenarioValues v, const char* name, double x) {
+    if (!std::isfinite(x) || x <= 0.0)
+        refuse(v, fmt::format("{} = {} is not allowed: it must be a finite number > 0", name, x));
 }
 
 // Each value's range: wide enough for any dragon (a 1 mm toy to a 1 km parade, a snail's pace
@@ -33,73 +37,93 @@ constexpr Range kTurns{1e-3, 1e4, ""};          // start turn: theta up to 2 pi 
 constexpr Range kRatio{1e-3, 1e3, ""};          // arc ratio r1 / r2
 constexpr Range kSpeed{1e-9, 1e9, " m/s"};      // head speed: only the time scale depends on it
 
-void require_in(const char* name, double v, Range r) {
-    if (!(v >= r.lo && v <= r.hi))  // NaN fails too
-        throw InputError(fmt::format("{} = {} is not allowed: it must be from {}{} to {}{}", name, v, r.lo,
-                                     r.unit, r.hi, r.unit));
+void require_in(ScenarioValues v, const char* name, double x, Range r) {
+    require_positive(v, name, x);
+    if (!(x >= r.lo && x <= r.hi))
+        refuse(v, fmt::format("{} = {} is not allowed: it must be from {}{} to {}{}", name, x, r.lo, r.unit, r.hi,
+                              r.unit));
+}
+
+bool has(ScenarioValues set, ScenarioValues wanted) { return (set & wanted) == wanted; }
+
+// The chain at the start, as far out as it goes: the head's arc length from the centre (on the
+// plain spiral's turn start_turn, or on the turnaround's coil-in spiral at the turning space),
+// plus the chain behind it.
+void require_reach(const Scenario& s, bool spiral) {
+    const BenchSpec& b = s.bench;
+    const Spiral coil(spiral ? s.path.pitch : s.path.turn_pitch);
+    constexpr double kTwoPi = 6.283185307179586476925286766559;
+    const double head = coil.length_to(spiral ? kTwoPi * s.path.start_turn : s.path.turn_radius / coil.b());
+    if (!(head + b.chain_length() <= kMaxReach))
+        refuse(value::bench | (spiral ? value::pitch | value::start_turn : value::turn_pitch | value::turn_radius),
+               fmt::format("{} benches {}: the chain would reach {:.4g} m along the spiral from its centre (the "
+                           "head {:.4g} m, the chain {:.4g} m); at most {:.0f} m keeps positions to 1e-8 m",
+                           b.bench_count, spiral ? "from this start turn and pitch" : "at this turn radius and pitch",
+                           head + b.chain_length(), head, b.chain_length(), kMaxReach));
+}
+
+// Benches on neighbouring turns sit one pitch apart, centre line to centre line: a board at
+// least as wide as the pitch overlaps the next turn from the first instant.
+void require_wider_pitch(ScenarioValues pitch_value, double pitch, double width) {
+    if (pitch <= width)
+        refuse(pitch_value | value::width,
+               fmt::format("pitch {} is not allowed with width {}: the pitch must exceed the bench width, or the "
+                           "chain does not fit between the turns", pitch, width));
 }
 
 }  // namespace
 
 const char* to_string(PathKind k) { return k == PathKind::spiral ? "spiral" : "turnaround"; }
 
-void validate(const Scenario& s) {
-    const BenchSpec& b = s.bench;
-    if (b.bench_count < 1 || b.bench_count > 1000000)
-        throw InputError(fmt::format("body count {} is not allowed: the chain needs 1 to 1000000 benches",
-                                     b.bench_count));
-    require_positive("head length", b.head_length);
-    require_positive("body length", b.body_length);
-    require_positive("width", b.width);
-    if (!std::isfinite(b.hole_offset) || b.hole_offset < 0.0)
-        throw InputError(fmt::format("hole offset {} is not allowed: it must be >= 0", b.hole_offset));
-    require_in("head length", b.head_length, kLength);
-    require_in("body length", b.body_length, kLength);
-    require_in("width", b.width, kLength);
-    const double shortest = b.bench_count > 1 ? std::min(b.head_length, b.body_length) : b.head_length;
-    // The holes at least 1 mm apart on every board: a link of zero length has no direction.
-    if (!(shortest - 2.0 * b.hole_offset >= kLength.lo))
-        throw InputError(fmt::format("hole offset {} is not allowed: it must be less than half the "
-                                     "shortest board ({} m) by at least 0.5 mm", b.hole_offset, 0.5 * shortest));
-    require_positive("pitch", s.path.pitch);
-    require_positive("head speed", s.head_speed);
-    require_positive("start turn", s.path.start_turn);
-    require_positive("turn radius", s.path.turn_radius);
-    require_positive("turn pitch", s.path.turn_pitch);
-    require_positive("arc ratio", s.path.arc_ratio);
-    require_in("pitch", s.path.pitch, kLength);
-    require_in("head speed", s.head_speed, kSpeed);
-    require_in("start turn", s.path.start_turn, kTurns);
-    require_in("turn radius", s.path.turn_radius, kLength);
-    require_in("turn pitch", s.path.turn_pitch, kLength);
-    require_in("arc ratio", s.path.arc_ratio, kRatio);
-    // The chain at the start, as far out as it goes: the head's arc length from the centre (the
-    // head starts on the plain spiral's turn start_turn, or on the turnaround's coil-in spiral
-    // at the turning space), plus the chain behind it.
-    const bool spiral = s.path.kind == PathKind::spiral;
-    const Spiral coil(s.coil_pitch());
-    constexpr double kTwoPi = 6.283185307179586476925286766559;
-    const double head = coil.length_to(spiral ? kTwoPi * s.path.start_turn : s.path.turn_radius / coil.b());
-    if (!(head + b.chain_length() <= kMaxReach))
-        throw InputError(fmt::format("{} benches {}: the chain would reach {:.4g} m along the spiral from "
-                                     "its centre (the head {:.4g} m, the chain {:.4g} m); at most {:.0f} m "
-                                     "keeps positions to 1e-8 m", b.bench_count,
-                                     spiral ? "from this start turn and pitch" : "at this turn radius and pitch",
-                                     head + b.chain_length(), head, b.chain_length(), kMaxReach));
-    // Benches on neighbouring turns sit one pitch apart, centre line to centre line: a board at
-    // least as wide as the pitch overlaps the next turn from the first instant.
-    const double pitch = s.coil_pitch();
-    if (pitch <= b.width)
-        throw InputError(fmt::format("pitch {} is not allowed with width {}: the pitch must exceed "
-                                     "the bench width, or the chain does not fit between the turns",
-                                     pitch, b.width));
+ScenarioValues values_read(PathKind kind) {
+    const ScenarioValues path = kind == PathKind::spiral ? value::pitch | value::start_turn
+                                                         : value::turn_radius | value::turn_pitch | value::arc_ratio;
+    return value::bench | value::head_speed | path;
 }
 
-Scenario load_scenario(const std::string& path, Scenario base) {
+void validate(const Scenario& s) { validate(s, values_read(s.path.kind)); }
+
+void validate(const Scenario& s, ScenarioValues values) {
+    using namespace value;
+    const BenchSpec& b = s.bench;
+    if ((values & bench_count) && (b.bench_count < 1 || b.bench_count > 1000000))
+        refuse(bench_count, fmt::format("bench count {} is not allowed: the chain needs 1 to 1000000 benches",
+                                        b.bench_count));
+    if (values & head_length) require_in(head_length, "head length", b.head_length, kLength);
+    if (values & body_length) require_in(body_length, "body length", b.body_length, kLength);
+    if (values & width) require_in(width, "width", b.width, kLength);
+    if ((values & hole_offset) && !(std::isfinite(b.hole_offset) && b.hole_offset >= 0.0))
+        refuse(hole_offset, fmt::format("hole offset = {} is not allowed: it must be a finite number >= 0 m",
+                                        b.hole_offset));
+    if (has(values, bench_count | head_length | body_length | hole_offset)) {
+        const double shortest = b.bench_count > 1 ? std::min(b.head_length, b.body_length) : b.head_length;
+        // The holes at least 1 mm apart on every board: a link of zero length has no direction.
+        if (!(shortest - 2.0 * b.hole_offset >= kLength.lo))
+            refuse(bench_count | head_length | body_length | hole_offset,
+                   fmt::format("hole offset {} is not allowed: it must be less than half the shortest board "
+                               "({} m) by at least 0.5 mm", b.hole_offset, 0.5 * shortest));
+    }
+    if (values & head_speed) require_in(head_speed, "head speed", s.head_speed, kSpeed);
+    if (values & pitch) require_in(pitch, "pitch", s.path.pitch, kLength);
+    if (values & start_turn) require_in(start_turn, "start turn", s.path.start_turn, kTurns);
+    if (values & turn_radius) require_in(turn_radius, "turn radius", s.path.turn_radius, kLength);
+    if (values & turn_pitch) require_in(turn_pitch, "turn pitch", s.path.turn_pitch, kLength);
+    if (values & arc_ratio) require_in(arc_ratio, "arc ratio", s.path.arc_ratio, kRatio);
+    if (has(values, bench | pitch | start_turn)) require_reach(s, true);
+    if (has(values, bench | turn_pitch | turn_radius)) require_reach(s, false);
+    if (has(values, pitch | width)) require_wider_pitch(pitch, s.path.pitch, b.width);
+    if (has(values, turn_pitch | width)) require_wider_pitch(turn_pitch, s.path.turn_pitch, b.width);
+}
+
+LoadedScenario read_scenario_file(const std::string& path, Scenario base) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(fmt::format("scenario file '{}' is a folder: give a .toml file", path));
     std::ifstream in(path);
     if (!in) throw InputError(fmt::format("scenario file '{}' cannot be read", path));
     std::stringstream text;
     text << in.rdbuf();
+    if (in.bad()) throw InputError(fmt::format("scenario file '{}' cannot be read", path));
     toml::table root;
     try {
         root = toml::parse(text.str(), path);
@@ -109,18 +133,30 @@ Scenario load_scenario(const std::string& path, Scenario base) {
                                      path, where.line, where.column, e.description()));
     }
 
-    Scenario s = base;
+    LoadedScenario out{base, 0};
+    Scenario& s = out.scenario;
     const std::set<std::string> sections = {"dragon", "path", "motion"};
     for (const auto& [key, node] : root) {
-        if (!sections.count(std::string(key.str())) || !node.is_table())
-            throw InputError(fmt::format("scenario file '{}': unknown section '{}' (allowed: [dragon], "
-                                         "[path], [motion])", path, key.str()));
+        const std::string name(key.str());
+        if (node.is_table() && sections.count(name)) continue;
+        if (node.is_array_of_tables() && sections.count(name))
+            throw InputError(fmt::format("scenario file '{}': [[{}]] is not allowed: write the section once, as [{}]",
+                                         path, name, name));
+        if (node.is_table())
+            throw InputError(fmt::format("scenario file '{}': unknown section [{}] (allowed: [dragon], [path], "
+                                         "[motion])", path, name));
+        throw InputError(fmt::format("scenario file '{}': key '{}' is outside any section: keys belong under "
+                                     "[dragon], [path] or [motion]", path, name));
     }
-    auto number = [&](const toml::table& t, const std::string& section, const std::string& key,
-                      double& dst) {
+    auto number = [&](const toml::table& t, const std::string& section, const std::string& key, double& dst,
+                      ScenarioValues v) {
         const toml::node* n = t.get(key);
         if (!n) return;
-        if (auto v = n->value<double>()) { dst = *v; return; }
+        if (auto x = n->value<double>()) {
+            dst = *x;
+            out.values |= v;
+            return;
+        }
         throw InputError(fmt::format("scenario file '{}': [{}] {} must be a number", path, section, key));
     };
     auto check_keys = [&](const toml::table& t, const std::string& section,
@@ -144,11 +180,12 @@ Scenario load_scenario(const std::string& path, Scenario base) {
                 throw InputError(fmt::format("scenario file '{}': [dragon] bench_count must be an "
                                              "integer from 1 to 1000000", path));
             s.bench.bench_count = static_cast<int>(*v);
+            out.values |= value::bench_count;
         }
-        number(*t, "dragon", "head_length", s.bench.head_length);
-        number(*t, "dragon", "body_length", s.bench.body_length);
-        number(*t, "dragon", "width", s.bench.width);
-        number(*t, "dragon", "hole_offset", s.bench.hole_offset);
+        number(*t, "dragon", "head_length", s.bench.head_length, value::head_length);
+        number(*t, "dragon", "body_length", s.bench.body_length, value::body_length);
+        number(*t, "dragon", "width", s.bench.width, value::width);
+        number(*t, "dragon", "hole_offset", s.bench.hole_offset, value::hole_offset);
     }
     if (const toml::table* t = root["path"].as_table()) {
         check_keys(*t, "path", {"kind", "pitch", "start_turn", "turn_radius", "turn_pitch", "arc_ratio"});
@@ -159,17 +196,19 @@ Scenario load_scenario(const std::string& path, Scenario base) {
             else throw InputError(fmt::format("scenario file '{}': [path] kind must be \"spiral\" or "
                                               "\"turnaround\"", path));
         }
-        number(*t, "path", "pitch", s.path.pitch);
-        number(*t, "path", "start_turn", s.path.start_turn);
-        number(*t, "path", "turn_radius", s.path.turn_radius);
-        number(*t, "path", "turn_pitch", s.path.turn_pitch);
-        number(*t, "path", "arc_ratio", s.path.arc_ratio);
+        number(*t, "path", "pitch", s.path.pitch, value::pitch);
+        number(*t, "path", "start_turn", s.path.start_turn, value::start_turn);
+        number(*t, "path", "turn_radius", s.path.turn_radius, value::turn_radius);
+        number(*t, "path", "turn_pitch", s.path.turn_pitch, value::turn_pitch);
+        number(*t, "path", "arc_ratio", s.path.arc_ratio, value::arc_ratio);
     }
     if (const toml::table* t = root["motion"].as_table()) {
         check_keys(*t, "motion", {"head_speed"});
-        number(*t, "motion", "head_speed", s.head_speed);
+        number(*t, "motion", "head_speed", s.head_speed, value::head_speed);
     }
-    return s;
+    return out;
 }
+
+Scenario load_scenario(const std::string& path, Scenario base) { return read_scenario_file(path, base).scenario; }
 
 }  // namespace dragon

@@ -18,12 +18,15 @@ void simulate_table_into(const Simulation& sim, double t0, double t1, double dt,
     sim.require_valid(t0, "--from");
     sim.require_valid(t1, "--to");
     if (t1 < t0) throw InputError(fmt::format("--to {} is before --from {}: the time range is empty", t1, t0));
-    // Count by index so the last time is exactly t1 when the step divides the range.
+    // Count by index, so no drift. The last time is t1 when the grid lands on it up to rounding
+    // (k dt within 1e-9 of the range, relative: 0.1 * 3 is not 0.3 in binary), else the last grid
+    // time before it: --step 0.3 --to 1 ends at 0.9.
     const double span = (t1 - t0) / dt;
-    const double count = std::floor(span + 1e-9) + 1.0;
+    const double slack = 1e-9 * std::max(span, 1.0);  // in steps
+    const double count = std::floor(span + slack) + 1.0;
     const double rows = count * sim.scenario().bench.handle_count();
     if (rows > 5e6)
-        throw InputError(fmt::format("--step {} gives {:.0f} frames x {} handles: at most 5,000,000 rows; "
+        throw InputError(fmt::format("--step {} gives {:.3g} frames x {} handles: at most 5,000,000 rows; "
                                      "use a larger step or a shorter range", dt, count,
                                      sim.scenario().bench.handle_count()));
     frames.resize(static_cast<size_t>(count));
@@ -36,7 +39,7 @@ void simulate_table_into(const Simulation& sim, double t0, double t1, double dt,
         try {
             for (size_t k = first; k < frames.size(); k += workers) {
                 double t = t0 + static_cast<double>(k) * dt;
-                if (t > t1) t = t1;
+                if (t > t1 || (k + 1 == frames.size() && span - static_cast<double>(k) <= slack)) t = t1;
                 sim.frame_into(t, frames[k]);
             }
         } catch (...) {

@@ -44,7 +44,7 @@ double fastest_point(const Frame& f) {
 
 }  // namespace
 
-RunClearance min_clearance(const Scenario& scenario, double t0, double t1) {
+RunClearance min_clearance(const Scenario& scenario, double t0, double t1, const WorkProgress& progress) {
     if (!std::isfinite(t0) || !std::isfinite(t1) || t1 <= t0)
         throw InputError(fmt::format("time range {}..{} is not allowed: it must be finite and "
                                      "non-empty", t0, t1));
@@ -78,6 +78,7 @@ RunClearance min_clearance(const Scenario& scenario, double t0, double t1) {
     for (int k = 0; k <= steps; ++k) {
         c[static_cast<size_t>(k)] = probe(t0 + k * dt).distance;
         rate[static_cast<size_t>(k)] = 2.0 * fastest_point(f);
+        if (progress) progress(k + 1, steps + 1);
     }
 
     bool certified = true;

@@ -1,7 +1,9 @@
 // Q4's question, "can the turning curve be made shorter?", answered by computing the S-curve
 // against the radius ratio and against where the turn starts.
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <string>
@@ -131,7 +133,7 @@ void write_study_csv(const TurnaroundStudy& study, const std::string& path) {
     AtomicFile file(path);
     {
         std::unique_ptr<FILE, int (*)(FILE*)> out(std::fopen(file.temp_path().c_str(), "w"), &std::fclose);
-        if (!out) throw std::runtime_error(fmt::format("cannot write {}", file.temp_path()));
+        if (!out) throw file.write_error(std::strerror(errno));
         fmt::print(out.get(), "study,ratio,entry_radius,r1,r2,angle,s_curve_length,inside_length,max_radius,"
                               "followable,jam_time,jam_handle,jam_kind\n");
         auto rows = [&](const char* name, const std::vector<TurnStudyRow>& rs) {
@@ -146,7 +148,7 @@ void write_study_csv(const TurnaroundStudy& study, const std::string& path) {
         rows("ratio", study.by_ratio);
         rows("entry_radius", study.by_entry);
         if (std::ferror(out.get()) || std::fclose(out.release()) != 0)
-            throw std::runtime_error(fmt::format("cannot write {}", file.temp_path()));
+            throw file.write_error(std::strerror(errno));
     }
     file.commit();
 }

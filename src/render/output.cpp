@@ -1,4 +1,7 @@
 // Whole-file outputs: the same draw() onto an image surface (PNG) or a vector surface (SVG).
+#include <cerrno>
+#include <cstring>
+
 #include <cairo-svg.h>
 #include <fmt/format.h>
 
@@ -37,7 +40,9 @@ void render_png(const Scene& scene, int w, int h, const std::string& path) {
         draw(cr.get(), scene, w, h);
         check(cairo_status(cr.get()), "drawing");
     }
-    check(cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()), "writing the PNG");
+    errno = 0;
+    if (const cairo_status_t st = cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()))
+        throw out.write_error(errno != 0 ? std::strerror(errno) : cairo_status_to_string(st));
     out.commit();
 }
 
@@ -52,8 +57,10 @@ void render_svg(const Scene& scene, int w, int h, const std::string& path) {
         draw(cr.get(), scene, w, h);
         check(cairo_status(cr.get()), "drawing");
         cr.reset();
+        errno = 0;
         cairo_surface_finish(surface.get());  // writes the file
-        check(cairo_surface_status(surface.get()), "writing the SVG");
+        if (const cairo_status_t st = cairo_surface_status(surface.get()))
+            throw out.write_error(errno != 0 ? std::strerror(errno) : cairo_status_to_string(st));
     }
     out.commit();
 }

@@ -2,7 +2,9 @@
 #include "dragon/plot.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 
@@ -279,8 +281,9 @@ void render_plot_png(const Plot& plot, int w, int h, const std::string& path) {
         if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS)
             throw std::runtime_error(std::string("drawing the plot: ") + cairo_status_to_string(cairo_status(cr.get())));
     }
-    if (cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()) != CAIRO_STATUS_SUCCESS)
-        throw std::runtime_error("writing " + path);
+    errno = 0;
+    if (const cairo_status_t st = cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()))
+        throw out.write_error(errno != 0 ? std::strerror(errno) : cairo_status_to_string(st));
     out.commit();
 }
 

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <unordered_map>
@@ -123,9 +125,12 @@ void write_png8(cairo_surface_t* surface, const std::string& path, int max_colou
 
     AtomicFile out(path);
     std::unique_ptr<FILE, FileCloser> file(std::fopen(out.temp_path().c_str(), "wb"));
-    if (!file) throw std::runtime_error("cannot write " + out.temp_path());
+    if (!file) throw out.write_error(std::strerror(errno));
     PngWrite pw;
-    pw.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    // libpng's default handlers print on stderr; the error comes back as one exception instead.
+    const auto fail = [](png_structp png, png_const_charp) { png_longjmp(png, 1); };
+    const auto ignore = [](png_structp, png_const_charp) {};
+    pw.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, fail, ignore);
     if (pw.png) pw.info = png_create_info_struct(pw.png);
     if (!pw.png || !pw.info) throw std::runtime_error("libpng: out of memory");
     std::vector<png_color> pal;
@@ -138,7 +143,8 @@ void write_png8(cairo_surface_t* surface, const std::string& path, int max_colou
     std::vector<png_bytep> row_ptrs(h);
     for (int y = 0; y < h; ++y) row_ptrs[y] = rows.data() + static_cast<std::size_t>(y) * w;
     // libpng reports errors by longjmp: nothing with a destructor may be created below.
-    if (setjmp(png_jmpbuf(pw.png))) throw std::runtime_error("libpng failed writing " + path);
+    errno = 0;
+    if (setjmp(png_jmpbuf(pw.png))) throw out.write_error(errno != 0 ? std::strerror(errno) : "libpng failed");
     png_init_io(pw.png, file.get());
     png_set_IHDR(pw.png, pw.info, w, h, 8, PNG_COLOR_TYPE_PALETTE, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                  PNG_FILTER_TYPE_DEFAULT);
@@ -148,8 +154,8 @@ void write_png8(cairo_surface_t* surface, const std::string& path, int max_colou
     png_write_info(pw.png, pw.info);
     png_write_image(pw.png, row_ptrs.data());
     png_write_end(pw.png, nullptr);
-    if (std::fflush(file.get()) != 0) throw std::runtime_error("writing " + path);
-    file.reset();
+    if (std::fflush(file.get()) != 0 || std::ferror(file.get()) != 0) throw out.write_error(std::strerror(errno));
+    if (std::fclose(file.release()) != 0) throw out.write_error(std::strerror(errno));
     out.commit();
 }
 

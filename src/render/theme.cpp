@@ -113,6 +113,8 @@ Theme load_theme(const std::string& name_or_path, const std::string& asset_dir) 
     const fs::path given(name_or_path);
     std::error_code ec;
     if (given.extension() == ".toml" || name_or_path.find('/') != std::string::npos) {
+        if (fs::is_directory(given, ec))
+            throw InputError(fmt::format("theme file {} is a folder: give a .toml file", name_or_path));
         if (!fs::is_regular_file(given, ec))
             throw InputError(fmt::format("theme file {} does not exist", name_or_path));
         return parse_theme(given);

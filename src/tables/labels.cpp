@@ -23,6 +23,17 @@ std::string format_time(double t) {
 
 std::string time_header(double t) { return format_time(t) + " s"; }
 
+std::string format_fixed(double v, int digits) {
+    // round6's rule while v * 10^digits is below 2^52 (where doubles still hold every integer):
+    // 6 digits print what the workbooks hold.
+    const double scale = std::pow(10.0, digits);  // exact up to 10^22
+    double r = v;
+    if (std::abs(v * scale) < 0x1p52) r = std::round(v * scale) / scale;
+    std::string out = fmt::format("{:.{}f}", r, digits);
+    if (out[0] == '-' && out.find_first_not_of("0.", 1) == std::string::npos) out.erase(0, 1);  // no "-0.00"
+    return out;
+}
+
 double round6(double v) {
     const double r = std::round(v * 1e6) / 1e6;
     return r == 0.0 ? 0.0 : r;  // no "-0.000000"

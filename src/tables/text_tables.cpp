@@ -1,5 +1,7 @@
 // Long-form CSV and JSON tables.
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 
@@ -18,44 +20,63 @@ struct FileCloser {
 };
 using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
 
-FilePtr open_for_write(const std::string& path) {
-    FilePtr f(std::fopen(path.c_str(), "wb"));
-    if (!f) throw std::runtime_error(fmt::format("cannot create '{}'", path));
-    return f;
+void check_digits(int digits) {
+    if (digits < 0 || digits > kMaxDigits)
+        throw InputError(fmt::format("--digits {} is not allowed: use 0 to {} decimals", digits, kMaxDigits));
 }
 
-void close_checked(FilePtr f, const std::string& path) {
-    std::FILE* raw = f.release();
-    const bool bad = std::ferror(raw) != 0;
-    if (std::fclose(raw) != 0 || bad) throw std::runtime_error(fmt::format("cannot write '{}'", path));
+// Writes the buffer out and empties it; false (errno set) if the stream took less.
+bool flush_to(fmt::memory_buffer& buf, std::FILE* f) {
+    const bool ok = std::fwrite(buf.data(), 1, buf.size(), f) == buf.size();
+    buf.clear();
+    return ok;
+}
+
+// The CSV rows of `frames`, a megabyte at a time; false (errno set) on a failed write.
+bool put_csv(const std::vector<Frame>& frames, std::FILE* f, int digits) {
+    fmt::memory_buffer buf;
+    fmt::format_to(std::back_inserter(buf), "t,handle,x,y,speed\n");
+    for (const Frame& fr : frames) {
+        const std::string t = format_time(fr.time);
+        for (size_t i = 0; i < fr.handles.size(); ++i) {
+            const Handle& h = fr.handles[i];
+            fmt::format_to(std::back_inserter(buf), "{},{},{},{},{}\n", t, i, format_fixed(h.pos.x, digits),
+                           format_fixed(h.pos.y, digits), format_fixed(h.speed, digits));
+        }
+        if (buf.size() > (1u << 20) && !flush_to(buf, f)) return false;
+    }
+    return flush_to(buf, f);
+}
+
+// Opens the temporary file, runs `put` on it and closes it; a failure names the target and why.
+template <typename Put>
+void write_through(AtomicFile& out, Put&& put) {
+    errno = 0;
+    FilePtr f(std::fopen(out.temp_path().c_str(), "wb"));
+    if (!f) throw out.write_error(std::strerror(errno));
+    const bool ok = put(f.get());
+    const int err = errno;
+    if (std::fclose(f.release()) != 0 || !ok) throw out.write_error(std::strerror(ok ? errno : err));
 }
 
 }  // namespace
 
-void write_csv(const std::vector<Frame>& frames, const std::string& path) {
+void write_csv(const std::vector<Frame>& frames, const std::string& path, int digits) {
+    check_digits(digits);
     AtomicFile out(path);
-    FilePtr f = open_for_write(out.temp_path());
-    fmt::memory_buffer buf;
-    fmt::format_to(std::back_inserter(buf), "t,handle,x,y,speed\n");
-    for (const Frame& fr : frames) {
-        for (size_t i = 0; i < fr.handles.size(); ++i) {
-            const Handle& h = fr.handles[i];
-            fmt::format_to(std::back_inserter(buf), "{},{},{:.6f},{:.6f},{:.6f}\n", format_time(fr.time), i,
-                           round6(h.pos.x), round6(h.pos.y), round6(h.speed));
-        }
-        if (buf.size() > (1u << 20)) {
-            std::fwrite(buf.data(), 1, buf.size(), f.get());
-            buf.clear();
-        }
-    }
-    std::fwrite(buf.data(), 1, buf.size(), f.get());
-    close_checked(std::move(f), path);
+    write_through(out, [&](std::FILE* f) { return put_csv(frames, f, digits); });
     out.commit();
 }
 
-void write_json(const std::vector<Frame>& frames, const std::string& path) {
+void print_csv(const std::vector<Frame>& frames, std::FILE* out, int digits) {
+    check_digits(digits);
+    if (!put_csv(frames, out, digits))
+        throw std::runtime_error(fmt::format("cannot write the table: {}", std::strerror(errno)));
+}
+
+void write_json(const std::vector<Frame>& frames, const std::string& path, int digits) {
+    check_digits(digits);
     AtomicFile out(path);
-    FilePtr f = open_for_write(out.temp_path());
     fmt::memory_buffer buf;
     auto put = [&buf]<typename... A>(fmt::format_string<A...> f, A&&... a) {
         fmt::format_to(std::back_inserter(buf), f, std::forward<A>(a)...);
@@ -64,24 +85,27 @@ void write_json(const std::vector<Frame>& frames, const std::string& path) {
     put("{{\"handles\": {}, \"frames\": [\n", n);
     for (size_t k = 0; k < frames.size(); ++k) {
         const Frame& fr = frames[k];
+        const auto list = [&](auto value) {
+            for (size_t i = 0; i < fr.handles.size(); ++i)
+                put("{}{}", i ? ", " : "", format_fixed(value(fr.handles[i]), digits));
+        };
         put("  {{\"t\": {}, \"x\": [", format_time(fr.time));
-        for (size_t i = 0; i < fr.handles.size(); ++i) put("{}{:.6f}", i ? ", " : "", round6(fr.handles[i].pos.x));
+        list([](const Handle& h) { return h.pos.x; });
         put("], \"y\": [");
-        for (size_t i = 0; i < fr.handles.size(); ++i) put("{}{:.6f}", i ? ", " : "", round6(fr.handles[i].pos.y));
+        list([](const Handle& h) { return h.pos.y; });
         put("], \"speed\": [");
-        for (size_t i = 0; i < fr.handles.size(); ++i) put("{}{:.6f}", i ? ", " : "", round6(fr.handles[i].speed));
+        list([](const Handle& h) { return h.speed; });
         put("]}}{}\n", k + 1 < frames.size() ? "," : "");
     }
     put("]}}\n");
-    std::fwrite(buf.data(), 1, buf.size(), f.get());
-    close_checked(std::move(f), path);
+    write_through(out, [&](std::FILE* f) { return flush_to(buf, f); });
     out.commit();
 }
 
-void write_table(const std::vector<Frame>& frames, const std::string& path) {
+void write_table(const std::vector<Frame>& frames, const std::string& path, int digits) {
     const std::string ext = extension_of(path);
-    if (ext == ".csv") return write_csv(frames, path);
-    if (ext == ".json") return write_json(frames, path);
+    if (ext == ".csv") return write_csv(frames, path, digits);
+    if (ext == ".json") return write_json(frames, path, digits);
     if (ext == ".xlsx") return write_result_xlsx(frames, path);
     throw InputError(fmt::format("output '{}' has extension '{}': use .csv, .json or .xlsx", path, ext));
 }

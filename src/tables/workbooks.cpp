@@ -1,4 +1,11 @@
 // The contest's workbooks (result1/2/4.xlsx), cell for cell as in its templates.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
 #include <memory>
 #include <stdexcept>
 
@@ -12,16 +19,61 @@ namespace dragon {
 
 namespace {
 
+// libxlsxwriter prints its own lines on stderr before it returns an error (three for a full
+// disk, naming the hidden temporary file). The error comes back as one exception naming the
+// target, so file descriptor 2 points at /dev/null for the call. (A process-wide effect for a
+// moment: nothing else of this program writes to stderr while a workbook closes.)
+class StderrMuted {
+public:
+    StderrMuted() {
+        std::fflush(stderr);
+        saved_ = ::dup(STDERR_FILENO);
+        const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+        if (saved_ >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
+        if (null >= 0) ::close(null);
+    }
+    ~StderrMuted() {
+        if (saved_ < 0) return;
+        ::dup2(saved_, STDERR_FILENO);
+        ::close(saved_);
+    }
+    StderrMuted(const StderrMuted&) = delete;
+    StderrMuted& operator=(const StderrMuted&) = delete;
+
+private:
+    int saved_ = -1;
+};
+
+// Closing writes the file; also when an exception unwinds past an unfinished workbook.
 struct WorkbookCloser {
-    void operator()(lxw_workbook* wb) const { workbook_close(wb); }
+    void operator()(lxw_workbook* wb) const {
+        const StderrMuted quiet;
+        workbook_close(wb);
+    }
 };
 using WorkbookPtr = std::unique_ptr<lxw_workbook, WorkbookCloser>;
 
-WorkbookPtr new_workbook(const std::string& path, bool row_by_row = false) {
+// The creation time written into every workbook: a fixed moment (the contest's opening,
+// 2024-09-05 00:00 UTC) instead of now, so the same frames give the same bytes; libxlsxwriter
+// also stamps the zip entries with it.
+constexpr std::time_t kCreated = 1725494400;
+
+// A write that failed for want of room. libxlsxwriter does not check its writes to its own
+// temporary files (the sheets' rows, before they are zipped): a full disk or a file size limit
+// there leaves a truncated sheet in a workbook it reports as written. The failed write leaves
+// its errno behind, and no library call resets errno, so this is checked after the close.
+bool out_of_room(int err) { return err == ENOSPC || err == EFBIG || err == EDQUOT || err == EIO; }
+
+WorkbookPtr new_workbook(const AtomicFile& out, bool row_by_row = false) {
+    errno = 0;  // see out_of_room
     lxw_workbook_options options{};
     options.constant_memory = row_by_row ? LXW_TRUE : LXW_FALSE;
-    WorkbookPtr wb(workbook_new_opt(path.c_str(), &options));
-    if (!wb) throw std::runtime_error(fmt::format("cannot create workbook '{}'", path));
+    WorkbookPtr wb(workbook_new_opt(out.temp_path().c_str(), &options));
+    if (!wb) throw out.write_error("libxlsxwriter cannot start a workbook");
+    lxw_doc_properties properties{};
+    properties.created = kCreated;
+    if (workbook_set_properties(wb.get(), &properties) != LXW_NO_ERROR)
+        throw out.write_error("libxlsxwriter cannot set the workbook's properties");
     return wb;
 }
 
@@ -31,20 +83,39 @@ lxw_worksheet* add_sheet(lxw_workbook* wb, const char* name) {
     return ws;
 }
 
-void close_workbook(WorkbookPtr wb, const std::string& target) {
-    const lxw_error err = workbook_close(wb.release());
-    if (err != LXW_NO_ERROR)
-        throw std::runtime_error(fmt::format("cannot write '{}': {}", target, lxw_strerror(err)));
+void close_workbook(WorkbookPtr wb, const AtomicFile& out) {
+    const int before = errno;
+    lxw_error err;
+    {
+        const StderrMuted quiet;
+        err = workbook_close(wb.release());
+    }
+    if (out_of_room(before)) throw out.write_error(std::strerror(before));  // a sheet's rows were cut short
+    const int sys = errno;
+    // The system's reason ("No space left on device") says more than libxlsxwriter's own.
+    if (err != LXW_NO_ERROR) throw out.write_error(sys != 0 ? std::string(std::strerror(sys)) : lxw_strerror(err));
+    if (out_of_room(sys)) throw out.write_error(std::strerror(sys));
 }
 
 }  // namespace
 
 void write_result_xlsx(const std::vector<Frame>& frames, const std::string& path) {
     AtomicFile out(path);
+    write_result_xlsx(frames, out);
+    out.commit();
+}
+
+void write_result2_xlsx(const Frame& frame, const std::string& path) {
+    AtomicFile out(path);
+    write_result2_xlsx(frame, out);
+    out.commit();
+}
+
+void write_result_xlsx(const std::vector<Frame>& frames, AtomicFile& out) {
     // Streamed row by row (libxlsxwriter's constant-memory mode): each row goes to disk as it
     // is finished, which is what this layout needs anyway, and it is several times faster
     // than keeping the whole table of cells in memory.
-    WorkbookPtr wb = new_workbook(out.temp_path(), true);
+    WorkbookPtr wb = new_workbook(out, true);
     lxw_worksheet* pos = add_sheet(wb.get(), "位置");
     lxw_worksheet* vel = add_sheet(wb.get(), "速度");
     const int n = frames.empty() ? 0 : static_cast<int>(frames.front().handles.size());
@@ -74,13 +145,11 @@ void write_result_xlsx(const std::vector<Frame>& frames, const std::string& path
             worksheet_write_number(vel, v_row, static_cast<lxw_col_t>(k + 1),
                                    round6(frames[k].handles[static_cast<size_t>(i)].speed), nullptr);
     }
-    close_workbook(std::move(wb), path);
-    out.commit();
+    close_workbook(std::move(wb), out);
 }
 
-void write_result2_xlsx(const Frame& frame, const std::string& path) {
-    AtomicFile out(path);
-    WorkbookPtr wb = new_workbook(out.temp_path());
+void write_result2_xlsx(const Frame& frame, AtomicFile& out) {
+    WorkbookPtr wb = new_workbook(out);
     lxw_worksheet* ws = add_sheet(wb.get(), "Sheet1");
     worksheet_write_string(ws, 0, 1, "横坐标x (m)", nullptr);
     worksheet_write_string(ws, 0, 2, "纵坐标y (m)", nullptr);
@@ -94,8 +163,7 @@ void write_result2_xlsx(const Frame& frame, const std::string& path) {
         worksheet_write_number(ws, row, 2, round6(h.pos.y), nullptr);
         worksheet_write_number(ws, row, 3, round6(h.speed), nullptr);
     }
-    close_workbook(std::move(wb), path);
-    out.commit();
+    close_workbook(std::move(wb), out);
 }
 
 }  // namespace dragon

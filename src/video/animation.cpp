@@ -81,7 +81,7 @@ Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions 
     const double steps = (clip.to - clip.from) * fps / clip.speedup;
     const double hold_frames = std::round(clip.hold * fps);
     if (steps + hold_frames + 1 > max_frames)
-        throw InputError(fmt::format("the film would have {:.0f} frames, more than {}: raise --speedup or "
+        throw InputError(fmt::format("the film would have {:.3g} frames, more than {}: raise --speedup or "
                                      "lower --fps", steps + hold_frames + 1, max_frames));
     // Tolerate float noise: 10 s at 30 fps is 300 steps, not 301.
     moving_frames_ = static_cast<int>(std::ceil(steps - 1e-9)) + 1;

@@ -15,6 +15,9 @@ namespace {
 constexpr std::array<std::string_view, 10> x264_presets = {
     "ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow", "placebo"};
 constexpr double max_fps = 240.0;
+// A frame at most every 100 s: GIF stores a frame's delay in 1/100 s in 16 bits (655 s at
+// most), and the MP4 muxer refuses the durations of rates below ~1e-5.
+constexpr double min_fps = 0.01;
 constexpr int max_side = 8192;  // px; H.264 level limits and memory, not taste
 }  // namespace
 
@@ -43,12 +46,16 @@ void validate(const VideoOptions& opt, VideoFormat format) {
     if (format != VideoFormat::gif && (opt.width % 2 != 0 || opt.height % 2 != 0))
         throw InputError(fmt::format("video size {}x{} is not allowed for {}: yuv420p needs an even width "
                                      "and height", opt.width, opt.height, to_string(format)));
-    if (!(opt.fps > 0.0) || !(opt.fps <= max_fps))
-        throw InputError(fmt::format("--fps {} is not allowed: use a rate above 0 and at most {}", opt.fps, max_fps));
-    if (format == VideoFormat::mp4 && (opt.crf < -1 || opt.crf > 51))
-        throw InputError(fmt::format("--crf {} is not allowed for H.264: use 0 (lossless) to 51", opt.crf));
-    if (format == VideoFormat::webm && (opt.crf < -1 || opt.crf > 63))
-        throw InputError(fmt::format("--crf {} is not allowed for VP9: use 0 to 63", opt.crf));
+    if (!(opt.fps >= min_fps) || !(opt.fps <= max_fps))
+        throw InputError(fmt::format("--fps {} is not allowed: use a rate from {} to {} frames per second", opt.fps,
+                                     min_fps, max_fps));
+    if (opt.crf && format == VideoFormat::gif)
+        throw InputError(fmt::format("--crf {} is not allowed for .gif: a GIF has no quality setting (--colours "
+                                     "sets its palette)", *opt.crf));
+    if (opt.crf && format == VideoFormat::mp4 && (*opt.crf < 0 || *opt.crf > 51))
+        throw InputError(fmt::format("--crf {} is not allowed for H.264: use 0 (lossless) to 51", *opt.crf));
+    if (opt.crf && format == VideoFormat::webm && (*opt.crf < 0 || *opt.crf > 63))
+        throw InputError(fmt::format("--crf {} is not allowed for VP9: use 0 to 63", *opt.crf));
     if (format == VideoFormat::mp4) {
         bool known = false;
         for (auto p : x264_presets) known = known || p == opt.preset;

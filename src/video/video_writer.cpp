@@ -37,7 +37,7 @@ CodecChoice codec_for(VideoFormat f) {
 // Encoder-private options: speed first (this runs on two cores), quality by crf.
 av::Dictionary encoder_options(VideoFormat f, const VideoOptions& opt, const CodecChoice& c) {
     AVDictionary* d = nullptr;
-    const int crf = opt.crf >= 0 ? opt.crf : c.default_crf;
+    const int crf = opt.crf.value_or(c.default_crf);
     if (f == VideoFormat::mp4) {
         av_dict_set(&d, "preset", opt.preset.c_str(), 0);
         av_dict_set_int(&d, "crf", crf, 0);
@@ -136,7 +136,7 @@ struct VideoWriter::Impl {
         av::check(av_frame_get_buffer(frame.get(), 0), "cannot allocate a video frame");
 
         av::check(avio_open(&mux->pb, file.temp_path().c_str(), AVIO_FLAG_WRITE),
-                  fmt::format("cannot write '{}'", file.temp_path()));
+                  fmt::format("cannot write '{}'", file.target()));
         AVDictionary* mux_opts = nullptr;
         // The index at the front: browsers start playing before the download ends.
         if (format == VideoFormat::mp4) av_dict_set(&mux_opts, "movflags", "+faststart", 0);
@@ -174,7 +174,7 @@ struct VideoWriter::Impl {
             av_packet_rescale_ts(packet.get(), enc->time_base, stream->time_base);
             packet->stream_index = stream->index;
             av::check(av_interleaved_write_frame(mux.get(), packet.get()),
-                      fmt::format("cannot write '{}'", file.temp_path()));
+                      fmt::format("cannot write '{}'", file.target()));
         }
     }
 
@@ -183,8 +183,8 @@ struct VideoWriter::Impl {
         if (next_pts == 0) throw std::runtime_error("a video needs at least one frame");
         av::check(avcodec_send_frame(enc.get(), nullptr), "cannot flush the encoder");
         drain();
-        av::check(av_write_trailer(mux.get()), fmt::format("cannot finish '{}'", file.temp_path()));
-        av::check(avio_closep(&mux->pb), fmt::format("cannot close '{}'", file.temp_path()));
+        av::check(av_write_trailer(mux.get()), fmt::format("cannot finish '{}'", file.target()));
+        av::check(avio_closep(&mux->pb), fmt::format("cannot close '{}'", file.target()));
         file.commit();
         finished = true;
     }

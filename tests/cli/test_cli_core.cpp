@@ -66,7 +66,10 @@ TEST_P(BadInput, OneLineExitTwoNoFile) {
     const CliRun r = dragon(args);
     EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
     EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("dragon: error: ", 0), 0u) << r.err;
     EXPECT_NE(r.err.find(GetParam().word), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find(".tmp"), std::string::npos) << r.err;  // never a hidden temporary name
+    EXPECT_EQ(r.out, "");
     EXPECT_FALSE(fs::exists(target));
     for (const auto& e : fs::directory_iterator(scratch()))
         EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
@@ -84,7 +87,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"simulate --body-length 0 -o @OUT", "body length"},
         BadCase{"simulate --width nan -o @OUT", "width"},
         BadCase{"simulate --hole-offset 1.1 -o @OUT", "hole offset"},
-        BadCase{"simulate --body-count 0 -o @OUT", "--body-count"},
+        BadCase{"simulate --bench-count 0 -o @OUT", "--bench-count"},
         BadCase{"simulate --pitch 0.25 -o @OUT", "pitch"},  // narrower than a bench: does not fit
         BadCase{"simulate --start-turn 0 -o @OUT", "start turn"},
         BadCase{"simulate --start-turn -3 -o @OUT", "start turn"},
@@ -102,7 +105,55 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"min-pitch --grid 0", "--grid 0"},
         BadCase{"min-pitch --grid nan", "--grid nan"},
         BadCase{"min-pitch --grid 1e-9", "at most 100000"},
-        BadCase{"solve -o /proc/forbidden", "/proc/forbidden"}));
+        BadCase{"solve -o /proc/forbidden", "/proc/forbidden"},
+        // An empty value is refused, never taken as the default.
+        BadCase{"simulate --pitch '' -o @OUT", "--pitch '' is not allowed: give a number"},
+        BadCase{"simulate --pitch= -o @OUT", "--pitch '' is not allowed: give a number"},
+        BadCase{"simulate -o ''", "--out '' is not allowed: give a file name"},
+        BadCase{"solve -o ''", "--out '' is not allowed: give a folder name"},
+        BadCase{"collide --to ''", "--to '' is not allowed: give a number"},
+        BadCase{"min-pitch --grid ''", "--grid '' is not allowed: give a number"},
+        BadCase{"turnaround -o ''", "--out '' is not allowed: give a file name"},
+        BadCase{"max-speed --limit ''", "--limit '' is not allowed: give a number"},
+        BadCase{"simulate --scenario '' -o @OUT", "--scenario '' is not allowed: give a .toml file"},
+        BadCase{"simulate --path '' -o @OUT", "--path '' is not allowed: use spiral or turnaround"},
+        BadCase{"simulate --bench-count '' -o @OUT", "--bench-count '' is not allowed: give a whole number"},
+        BadCase{"render --time 1 -o ''", "--out '' is not allowed: give a file name"},
+        BadCase{"figures --theme '' -o @OUT", "--theme '' is not allowed: use light, dark or a .toml file"},
+        BadCase{"video -o '' --to 1", "--out '' is not allowed: give a file name"},
+        // A folder is not a file.
+        BadCase{"simulate --scenario / -o @OUT", "scenario file '/' is a folder: give a .toml file"},
+        BadCase{"render --time 1 --theme / -o @OUT.png", "theme file / is a folder: give a .toml file"},
+        // Each command takes the flags it uses, and no others.
+        BadCase{"turnaround --pitch 5", "dragon turnaround does not take --pitch"},
+        BadCase{"max-speed --start-turn 3", "dragon max-speed does not take --start-turn"},
+        BadCase{"min-pitch --pitch 0.1", "dragon min-pitch does not take --pitch"},
+        BadCase{"min-pitch --turn-pitch 2", "dragon min-pitch does not take --turn-pitch"},
+        BadCase{"solve --path turnaround -o @OUT", "dragon solve does not take --path"},
+        BadCase{"figures --path turnaround -o @OUT", "dragon figures does not take --path"},
+        BadCase{"simulate --turn-pitch 2 -o @OUT", "--turn-pitch is not used on the plain spiral"},
+        BadCase{"simulate --path turnaround --pitch 0.6 -o @OUT", "--pitch is not used on the turnaround path"},
+        BadCase{"turnaround --no-clearance --to 5", "--no-clearance excludes --to"},
+        BadCase{"figures --list --scale 2", "--list excludes --scale"},
+        BadCase{"max-speed --quiet", "dragon max-speed has no option --quiet"},
+        BadCase{"simulate --body-count 3 -o @OUT", "it is now --bench-count"},
+        BadCase{"simulate --bench-count 0 -o @OUT", "--bench-count 0 is not allowed"},
+        BadCase{"simulate --pich 0.6 -o @OUT", "did you mean --pitch?"},
+        BadCase{"simulat --to 1", "unknown command 'simulat' (did you mean simulate?)"},
+        BadCase{"foo", "unknown command 'foo': the commands are simulate, solve, collide"},
+        BadCase{"", "a command is needed"},
+        // Out of range, named by the flag that put it there; messages in a few digits.
+        BadCase{"min-pitch --hi 1e308", "--hi 1e+308 is not allowed: a pitch is at most 1000 m"},
+        BadCase{"min-pitch --grid 1e-300", "it makes 2e+299 grid steps"},
+        BadCase{"simulate --step 1e-300 -o @OUT", "--step 1e-300 gives 3e+302 frames"},
+        BadCase{"simulate --path turnaround --from 1e300 --to 1e300 -o @OUT", "puts the chain 1e+300 m along"},
+        BadCase{"simulate --hole-offset nan -o @OUT", "hole offset = nan is not allowed: it must be a finite number >= 0"},
+        BadCase{"simulate --digits 18 -o @OUT", "--digits 18 is not allowed: use 0 to 17"},
+        BadCase{"simulate --digits -1 -o @OUT", "--digits -1 is not allowed"},
+        BadCase{"simulate --digits 3 -o @OUT.xlsx", "--digits 3 is not allowed with .xlsx"},
+        BadCase{"collide --digits 3", "--digits 3 is not allowed without -o"},
+        // A target that cannot be written: named (not the hidden temporary file), and why.
+        BadCase{"simulate --to 1 -o /proc/x.csv", "output path '/proc/x.csv' is not writable: no file can be made in '/proc'"}));
 
 TEST(Cli, MalformedScenarioFileIsRefused) {
     const fs::path bad = scratch() / "bad.toml", unknown = scratch() / "unknown.toml";

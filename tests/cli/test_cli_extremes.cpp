@@ -68,26 +68,26 @@ std::string out_file(const std::string& name) { return (dragon_test::scratch_dir
 }  // namespace
 
 TEST(Extremes, OneBench) {
-    const CliRun sim = dragon("simulate --body-count 1 --to 3");
-    expect_works(sim, "simulate --body-count 1");
+    const CliRun sim = dragon("simulate --bench-count 1 --to 3");
+    expect_works(sim, "simulate --bench-count 1");
     EXPECT_EQ(lines(sim.out), 1 + 4 * 2);  // header, then 4 frames of 2 handles
-    const CliRun hit = dragon("collide --body-count 1");
-    expect_works(hit, "collide --body-count 1");
+    const CliRun hit = dragon("collide --bench-count 1");
+    expect_works(hit, "collide --bench-count 1");
     EXPECT_TRUE(has(hit.out, "no collision")) << hit.out;
-    works("render --body-count 1 --time 10 --size 64x64 -o " + out_file("one.png"));
-    works("video --body-count 1 --to 2 --size 64x48 --fps 5 -o " + out_file("one.mp4"));
+    works("render --bench-count 1 --time 10 --size 64x64 -o " + out_file("one.png"));
+    works("video --bench-count 1 --to 2 --size 64x48 --fps 5 -o " + out_file("one.mp4"));
     // One bench cannot touch another: there is no first contact to draw or film.
-    refused("render --body-count 1 --collision --size 64x64 -o " + out_file("hit.png"), "no two benches touch");
-    refused("video --body-count 1 --size 64x48 -o " + out_file("hit.mp4"), "no two benches touch");
+    refused("render --bench-count 1 --collision --size 64x64 -o " + out_file("hit.png"), "no two benches touch");
+    refused("video --bench-count 1 --size 64x48 -o " + out_file("hit.mp4"), "no two benches touch");
 }
 
 TEST(Extremes, TenThousandBenches) {
-    const CliRun sim = dragon("simulate --body-count 10000 --to 0");
-    expect_works(sim, "simulate --body-count 10000");
+    const CliRun sim = dragon("simulate --bench-count 10000 --to 0");
+    expect_works(sim, "simulate --bench-count 10000");
     EXPECT_EQ(lines(sim.out), 1 + 10001);
-    works("render --body-count 10000 --time 10 --size 64x64 -o " + out_file("long.png"));
+    works("render --bench-count 10000 --time 10 --size 64x64 -o " + out_file("long.png"));
     // A million 20 m boards would reach 2e7 m along the spiral, where positions lose precision.
-    refused("simulate --body-count 1000000 --body-length 20 --to 0", "at most");
+    refused("simulate --bench-count 1000000 --body-length 20 --to 0", "at most");
 }
 
 TEST(Extremes, PitchJustAboveTheWidth) {

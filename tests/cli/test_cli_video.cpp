@@ -91,8 +91,28 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCase{"bad_size", "--size big --to 1", "a.mp4", "--size"},
                       BadCase{"bad_preset", ok + " --preset glacial", "a.mp4", "--preset"},
                       BadCase{"bad_colours", ok + " --colours 1", "a.gif", "--colours"},
-                      BadCase{"bad_speedup", ok + " --speedup -1", "a.mp4", "--speedup"}),
+                      BadCase{"bad_speedup", ok + " --speedup -1", "a.mp4", "--speedup"},
+                      // -1 is no codec's quality: there is no "default" value to give.
+                      BadCase{"crf_minus_one", ok + " --crf -1", "a.mp4", "--crf -1 is not allowed for H.264"},
+                      BadCase{"crf_for_gif", ok + " --crf 20", "a.gif", "--crf 20 is not allowed for .gif"},
+                      BadCase{"preset_for_webm", ok + " --preset fast", "a.webm", "--preset fast is not allowed for .webm"},
+                      BadCase{"colours_for_mp4", ok + " --colours 64", "a.mp4", "--colours 64 is not allowed for .mp4"},
+                      // A rate the muxer cannot time: refused before it is asked.
+                      BadCase{"fps_tiny", "--size 64x48 --fps 1e-9 --to 1", "a.mp4",
+                              "--fps 1e-09 is not allowed: use a rate from 0.01 to 240"},
+                      BadCase{"speedup_tiny", "--size 64x48 --speedup 1e-300 --to 1", "a.mp4",
+                              "the film would have 3e+301 frames"}),
     [](const auto& info) { return std::string(info.param.name); });
+
+TEST(CliVideo, TheSlowestRateWorksForEveryFormat) {
+    for (const char* name : {"slow.mp4", "slow.webm", "slow.gif"}) {
+        const std::string target = (scratch_dir() / name).string();
+        const RunResult r = dragon_video("-o " + target + " --size 64x48 --fps 0.01 --speedup 0.01 --to 1 -q");
+        EXPECT_EQ(r.code, 0) << name << ": " << r.err;
+        EXPECT_EQ(r.err, "") << name;
+        EXPECT_TRUE(fs::exists(target)) << name;
+    }
+}
 
 TEST(CliVideo, WritesTheFilmAndSaysSo) {
     for (const auto& e : fs::directory_iterator(scratch_dir())) fs::remove_all(e.path());
@@ -101,9 +121,15 @@ TEST(CliVideo, WritesTheFilmAndSaysSo) {
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_TRUE(fs::exists(target));
     EXPECT_GT(fs::file_size(target), 0u);
-    EXPECT_NE(r.out.find("5 frames"), std::string::npos) << r.out;  // 0, 0.5, 1, 1.5, 2 s
-    EXPECT_EQ(r.err, "");  // stderr is not a terminal here: no progress bar, no codec chatter
+    // Status on stderr, as for every command; stdout is for answers (none here).
+    EXPECT_EQ(r.out, "");
+    // 0, 0.5, 1, 1.5, 2 s. stderr is not a terminal here: no progress line, and no codec chatter.
+    EXPECT_EQ(r.err.rfind("wrote " + target + ": 5 frames", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_EQ(stray_files(), 1);
+    const RunResult quiet = dragon_video("-o " + target + " --size 96x64 --fps 10 --speedup 5 --from 0 --to 2 -q");
+    ASSERT_EQ(quiet.code, 0) << quiet.err;
+    EXPECT_EQ(quiet.err, "");
 }
 
 }  // namespace

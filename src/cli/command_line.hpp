@@ -1,0 +1,23 @@
+// The command line as every subcommand shares it: `dragon help [COMMAND]`; an unknown command or
+// option named, with the likely one meant; a scenario flag a command does not take named with
+// the reason; an empty value ("--pitch ''") refused; CLI11's own errors as one line. Every
+// refusal is one line on stderr and exit code 2.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace dragon::cli {
+
+// Parses argv into `app` (its subcommands registered). Returns the exit code to end with
+// (0 after printing help, 2 after one line on stderr), or nullopt: run the chosen subcommand.
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv);
+
+// The choice `word` most likely misspells or abbreviates: within two edits (and fewer than half
+// its letters), or the only choice it starts (3 letters at least); "" if none.
+std::string closest(const std::string& word, const std::vector<std::string>& choices);
+
+}  // namespace dragon::cli

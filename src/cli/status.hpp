@@ -1,0 +1,34 @@
+// What a command says on stderr besides errors: "wrote FILE ..." lines. stdout holds answers
+// (tables, JSON, the paper-style text) and nothing else, so it can be piped or redirected;
+// status goes to stderr for every command, and --quiet silences it (and the progress line).
+#pragma once
+
+#include <cerrno>
+#include <cstdio>
+#include <system_error>
+#include <utility>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+namespace dragon::cli {
+
+inline void add_quiet_flag(CLI::App* sub, bool& quiet) {
+    sub->add_flag("-q,--quiet", quiet, "Nothing on stderr but errors: no progress line, no 'wrote' lines");
+}
+
+// One status line on stderr, unless quiet.
+template <typename... A>
+void status(bool quiet, fmt::format_string<A...> f, A&&... args) {
+    if (quiet) return;
+    fmt::print(stderr, "{}\n", fmt::format(f, std::forward<A>(args)...));
+}
+
+// Throws std::system_error if what was printed on stdout did not all reach it (a full disk, a
+// closed pipe): a command that commits files last calls it first, so such a run changes none.
+inline void require_stdout_written() {
+    if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0)
+        throw std::system_error(errno, std::generic_category(), "standard output");
+}
+
+}  // namespace dragon::cli
