@@ -62,8 +62,9 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
             fmt::print("the range's low end, {} m, already reaches radius {} m with no collision: the minimum "
                        "pitch lies at or below it (lower --lo to find it)\n", m.search_lo, s.path.turn_radius);
         else if (m.above_range)
-            fmt::print("no pitch in [{}, {}] m reaches radius {} m without a collision: the minimum pitch lies "
-                       "above {} m (raise --hi to find it)\n", m.search_lo, m.search_hi, s.path.turn_radius, m.search_hi);
+            fmt::print("no pitch in [{}, {}] m takes the head to radius {} m without a collision{}: the minimum "
+                       "pitch, if there is one, lies above {} m (raise --hi to look for it)\n", m.search_lo, m.search_hi,
+                       s.path.turn_radius, m.jam ? " and before its motion ends" : "", m.search_hi);
         else
             fmt::print("minimum pitch: {:.10f} m (head reaches radius {} m with no collision on the way)\n",
                        m.pitch, s.path.turn_radius);

@@ -27,11 +27,15 @@ struct SimulateOptions {
 void register_simulate(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<SimulateOptions>();
     CLI::App* sub = app.add_subcommand(
-        "simulate", "Positions and exact speeds of every handle over time (Q1, Q4 tables)");
+        "simulate",
+        "Positions and exact speeds of every handle over time (Q1, Q4 tables). Speeds are signed along the path: "
+        "negative while a handle backs up. Times past the end of the dragon's valid motion (where a handle would "
+        "have to jump) are refused");
     opt->scenario.add_to(sub, ScenarioUse::either_path());
     sub->add_option("--from", opt->from, "First time, s (default 0; -100 on the turnaround path)");
     sub->add_option("--to", opt->to,
-                    "Last time, s (default 300; 100 on the turnaround path). The table ends exactly at it when "
+                    "Last time, s (default 300; 100 on the turnaround path; at most the end of the valid motion). "
+                    "The table ends exactly at it when "
                     "the steps from --from land on it (up to rounding), else at the last step before it");
     sub->add_option("--step", opt->step, "Time step, s (default 1)");
     sub->add_option("-o,--out", opt->out,

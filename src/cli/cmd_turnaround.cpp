@@ -8,9 +8,11 @@
 
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
+#include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
 #include "dragon/atomic_file.hpp"
+#include "dragon/tables.hpp"
 #include "dragon/turnaround.hpp"
 
 namespace dragon::cli {
@@ -28,56 +30,71 @@ struct TurnaroundOptions {
     bool quiet = false;
 };
 
-std::string point(Vec2 p) { return fmt::format("[{}, {}]", p.x, p.y); }
+Json point(Vec2 p) { return {p.x, p.y}; }
 
-std::string json_string(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\';
-        out += c;
-    }
-    return out + "\"";
+Json rows_json(const std::vector<TurnStudyRow>& rows) {
+    Json out = Json::array();
+    for (const TurnStudyRow& r : rows)
+        out.push_back({{"ratio", r.ratio},
+                       {"entry_radius", r.entry_radius},
+                       {"r1", r.r1},
+                       {"r2", r.r2},
+                       {"angle", r.angle},
+                       {"s_curve_length", r.s_curve_length},
+                       {"inside_length", r.inside_length},
+                       {"max_radius", r.max_radius},
+                       {"followable", r.followable()},
+                       {"jam", jam_json(r.jam)}});
+    return out;
 }
 
-std::string rows_json(const std::vector<TurnStudyRow>& rows) {
-    std::string out = "[";
-    for (size_t i = 0; i < rows.size(); ++i) {
-        const TurnStudyRow& r = rows[i];
-        out += fmt::format("{}{{\"ratio\": {}, \"entry_radius\": {}, \"r1\": {}, \"r2\": {}, \"angle\": {}, "
-                           "\"s_curve_length\": {}, \"inside_length\": {}, \"max_radius\": {}}}",
-                           i ? ", " : "", r.ratio, r.entry_radius, r.r1, r.r2, r.angle,
-                           r.s_curve_length, r.inside_length, r.max_radius);
-    }
-    return out + "]";
-}
-
-void print_json(const TurnaroundStudy& st, const std::optional<RunClearance>& clear, double from,
-                double to) {
+void print_answer_json(const TurnaroundStudy& st, const std::optional<RunClearance>& clear) {
     const SCurve& d = st.design;
-    std::string s = fmt::format(
-        "{{\"r1\": {}, \"r2\": {}, \"length\": {}, \"ratio\": {}, \"pitch\": {}, \"entry_radius\": {}, "
-        "\"entry\": {}, \"exit\": {}, \"c1\": {}, \"c2\": {}, \"joint\": {}, \"angle1\": {}, "
-        "\"angle2\": {}, \"length1\": {}, \"length2\": {}, \"max_radius\": {}, "
-        "\"length_vs_ratio\": {}, \"length_vs_entry_radius\": {}, \"ratio_spread\": {}, "
-        "\"conclusion\": {}",
-        d.r1, d.r2, d.length, d.ratio, d.pitch, d.entry_radius, point(d.entry), point(d.exit),
-        point(d.c1), point(d.c2), point(d.joint), d.angle1, d.angle2, d.length1, d.length2,
-        d.max_radius, rows_json(st.by_ratio), rows_json(st.by_entry), st.ratio_spread,
-        json_string(st.conclusion));
+    Json answer = {{"r1", d.r1},
+                   {"r2", d.r2},
+                   {"length", d.length},
+                   {"ratio", d.ratio},
+                   {"pitch", d.pitch},
+                   {"entry_radius", d.entry_radius},
+                   {"entry", point(d.entry)},
+                   {"exit", point(d.exit)},
+                   {"c1", point(d.c1)},
+                   {"c2", point(d.c2)},
+                   {"joint", point(d.joint)},
+                   {"angle1", d.angle1},
+                   {"angle2", d.angle2},
+                   {"length1", d.length1},
+                   {"length2", d.length2},
+                   {"max_radius", d.max_radius},
+                   {"followable", !st.design_jam},
+                   {"length_vs_ratio", rows_json(st.by_ratio)},
+                   {"length_vs_entry_radius", rows_json(st.by_entry)},
+                   {"ratio_spread", st.ratio_spread},
+                   {"conclusion", st.conclusion}};
     if (clear) {
         // No pair within the scan's cutoff: the distance is only a lower bound, with no pair or time.
         const bool near = clear->bench_a > 0;
-        s += fmt::format(", \"clearance\": {{\"distance\": {}, \"at_least\": {}, \"time\": {}, "
-                         "\"benches\": {}, \"collision_free\": {}, \"from\": {}, \"to\": {}}}",
-                         clear->distance, near ? "false" : "true", near ? fmt::format("{}", clear->time) : "null",
-                         near ? fmt::format("[{}, {}]", clear->bench_a, clear->bench_b) : "null",
-                         clear->collision_free ? "true" : "false", from, to);
+        answer["clearance"] = {{"distance", clear->distance},
+                               {"at_least", !near},
+                               {"time", near ? Json(clear->time) : Json(nullptr)},
+                               {"benches", near ? Json({clear->bench_a, clear->bench_b}) : Json(nullptr)},
+                               {"collision_free", clear->collision_free},
+                               {"from", clear->from},
+                               {"to", clear->to}};
     }
-    fmt::print("{}}}\n", s);
+    // The end of the valid motion where it cuts the clearance run short, else on the design.
+    answer["jam"] = jam_json(clear && clear->jam ? clear->jam : st.design_jam);
+    print_json(answer);
 }
 
-void print_text(const TurnaroundStudy& st, const std::optional<RunClearance>& clear, double from,
-                double to) {
+// "yes", or "no: handle 1 jumps at t = 15.147713 s".
+std::string followable(const TurnStudyRow& r) {
+    if (!r.jam) return "yes";
+    return fmt::format("no: handle {} {} at t = {:.6f} s", r.jam->handle,
+                       r.jam->kind == JamKind::root_vanishes ? "loses its root" : "jumps to a nearer root", r.jam->time);
+}
+
+void print_text(const TurnaroundStudy& st, const std::optional<RunClearance>& clear) {
     const SCurve& d = st.design;
     fmt::print("Turnaround S-curve (pitch {} m, turning space radius {} m, r1/r2 = {})\n", d.pitch,
                d.entry_radius, d.ratio);
@@ -88,25 +105,32 @@ void print_text(const TurnaroundStudy& st, const std::optional<RunClearance>& cl
     fmt::print("  arc 2     centre ({:.6f}, {:.6f})  r2 = {:.6f} m  {:.6f} rad ({:.2f} deg)  {:.6f} m\n",
                d.c2.x, d.c2.y, d.r2, d.angle2, d.angle2 * kDegrees, d.length2);
     fmt::print("  joint     ({:.6f}, {:.6f})\n", d.joint.x, d.joint.y);
-    fmt::print("  length    {:.6f} m (farthest from the centre: {:.6f} m)\n\n", d.length, d.max_radius);
-
-    fmt::print("Can the turning curve be shorter?\n");
-    fmt::print("  {:>7}  {:>10}  {:>10}  {:>14}\n", "r1/r2", "r1 (m)", "r2 (m)", "S-curve (m)");
+    fmt::print("  length    {:.6f} m (farthest from the centre: {:.6f} m)\n", d.length, d.max_radius);
+    if (st.design_jam) fmt::print("  this dragon cannot follow it: {}\n", jam_sentence(*st.design_jam));
+    fmt::print("\nCan the turning curve be shorter? (and can this dragon follow it?)\n");
+    fmt::print("  {:>7}  {:>10}  {:>10}  {:>14}  {}\n", "r1/r2", "r1 (m)", "r2 (m)", "S-curve (m)", "followable");
     for (const TurnStudyRow& r : st.by_ratio)
-        fmt::print("  {:>7.3f}  {:>10.6f}  {:>10.6f}  {:>14.9f}\n", r.ratio, r.r1, r.r2, r.s_curve_length);
-    fmt::print("\n  {:>12}  {:>14}  {:>22}\n", "entry r (m)", "S-curve (m)", "inside the space (m)");
+        fmt::print("  {:>7.3f}  {:>10.6f}  {:>10.6f}  {:>14.9f}  {}\n", r.ratio, r.r1, r.r2, r.s_curve_length,
+                   followable(r));
+    fmt::print("\n  {:>12}  {:>14}  {:>22}  {}\n", "entry r (m)", "S-curve (m)", "inside the space (m)", "followable");
     for (const TurnStudyRow& r : st.by_entry)
-        fmt::print("  {:>12.4f}  {:>14.6f}  {:>22.6f}\n", r.entry_radius, r.s_curve_length, r.inside_length);
+        fmt::print("  {:>12.4f}  {:>14.6f}  {:>22.6f}  {}\n", r.entry_radius, r.s_curve_length, r.inside_length,
+                   followable(r));
     fmt::print("\n  {}\n", st.conclusion);
 
-    if (clear && clear->bench_a == 0) {
-        fmt::print("\nClearance over t = {}..{} s: no two benches come within {:.6f} m; {}\n", from, to,
-                   clear->distance, clear->collision_free ? "collision-free" : "benches COLLIDE");
-    } else if (clear) {
-        fmt::print("\nClearance over t = {}..{} s: smallest {:.6f} m, benches {} and {} at t = {:.6f} s; {}\n",
-                   from, to, clear->distance, clear->bench_a, clear->bench_b, clear->time,
+    if (!clear) return;
+    const std::string range = fmt::format("t = {}..{} s", format_time(clear->from),
+                                          clear->jam ? format_resolved(clear->to, clear->jam->tolerance)
+                                                     : format_time(clear->to));
+    if (clear->bench_a == 0) {
+        fmt::print("\nClearance over {}: no two benches come within {:.6f} m; {}\n", range, clear->distance,
+                   clear->collision_free ? "collision-free" : "benches COLLIDE");
+    } else {
+        fmt::print("\nClearance over {}: smallest {:.6f} m, benches {} and {} at t = {:.6f} s; {}\n", range,
+                   clear->distance, clear->bench_a, clear->bench_b, clear->time,
                    clear->collision_free ? "collision-free" : "benches COLLIDE");
     }
+    if (clear->jam) fmt::print("  the check ends there: {}\n", jam_sentence(*clear->jam, clear->jam->time > 0.0));
 }
 
 }  // namespace
@@ -141,8 +165,8 @@ void register_turnaround(CLI::App& app, Registry& reg) {
                                   [&progress](std::int64_t done, std::int64_t total) { progress.update(done, total); });
         }
         if (!opt->out.empty()) write_study_csv(st, opt->out);
-        if (opt->json) print_json(st, clear, opt->from, opt->to);
-        else print_text(st, clear, opt->from, opt->to);
+        if (opt->json) print_answer_json(st, clear);
+        else print_text(st, clear);
         if (!opt->out.empty()) status(opt->quiet, "wrote {}", opt->out);
         return 0;
     };

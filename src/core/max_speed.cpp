@@ -122,7 +122,7 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, doubl
     const double ds = (s1 - s0) / steps;
 
     std::vector<double> rho(static_cast<size_t>(steps) + 1);
-    for (int k = 0; k <= steps; ++k) rho[static_cast<size_t>(k)] = probe(s0 + k * ds).ratio;
+    for (int k = 0; k <= steps; ++k) rho[static_cast<size_t>(k)] = probe(k == steps ? s1 : s0 + k * ds).ratio;
 
     // Refine every coarse local maximum that could still beat the best sample: between samples
     // the ratio rises at most ~slope * ds, with the slope estimated from the scan and doubled.
@@ -141,7 +141,7 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, doubl
         const bool down = k == steps || rho[i] >= rho[i + 1];
         if (!up || !down || rho[i] + reach < best_coarse) continue;
         ++out.candidates;
-        const double a = s0 + std::max(0, k - 1) * ds, b = s0 + std::min(steps, k + 1) * ds;
+        const double a = s0 + std::max(0, k - 1) * ds, b = std::min(s1, s0 + std::min(steps, k + 1) * ds);
         const auto [at, r] = golden_max(probe, a, b);
         if (r.ratio > out.ratio) {
             out.ratio = r.ratio;

@@ -76,7 +76,7 @@ RunClearance min_clearance(const Scenario& scenario, double t0, double t1, const
     out.scan_step = dt;
     std::vector<double> c(static_cast<size_t>(steps) + 1), rate(c.size());
     for (int k = 0; k <= steps; ++k) {
-        c[static_cast<size_t>(k)] = probe(t0 + k * dt).distance;
+        c[static_cast<size_t>(k)] = probe(k == steps ? t1 : t0 + k * dt).distance;  // t1 exactly: it may be a jam's
         rate[static_cast<size_t>(k)] = 2.0 * fastest_point(f);
         if (progress) progress(k + 1, steps + 1);
     }
@@ -98,7 +98,7 @@ RunClearance min_clearance(const Scenario& scenario, double t0, double t1, const
         // A plateau counts once, at its first sample.
         if ((k > 0 && c[i] >= left) || c[i] > right || c[i] >= kCutoff) continue;
         if (c[i] - 2.0 * std::max(left - c[i], right - c[i]) > best_coarse) continue;
-        double a = t0 + std::max(0, k - 1) * dt, b = t0 + std::min(steps, k + 1) * dt;
+        double a = t0 + std::max(0, k - 1) * dt, b = std::min(t1, t0 + std::min(steps, k + 1) * dt);
         double x1 = b - g * (b - a), x2 = a + g * (b - a);
         Clearance f1 = probe(x1), f2 = probe(x2);
         while (b - a > kTimeTolerance) {

@@ -116,11 +116,12 @@ TurnaroundStudy study_turnaround(const Scenario& s) {
         "from radius {:.4g} m), but then the head coils in and out further along the spirals: its whole "
         "way inside the turning space grows from {:.6f} m to {:.6f} m.",
         inner.s_curve_length, inner.entry_radius, st.by_entry.front().inside_length, inner.inside_length);
-    // The outermost entry radius (after the boundary) this dragon cannot follow, if any.
-    for (const TurnStudyRow& r : st.by_entry) {
-        if (!r.followable()) {
-            st.conclusion += fmt::format(" This dragon cannot even follow those from entry radius {:.4g} m inward.",
-                                         r.entry_radius);
+    // The outermost entry radius this dragon cannot follow, if any (the boundary's own row is
+    // the chosen design, said above).
+    for (size_t k = 1; k < st.by_entry.size(); ++k) {
+        if (!st.by_entry[k].followable()) {
+            st.conclusion += fmt::format(" Nor can this dragon follow those from entry radius {:.4g} m inward.",
+                                         st.by_entry[k].entry_radius);
             break;
         }
     }
