@@ -109,7 +109,9 @@ TEST(Extremes, SlowHead) {
     // No two benches come within the scan's cutoff: no pair is named.
     const CliRun turn = dragon("turnaround --speed 1e-6 --json");
     expect_works(turn, "turnaround --speed 1e-6");
-    EXPECT_TRUE(has(turn.out, "\"at_least\": true, \"time\": null, \"benches\": null")) << turn.out;
+    const auto clear = nlohmann::json::parse(turn.out).at("clearance");
+    EXPECT_TRUE(clear.at("at_least").get<bool>()) << turn.out;
+    EXPECT_TRUE(clear.at("time").is_null() && clear.at("benches").is_null()) << turn.out;
     works("video --speed 1e-6 --to 100 --size 64x48 --fps 5 --speedup 50 -o " + out_file("slow.mp4"));
     // The first contact, 4.1e8 s away: found as quickly as at 1 m/s (it once crept in 1 s steps),
     // at the same head travel, to the digits a time that large holds.
@@ -159,7 +161,7 @@ TEST(Extremes, TurningSpaceWiderThanTheStart) {
     refused("min-pitch --turn-radius 20 --lo 0.4 --hi 0.45", "inside the turning space");
     const CliRun turn = dragon("turnaround --turn-radius 20 --no-clearance --json");
     expect_works(turn, "turnaround --turn-radius 20");
-    EXPECT_TRUE(has(turn.out, "\"max_radius\": 20")) << turn.out.substr(0, 300);
+    EXPECT_EQ(nlohmann::json::parse(turn.out).at("max_radius").get<double>(), 20.0) << turn.out.substr(0, 300);
     works("simulate --path turnaround --turn-radius 20 --to -99");
 }
 
