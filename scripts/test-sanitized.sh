@@ -21,4 +21,17 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # turning space (19 s in Release, over 4 minutes under ASan: past the tests' 240 s timeout). The
 # same code runs sanitized in Q3.MinimumPitchMatchesPublished (about a minute) and the Q2 tests.
 ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -E '^Q3\.AFinerScanAgreesWithTheReportedIntervals$'
-echo "test-sanitized: build and tests took $((SECONDS - start)) s"
+echo "test-sanitized: ASan/UBSan build and tests took $((SECONDS - start)) s"
+
+# ThreadSanitizer (it cannot share a build with ASan) on the tests that run work in parallel:
+# the executor itself, the first-contact search cut into chunks, the tables, the minimum pitch,
+# the shared valid-range search, and the video pipeline's render threads.
+start=$SECONDS
+cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g1" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1" \
+  -DDRAGON_SANITIZE_THREAD=ON -DDRAGON_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build build-tsan -j"$(nproc)"
+export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/tests/sanitizers/tsan.supp
+ctest --test-dir build-tsan --output-on-failure -j"$(nproc)" \
+  -R '^(Executor\.|Q2\.(ThreadsDoNotChangeTheAnswer|TerminationTimeMatchesPublished)|Q3\.MinimumPitchMatchesPublished|ValidMotion\.|Q1\.|Animation|VideoWriter)'
+echo "test-sanitized: TSan build and tests took $((SECONDS - start)) s"

@@ -9,15 +9,18 @@
 
 #include "dragon/chain.hpp"
 #include "dragon/collision.hpp"
+#include "dragon/executor.hpp"
 #include "dragon/progress.hpp"
 
 namespace dragon {
 
-// Frames at t0, t0 + dt, ..., t1 (inclusive, by index so no float drift).
-std::vector<Frame> simulate_table(const Simulation& sim, double t0, double t1, double dt);
+// Frames at t0, t0 + dt, ..., t1 (inclusive, by index so no float drift), computed on the
+// executor's workers (null: default_executor()).
+std::vector<Frame> simulate_table(const Simulation& sim, double t0, double t1, double dt, Executor* executor = nullptr);
 // The same into `frames`, reusing its storage (a table of 301 frames is 7 MB: allocating and
 // first touching it costs more than computing it).
-void simulate_table_into(const Simulation& sim, double t0, double t1, double dt, std::vector<Frame>& frames);
+void simulate_table_into(const Simulation& sim, double t0, double t1, double dt, std::vector<Frame>& frames,
+                         Executor* executor = nullptr);
 
 // Q2: the first moment two non-adjacent benches touch, searched over [t_from, t_to].
 struct Contact {
@@ -31,14 +34,14 @@ struct Contact {
     // (at most that many metres of head travel), coarser only where t's own rounding is larger.
     double tolerance = 0.0;
 };
-// The search runs on all cores, each taking chunks of the time range, earliest first; the
-// answer does not depend on the number of threads beyond the tolerance.
+// The search runs on the executor's workers, each taking chunks of the time range; the answer
+// does not depend on the number of workers beyond the tolerance.
 using StepObserver = std::function<void(double from, double to)>;
 struct ContactSearchOptions {
     // If given, hears of every interval [from, to] the search has declared contact-free by its
-    // bounds (without looking inside), in order; the search then runs on one thread.
+    // bounds (without looking inside), in order; the search then runs on the calling thread.
     StepObserver on_step;
-    int threads = 0;  // 0: one per core
+    Executor* executor = nullptr;  // null: default_executor()
 };
 // Both ends must lie within the valid motion (Simulation::valid_range; throws InputError
 // otherwise): clamp `t_to` to valid_range().to to search as far as the dragon can go.
@@ -86,7 +89,11 @@ std::optional<Contact> contact_before_boundary(Scenario s, double pitch);
 inline constexpr double kDefaultPitchGrid = 2.5e-3;
 inline constexpr int kMaxPitchGridSteps = 100000;  // about 10 minutes of runs on 2 cores
 // `progress` hears of the first scan's runs, one per grid pitch (most of the time taken).
-MinPitch min_pitch(const Scenario& s, double lo, double hi, double grid = kDefaultPitchGrid,
-                   const WorkProgress& progress = {});
+struct MinPitchOptions {
+    double grid = kDefaultPitchGrid;
+    WorkProgress progress;         // hears of the first scan's runs, one call per run
+    Executor* executor = nullptr;  // runs the pitches in parallel; null: default_executor()
+};
+MinPitch min_pitch(const Scenario& s, double lo, double hi, const MinPitchOptions& options = {});
 
 }  // namespace dragon

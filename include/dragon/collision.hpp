@@ -33,11 +33,29 @@ struct Clearance {
 
 // Broad phase: every pair of non-adjacent benches whose rectangles might be within `margin` of
 // each other (never misses one); pairs of bench numbers, first < second.
+//
+// A BroadPhase is its working memory, for a caller that asks again and again (a search, one per
+// thread): the benches' order along x is kept between calls, so successive frames of a motion
+// start nearly sorted and an insertion sort finishes it in about n steps, and no array is
+// allocated once it has grown. The answer does not depend on what it held before.
+class BroadPhase {
+public:
+    // The pairs, valid until the next call on this BroadPhase.
+    const std::vector<std::pair<int, int>>& candidate_pairs(const Frame& f, double margin);
+
+private:
+    friend Clearance clearance(const Frame& f, double cutoff, BroadPhase& scratch);
+    std::vector<std::pair<double, int>> order_;
+    std::vector<double> lo_, hi_, x_, y_, rad_, gaps_;
+    std::vector<int> index_;
+    std::vector<std::pair<int, int>> pairs_;
+};
 std::vector<std::pair<int, int>> candidate_pairs(const Frame& f, double margin);
 
 // Clearance over all non-adjacent pairs, through the broad phase. Pairs farther apart than
 // `cutoff` may be reported as cutoff (only the minimum matters).
 Clearance clearance(const Frame& f, double cutoff = 1e300);
+Clearance clearance(const Frame& f, double cutoff, BroadPhase& scratch);
 
 // Reference: clearance by checking every pair (for tests and the broad phase's proof).
 Clearance clearance_all_pairs(const Frame& f);

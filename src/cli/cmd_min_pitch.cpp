@@ -37,8 +37,10 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
         const Scenario s = opt->scenario.resolve();
         const MinPitch m = [&] {
             ProgressLine progress("pitches", opt->quiet);  // erased before the answer is printed
-            return min_pitch(s, opt->lo, opt->hi, opt->grid,
-                             [&progress](std::int64_t done, std::int64_t total) { progress.update(done, total); });
+            dragon::MinPitchOptions options;
+            options.grid = opt->grid;
+            options.progress = [&progress](std::int64_t done, std::int64_t total) { progress.update(done, total); };
+            return min_pitch(s, opt->lo, opt->hi, options);
         }();
         if (opt->json) {
             Json intervals = Json::array();

@@ -25,17 +25,16 @@ void consider(Clearance& best, const Frame& f, int i, int j) {
 // circles within `margin`, so no such pair is skipped; the box's x-extent is the sweep band
 // (narrower than the circle's for a bench lying across x), the circles are the filter.
 // Adjacent benches (sharing a handle) are excluded.
-std::vector<std::pair<int, int>> candidate_pairs(const Frame& f, double margin) {
+const std::vector<std::pair<int, int>>& BroadPhase::candidate_pairs(const Frame& f, double margin) {
     const size_t n = f.benches.size();
     // Sorted by the left edge of the box; then the sweep reads plain arrays in order, which is
     // most of the broad phase's time.
     auto half_x = [](const Rect& r) { return r.half_length * std::abs(r.axis.x) + r.half_width * std::abs(r.axis.y); };
-    // Scratch arrays kept per thread: this runs hundreds of times per search.
-    thread_local std::vector<std::pair<double, int>> order;
-    thread_local std::vector<double> lo, hi, x, y, rad;
-    thread_local std::vector<int> index;
-    // The order of the last call on this thread is kept: successive frames of a search differ
-    // little, so it is nearly sorted already and insertion sort finishes it in about n steps.
+    // The order of the last call is kept: successive frames of a search differ little, so it is
+    // nearly sorted already and insertion sort finishes it in about n steps.
+    std::vector<std::pair<double, int>>& order = order_;
+    std::vector<double> &lo = lo_, &hi = hi_, &x = x_, &y = y_, &rad = rad_;
+    std::vector<int>& index = index_;
     if (order.size() != n) {
         order.resize(n);
         for (size_t i = 0; i < n; ++i) order[i].second = static_cast<int>(i);
@@ -62,7 +61,8 @@ std::vector<std::pair<int, int>> candidate_pairs(const Frame& f, double margin) 
     // Branch-free inner loop: every pair in the sweep band is written, and the write position
     // advances only for the ones that pass (which pass is unpredictable, so a branch there
     // mispredicts often; this is most of the clearance pass's time otherwise).
-    std::vector<std::pair<int, int>> out(64);
+    std::vector<std::pair<int, int>>& out = pairs_;
+    if (out.size() < 64) out.resize(64);
     size_t count = 0;
     for (size_t a = 0; a < n; ++a) {
         const double xa = x[a], ya = y[a], reach_a = rad[a] + margin, end = hi[a];
@@ -84,16 +84,27 @@ std::vector<std::pair<int, int>> candidate_pairs(const Frame& f, double margin) 
     return out;
 }
 
+std::vector<std::pair<int, int>> candidate_pairs(const Frame& f, double margin) {
+    BroadPhase scratch;
+    return scratch.candidate_pairs(f, margin);
+}
+
 Clearance clearance(const Frame& f, double cutoff) {
+    BroadPhase scratch;
+    return clearance(f, cutoff, scratch);
+}
+
+Clearance clearance(const Frame& f, double cutoff, BroadPhase& scratch) {
     Clearance best{std::numeric_limits<double>::infinity(), 0, 0, {}, {}};
     if (f.benches.size() < 3) return best;
     // Every pair closer than `margin` is a candidate, so a best candidate within the margin is
     // the true minimum; otherwise all pairs are farther apart than the margin.
     const double margin = std::min(cutoff, 1.0);
-    const auto pairs = candidate_pairs(f, margin);
+    const auto& pairs = scratch.candidate_pairs(f, margin);
     // Exact distances only where the cheap projected gap (a lower bound) could still win:
     // seed with the pair of smallest gap, then test the rest against it.
-    std::vector<double> gaps(pairs.size());
+    std::vector<double>& gaps = scratch.gaps_;
+    gaps.resize(pairs.size());
     size_t seed = 0;
     for (size_t k = 0; k < pairs.size(); ++k) {
         gaps[k] = sat_gap(f.benches[static_cast<size_t>(pairs[k].first - 1)],

@@ -6,7 +6,6 @@
 #include <exception>
 #include <limits>
 #include <mutex>
-#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
@@ -35,8 +34,9 @@ BoundaryRun run_to_boundary(Scenario s, double pitch) {
     const double t_end = (-spiral.length_to(theta_end) - sim.start_arc()) / s.head_speed;
     BoundaryRun run;
     run.jam = sim.jam_before(t_end);
-    // One thread: min_pitch already runs one pitch per core.
-    run.contact = first_contact(sim, 0.0, run.jam ? run.jam->time : t_end, {.on_step = {}, .threads = 1});
+    // On this thread: min_pitch runs its pitches in parallel already.
+    InlineExecutor here;
+    run.contact = first_contact(sim, 0.0, run.jam ? run.jam->time : t_end, {.on_step = {}, .executor = &here});
     if (run.contact) run.jam.reset();  // the collision comes first
     return run;
 }
@@ -54,50 +54,35 @@ struct Probe {
     std::optional<Jam> jam;
 };
 
-// Feasibility of several pitches at once, spread over the machine's cores: each pitch is an
+// Feasibility of several pitches at once, spread over the executor's workers: each pitch is an
 // independent run of the dragon to the boundary.
-std::vector<Probe> probe_at(const Scenario& s, const std::vector<double>& pitches,
+std::vector<Probe> probe_at(const Scenario& s, Executor& ex, const std::vector<double>& pitches,
                             const WorkProgress& progress = {}) {
     std::vector<Probe> out(pitches.size());
-    std::atomic<size_t> next{0};
-    std::exception_ptr failure;
-    std::mutex failure_lock;
-    std::int64_t done = 0;  // under failure_lock: the callback hears one thread at a time
-    auto work = [&] {
-        for (size_t k; (k = next++) < pitches.size();) {
-            try {
-                const BoundaryRun run = run_to_boundary(s, pitches[k]);
-                if (run.contact) out[k] = Probe{false, run.contact->time, run.contact->bench_a, run.contact->bench_b, {}};
-                else if (run.jam) out[k] = Probe{false, run.jam->time, 0, 0, run.jam};
-                else out[k] = Probe{true, 0.0, 0, 0, {}};
-                if (progress) {
-                    const std::lock_guard<std::mutex> hold(failure_lock);
-                    progress(++done, static_cast<std::int64_t>(pitches.size()));
-                }
-            } catch (...) {
-                const std::lock_guard<std::mutex> hold(failure_lock);
-                if (!failure) failure = std::current_exception();
-            }
+    std::mutex progress_lock;
+    std::int64_t done = 0;  // under progress_lock: the callback hears one worker at a time
+    ex.parallel_for(pitches.size(), [&](size_t k, int) {
+        const BoundaryRun run = run_to_boundary(s, pitches[k]);
+        if (run.contact) out[k] = Probe{false, run.contact->time, run.contact->bench_a, run.contact->bench_b, {}};
+        else if (run.jam) out[k] = Probe{false, run.jam->time, 0, 0, run.jam};
+        else out[k] = Probe{true, 0.0, 0, 0, {}};
+        if (progress) {
+            const std::lock_guard<std::mutex> hold(progress_lock);
+            progress(++done, static_cast<std::int64_t>(pitches.size()));
         }
-    };
-    const size_t workers = std::min<size_t>(pitches.size(), std::max(1u, std::thread::hardware_concurrency()));
-    std::vector<std::thread> pool;
-    for (size_t w = 1; w < workers; ++w) pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
+    });
     return out;
 }
 
 // Narrows [a, b] (feasible at exactly one end) to tol::pitch by k-section: each round tests as
-// many interior points as there are cores, keeping the sub-interval where feasibility changes.
-double k_section(const Scenario& s, double a, double b, bool feasible_at_a) {
-    const size_t points = std::max(1u, std::thread::hardware_concurrency());
+// many interior points as there are workers, keeping the sub-interval where feasibility changes.
+double k_section(const Scenario& s, Executor& ex, double a, double b, bool feasible_at_a) {
+    const size_t points = static_cast<size_t>(ex.workers());
     while (b - a > tol::pitch) {
         std::vector<double> probe;
         for (size_t k = 1; k <= points; ++k) probe.push_back(a + (b - a) * static_cast<double>(k) / static_cast<double>(points + 1));
         if (probe.front() <= a || probe.back() >= b) break;
-        const std::vector<Probe> ok = probe_at(s, probe);
+        const std::vector<Probe> ok = probe_at(s, ex, probe);
         double na = a, nb = b;
         for (size_t k = 0; k < probe.size(); ++k) {
             if (ok[k].feasible == feasible_at_a) {
@@ -155,7 +140,7 @@ double closest_approach(const Scenario& s, double pitch, int a, int b, double t0
 // plus and minus half the tolerance then decide: a confirmed cut is returned; a run still
 // colliding (another pair's window closes later) becomes the new infeasible end, with its pair.
 // Anything else, and after a few rounds, the k-section decides.
-double refine_cut(const Scenario& s, double a, double b, const Probe& at_a, const Probe& at_b) {
+double refine_cut(const Scenario& s, Executor& ex, double a, double b, const Probe& at_a, const Probe& at_b) {
     const bool feasible_at_a = at_a.feasible;
     Probe hit = feasible_at_a ? at_b : at_a;
     double p_in = feasible_at_a ? b : a, p_ok = feasible_at_a ? a : b;
@@ -184,20 +169,22 @@ double refine_cut(const Scenario& s, double a, double b, const Probe& at_a, cons
         const double mid = 0.5 * (lo + hi);
         const double ok_side = mid + dir * 0.5 * tol::pitch, in_side = mid - dir * 0.5 * tol::pitch;
         if ((ok_side - p_in) * dir <= 0.0 || (p_ok - ok_side) * dir <= 0.0) break;
-        const std::vector<Probe> check = probe_at(s, {ok_side, in_side});
+        const std::vector<Probe> check = probe_at(s, ex, {ok_side, in_side});
         if (check[0].feasible && !check[1].feasible) return ok_side;
         if (check[0].feasible) break;  // feasible on both sides of this pair's cut: not the one
         p_in = ok_side;                 // still infeasible here: another window closes later
         hit = check[0];
     }
-    return k_section(s, feasible_at_a ? a : p_in, feasible_at_a ? p_in : b, feasible_at_a);
+    return k_section(s, ex, feasible_at_a ? a : p_in, feasible_at_a ? p_in : b, feasible_at_a);
 }
 
 }  // namespace
 
 // For the contest's dragon, a 1 mm scan of 0.35..0.55 m (tests) and a 0.1 mm one (README) find
 // no window the default grid misses.
-MinPitch min_pitch(const Scenario& s, double lo, double hi, double grid, const WorkProgress& progress) {
+MinPitch min_pitch(const Scenario& s, double lo, double hi, const MinPitchOptions& options) {
+    const double grid = options.grid;
+    Executor& ex = executor_or_default(options.executor);
     // What every run reads but the pitch, which the search sets.
     validate(s, value::bench | value::head_speed | value::start_turn | value::turn_radius);
     constexpr double kMaxPitch = 1e3;  // m, the largest pitch validate() allows
@@ -221,11 +208,11 @@ MinPitch min_pitch(const Scenario& s, double lo, double hi, double grid, const W
     const int n = std::max(2, static_cast<int>(steps));
     std::vector<double> pitches(static_cast<size_t>(n + 1));
     for (int k = 0; k <= n; ++k) pitches[static_cast<size_t>(k)] = k == n ? hi : lo + (hi - lo) * k / n;
-    const std::vector<Probe> ok = probe_at(s, pitches, progress);
+    const std::vector<Probe> ok = probe_at(s, ex, pitches, options.progress);
     std::vector<double> cuts;
     for (size_t k = 0; k + 1 < pitches.size(); ++k)
         if (ok[k].feasible != ok[k + 1].feasible)
-            cuts.push_back(refine_cut(s, pitches[k], pitches[k + 1], ok[k], ok[k + 1]));
+            cuts.push_back(refine_cut(s, ex, pitches[k], pitches[k + 1], ok[k], ok[k + 1]));
     double start = lo;
     bool state = ok.front().feasible;
     for (double c : cuts) {

@@ -1,18 +1,17 @@
 // Tables of frames at evenly spaced times (the Q1 and Q4 tables).
 #include <algorithm>
 #include <cmath>
-#include <exception>
-#include <mutex>
-#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "dragon/analyses.hpp"
+#include "dragon/executor.hpp"
 
 namespace dragon {
 
-void simulate_table_into(const Simulation& sim, double t0, double t1, double dt, std::vector<Frame>& frames) {
+void simulate_table_into(const Simulation& sim, double t0, double t1, double dt, std::vector<Frame>& frames,
+                         Executor* executor) {
     if (!std::isfinite(dt) || dt <= 0.0)
         throw InputError(fmt::format("--step {} is not allowed: it must be a finite number > 0", dt));
     sim.require_valid(t0, "--from");
@@ -30,33 +29,20 @@ void simulate_table_into(const Simulation& sim, double t0, double t1, double dt,
                                      "use a larger step or a shorter range", dt, count,
                                      sim.scenario().bench.handle_count()));
     frames.resize(static_cast<size_t>(count));
-    // Frames are independent: each core takes every n-th one (interleaved, so early and late
-    // frames, which cost about the same, spread evenly). Small tables stay on this thread.
-    const size_t workers = frames.size() < 64 ? 1 : std::max(1u, std::thread::hardware_concurrency());
-    std::exception_ptr failure;
-    std::mutex failure_lock;
-    auto work = [&](size_t first) {
-        try {
-            for (size_t k = first; k < frames.size(); k += workers) {
-                double t = t0 + static_cast<double>(k) * dt;
-                if (t > t1 || (k + 1 == frames.size() && span - static_cast<double>(k) <= slack)) t = t1;
-                sim.frame_into(t, frames[k]);
-            }
-        } catch (...) {
-            const std::lock_guard<std::mutex> hold(failure_lock);
-            if (!failure) failure = std::current_exception();
-        }
-    };
-    std::vector<std::thread> pool;
-    for (size_t w = 1; w < workers; ++w) pool.emplace_back(work, w);
-    work(0);
-    for (std::thread& th : pool) th.join();
-    if (failure) std::rethrow_exception(failure);
+    // Frames are independent: the executor's workers take them one at a time. Small tables
+    // stay on this thread (starting the workers would cost more than the frames).
+    InlineExecutor here;
+    Executor& ex = frames.size() < 64 ? here : executor_or_default(executor);
+    ex.parallel_for(frames.size(), [&](size_t k, int) {
+        double t = t0 + static_cast<double>(k) * dt;
+        if (t > t1 || (k + 1 == frames.size() && span - static_cast<double>(k) <= slack)) t = t1;
+        sim.frame_into(t, frames[k]);
+    });
 }
 
-std::vector<Frame> simulate_table(const Simulation& sim, double t0, double t1, double dt) {
+std::vector<Frame> simulate_table(const Simulation& sim, double t0, double t1, double dt, Executor* executor) {
     std::vector<Frame> frames;
-    simulate_table_into(sim, t0, t1, dt, frames);
+    simulate_table_into(sim, t0, t1, dt, frames, executor);
     return frames;
 }
 

@@ -20,8 +20,9 @@ inline std::uint8_t luma(std::uint32_t p) {
 }  // namespace
 
 // On x86-64 built twice, for AVX2 (twice the lanes, ~1.7x faster here) and for any CPU; the
-// loader picks the one this CPU runs.
-#if defined(__x86_64__) && defined(__GNUC__)
+// loader picks the one this CPU runs. Not under ThreadSanitizer: the loader runs the picker (an
+// ifunc resolver) before TSan's runtime is up, and the program crashes on start.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__SANITIZE_THREAD__)
 #define DRAGON_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define DRAGON_VECTOR_CLONES

@@ -136,18 +136,21 @@ TEST(Q2, ThreadsDoNotChangeTheAnswer) {
     scenarios[2].path.pitch = 0.5;
     scenarios[2].head_speed = 2.0;
     scenarios[3].path.pitch = 0.9;
+    InlineExecutor inline_executor;
+    ThreadPool two(2), three(3);
     for (const Scenario& s : scenarios) {
         const Simulation sim(s);
-        const auto one = first_contact(sim, 0.0, sim.valid_end(), {.on_step = {}, .threads = 1});
-        for (int threads : {2, 3}) {
-            const auto many = first_contact(sim, 0.0, sim.valid_end(), {.on_step = {}, .threads = threads});
+        const auto one = first_contact(sim, 0.0, sim.valid_end(), {.on_step = {}, .executor = &inline_executor});
+        for (ThreadPool* pool : {&two, &three}) {
+            const int threads = pool->workers();
+            const auto many = first_contact(sim, 0.0, sim.valid_end(), {.on_step = {}, .executor = pool});
             ASSERT_EQ(one.has_value(), many.has_value()) << "pitch " << s.path.pitch << ", " << threads << " threads";
             if (!one) continue;
             EXPECT_EQ(one->bench_a, many->bench_a);
             EXPECT_EQ(one->bench_b, many->bench_b);
             EXPECT_NEAR(one->time, many->time, one->tolerance + many->tolerance) << "pitch " << s.path.pitch;
             // Deterministic for a given thread count.
-            const auto again = first_contact(sim, 0.0, sim.valid_end(), {.on_step = {}, .threads = threads});
+            const auto again = first_contact(sim, 0.0, sim.valid_end(), {.on_step = {}, .executor = pool});
             EXPECT_EQ(again->time, many->time);
             EXPECT_EQ(again->steps, many->steps);
         }
@@ -229,8 +232,9 @@ TEST(Q2, AProbeBracketNeverPassesOverAnotherPairsContact) {
     s.path.pitch = 0.5;
     s.head_speed = 2.0;
     const Simulation sim(s);
-    const auto whole = first_contact(sim, 0.0, 190.0, {.on_step = {}, .threads = 1});
-    const auto late = first_contact(sim, 159.06, 171.29, {.on_step = {}, .threads = 1});
+    InlineExecutor one_thread;
+    const auto whole = first_contact(sim, 0.0, 190.0, {.on_step = {}, .executor = &one_thread});
+    const auto late = first_contact(sim, 159.06, 171.29, {.on_step = {}, .executor = &one_thread});
     ASSERT_TRUE(whole && late);
     EXPECT_EQ(late->bench_a, 1);
     EXPECT_EQ(late->bench_b, 15);

@@ -1,0 +1,26 @@
+// Bounds on how fast benches far apart can close in, for the first-contact search's steps.
+#pragma once
+
+#include <vector>
+
+#include "core/motion.hpp"
+#include "dragon/chain.hpp"
+
+namespace dragon::contact {
+
+// Slack on the closing-speed bounds over one step: steps assume the true rate stays below
+// kSafety times the one measured now, which the next evaluation checks.
+inline constexpr double kSafety = 2.0;
+
+// The benches' distances from the origin and how fast they change (motion.hpp), for every bench.
+void radial_extents(const Frame& f, const std::vector<BenchMotion>& motion, std::vector<Radial>& out);
+// A lower bound on the distance between two benches, or two groups, from their radii alone
+// (not positive when their radii overlap), and the time that distance lasts at least.
+double radial_gap(const Radial& a, const Radial& b);
+double radial_step(const Radial& a, const Radial& b);
+
+// The time no pair of benches farther apart than `margin` can touch in (see contact_bounds.cpp).
+double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, const std::vector<double>& half_diagonals,
+                      const std::vector<Radial>& radial, double margin);
+
+}  // namespace dragon::contact

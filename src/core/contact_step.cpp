@@ -1,0 +1,152 @@
+#include "core/contact_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/contact_bounds.hpp"
+#include "core/corner_gaps.hpp"
+#include "core/sat.hpp"
+
+namespace dragon::contact {
+
+// One pass over the broad phase's pairs gives the clearance and the safe step.
+//
+// Each pair first gets the first-order step g / (kSafety L) from its projected gap g and the
+// bound L on its closing speed. Pairs whose first-order step could decide the step are then
+// looked at closer: their eight corner gaps, each with its exact rate, are bounded to second
+// order, d(t + h) >= d + rate h - M h^2 / 2, with M kSafety times the larger of the rate
+// changes seen since the last evaluation and a rotational floor. A pair's step is the better
+// of the two bounds. This is what makes grazing passes cheap: a corner gliding past at a
+// tiny distance with zero rate still allows sqrt(2 d / M), where the first-order bound would
+// crawl. The curvature each step relied on is checked at the next evaluation; if the rates
+// changed faster, the caller retreats and retries shorter.
+// `memory` is what the last accepted evaluation saw; this one's goes to `next` (cleared first),
+// for the caller to keep if it accepts the step.
+Approach approach(const Frame& f, double t, double max_step, const Memory& memory, Memory& next, bool check,
+                  Workspace& ws) {
+    Approach a{{INFINITY, 0, 0, {}, {}}, INFINITY, 0.0, false, INFINITY};
+    if (f.benches.size() < 3) return a;
+    const std::vector<BenchMotion> motion = bench_motions(f);
+    // The search's own scratch (a search evaluates hundreds of frames).
+    std::vector<double>& gaps = ws.gaps;
+    std::vector<double>& half_diagonals = ws.half_diagonals;
+    std::vector<Radial>& radial = ws.radial;
+    half_diagonals.resize(f.benches.size());
+    for (size_t k = 0; k < f.benches.size(); ++k) half_diagonals[k] = half_diagonal(f.benches[k]);
+    radial_extents(f, motion, radial);
+    // Pairs beyond the margin: bounded group by group (far_pairs_step).
+    const double cap = std::min(max_step, far_pairs_step(f, motion, half_diagonals, radial, kMargin));
+    const auto& pairs = ws.broad.candidate_pairs(f, kMargin);
+    using Candidate = Workspace::Candidate;
+    std::vector<Candidate>& tight = ws.tight;
+    tight.clear();
+    gaps.resize(pairs.size());
+    double best_gap = INFINITY;
+    size_t seed = 0;
+    for (size_t k = 0; k < pairs.size(); ++k) {
+        const size_t i = static_cast<size_t>(pairs[k].first - 1), j = static_cast<size_t>(pairs[k].second - 1);
+        // Benches on neighbouring turns slide past each other: when their radii alone keep them
+        // apart for the whole step and farther than a probe would look, they cannot set the step,
+        // touch, or be probed, and need no closer look (most pairs, away from the centre).
+        const double radial_first_order = radial_step(radial[i], radial[j]);
+        if (radial_first_order >= cap && radial_gap(radial[i], radial[j]) >= kProbeGap) {
+            gaps[k] = INFINITY;
+            continue;
+        }
+        const Rect& ra = f.benches[i];
+        const double g = sat_gap(ra, f.benches[j]).gap;  // a lower bound on the distance
+        gaps[k] = g;
+        if (g < best_gap) { best_gap = g; seed = k; }
+        // Relative velocity field of b seen from a: affine, so within a's rectangle its norm is
+        // at most its value at a's centre plus the turn-rate difference times the half-diagonal.
+        const BenchMotion& ma = motion[i];
+        const BenchMotion& mb = motion[j];
+        const double gap = std::max(g, 0.0);
+        const double bound = norm(mb.at(ma.centre) - ma.v_centre) + std::abs(mb.omega - ma.omega) * half_diagonals[i] +
+                             std::abs(mb.omega) * gap;
+        // First-order step gap / (kSafety bound), divided out only for the pairs that could set it.
+        if (gap < cap * kSafety * bound) {
+            const double first_order = std::max(gap / (kSafety * bound), radial_first_order);
+            if (first_order < cap) tight.push_back({first_order, bound, k});
+        }
+    }
+    // Smallest first-order step first, popped from a heap: usually only a part of the list is
+    // looked at before the first-order steps exceed the step found so far.
+    const auto later = [](const Candidate& x, const Candidate& y) { return x.first_order > y.first_order; };
+    std::make_heap(tight.begin(), tight.end(), later);
+    next.clear();
+    double step = cap;
+    // Each pair looked at and the step it allows; every other allows at least `skipped`.
+    std::vector<std::pair<std::uint64_t, double>>& pair_steps = ws.pair_steps;
+    pair_steps.clear();
+    double skipped = cap;
+    while (!tight.empty()) {
+        std::pop_heap(tight.begin(), tight.end(), later);
+        const Candidate c = tight.back();
+        tight.pop_back();
+        if (c.first_order >= step) {  // this pair and the rest cannot lower the step
+            skipped = std::min(skipped, c.first_order);
+            break;
+        }
+        const int ia = pairs[c.k].first - 1, ib = pairs[c.k].second - 1;
+        const BenchMotion& ma = motion[static_cast<size_t>(ia)];
+        const BenchMotion& mb = motion[static_cast<size_t>(ib)];
+        const auto gaps8 = corner_gaps(f.benches[static_cast<size_t>(ia)], ma, f.benches[static_cast<size_t>(ib)], mb);
+        // Rotational floor: the corner-to-edge direction turns at most at |omega_a| + |omega_b|,
+        // tilting a relative velocity of size <= bound.
+        double observed = (std::abs(ma.omega) + std::abs(mb.omega)) * c.bound;
+        const std::uint64_t key = key_of(ia, ib);
+        PairMemory mem{t, {}, 0.0};
+        if (const PairMemory* last = memory.find(key); last && last->time != t) {
+            const double dt = std::abs(t - last->time);
+            for (size_t q = 0; q < 8; ++q) {
+                const double change = std::abs(gaps8[q].rate - last->rates[q]);
+                observed = std::max(observed, change / dt);
+                // The last step assumed the rates change by at most curvature * dt.
+                if (check && change > last->curvature * dt * (1.0 + 1e-9) + 1e-12) a.bound_broken = true;
+            }
+        }
+        mem.curvature = kSafety * observed;
+        double h2 = INFINITY;
+        for (size_t q = 0; q < 8; ++q) {
+            mem.rates[q] = gaps8[q].rate;
+            h2 = std::min(h2, second_order_step(gaps8[q].distance, gaps8[q].rate, mem.curvature));
+        }
+        next.emplace(key, mem);
+        const double pair_step = std::max(c.first_order, h2);
+        pair_steps.push_back({key, pair_step});
+        step = std::min(step, pair_step);
+    }
+    a.safe_step = step;
+    if (pairs.empty()) {
+        a.clear = clearance(f, kMargin, ws.broad);
+        a.others_step = step;
+        return a;
+    }
+    // Exact distances only where the projected gap (a lower bound) could still win.
+    auto exact = [&](size_t k) {
+        const Separation s = separation(f.benches[static_cast<size_t>(pairs[k].first - 1)],
+                                        f.benches[static_cast<size_t>(pairs[k].second - 1)]);
+        if (s.distance < a.clear.distance) a.clear = {s.distance, pairs[k].first, pairs[k].second, s.axis, s.point};
+    };
+    if (gaps[seed] < INFINITY) exact(seed);
+    for (size_t k = 0; k < pairs.size(); ++k)
+        if (k != seed && gaps[k] < a.clear.distance) exact(k);
+    const std::uint64_t closest = a.clear.bench_a > 0 ? key_of(std::min(a.clear.bench_a, a.clear.bench_b) - 1,
+                                                                std::max(a.clear.bench_a, a.clear.bench_b) - 1)
+                                                       : ~std::uint64_t{0};
+    a.others_step = skipped;
+    for (const auto& [key, pair_step] : pair_steps)
+        if (key != closest) a.others_step = std::min(a.others_step, pair_step);
+    if (a.clear.bench_a > 0 && a.clear.distance > 0.0) {
+        // Separation rate of the closest pair: the witness on b moving away from a along the axis.
+        const BenchMotion& ma = motion[static_cast<size_t>(a.clear.bench_a - 1)];
+        const BenchMotion& mb = motion[static_cast<size_t>(a.clear.bench_b - 1)];
+        const Vec2 q = a.clear.point;
+        const Vec2 p = q - a.clear.distance * a.clear.axis;
+        a.rate = dot(a.clear.axis, mb.at(q) - ma.at(p));
+    }
+    return a;
+}
+
+}  // namespace dragon::contact
