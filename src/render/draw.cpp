@@ -338,30 +338,33 @@ void draw_colour_bar(cairo_t* cr, const Scene& s, double u, double w, double h) 
     render::text(cr, s.theme.font, 12 * u, x + 0.5 * bar_w, y0 - 18 * u, "speed (m/s)", 0.5);
 }
 
-void draw_annotation(cairo_t* cr, const Scene& s, double u) {
+void draw_annotation(cairo_t* cr, const Scene& s, double u, double w) {
     if (!s.show_text || s.annotation.empty()) return;
-    // One line per '\n'; the first is the headline, the rest a little smaller.
-    std::vector<std::string> lines;
+    // One line per '\n'; the first is the headline, the rest a little smaller. Each is fitted
+    // to the picture's width: wrapped or set smaller rather than run off its edge.
+    const double room = w - 32 * u, gap = 6 * u;
+    std::vector<render::FittedText> blocks;
     for (std::size_t at = 0;;) {
         const std::size_t nl = s.annotation.find('\n', at);
-        lines.push_back(s.annotation.substr(at, nl == std::string::npos ? std::string::npos : nl - at));
+        const std::string line = s.annotation.substr(at, nl == std::string::npos ? std::string::npos : nl - at);
+        blocks.push_back(render::fit_text(cr, s.theme.font, (blocks.empty() ? 15 : 13) * u, line, room));
         if (nl == std::string::npos) break;
         at = nl + 1;
     }
-    const double size = 15 * u, small = 13 * u, gap = 6 * u;
-    double tw = 0, th = size;
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-        tw = std::max(tw, render::text_width(cr, s.theme.font, i ? small : size, lines[i]));
-        if (i) th += gap + small;
-    }
+    double tw = 0, th = -gap;
+    for (const auto& b : blocks)
+        for (const auto& line : b.lines) {
+            tw = std::max(tw, render::text_width(cr, s.theme.font, b.size, line));
+            th += b.size + gap;
+        }
     backdrop(cr, s, 8 * u, 8 * u, tw + 16 * u, th + 14 * u);
     set_colour(cr, s.theme.text);
     double y = 15 * u;
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-        const double sz = i ? small : size;
-        render::text(cr, s.theme.font, sz, 16 * u, y + 0.5 * sz, lines[i], 0.0, 0.5);
-        y += sz + gap;
-    }
+    for (const auto& b : blocks)
+        for (const auto& line : b.lines) {
+            render::text(cr, s.theme.font, b.size, 16 * u, y + 0.5 * b.size, line, 0.0, 0.5);
+            y += b.size + gap;
+        }
 }
 
 }  // namespace
@@ -398,7 +401,7 @@ void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
     cairo_restore(cr);
     draw_scale_bar(cr, s, v, u, h);
     draw_colour_bar(cr, s, u, w, h);
-    draw_annotation(cr, s, u);
+    draw_annotation(cr, s, u, w);
     cairo_restore(cr);
 }
 
