@@ -3,6 +3,7 @@
 // frames differ only in the surface.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -122,7 +123,8 @@ struct Label {
     double dx_px = 4.0, dy_px = -4.0;
 };
 
-// A display list: everything draw() needs, already resolved (no solver calls while drawing).
+// A display list: everything draw() needs, already resolved (no solver calls while drawing;
+// only the guides' path is evaluated, over the part of it in the picture).
 struct Scene {
     enum class Style { head, body, tail, highlight, collision };
     struct Bench {
@@ -130,10 +132,11 @@ struct Scene {
         Style style;
         double speed;  // mean of its two handles, m/s
     };
+    // A stretch of the path, drawn as a thin line. draw() flattens it into Bezier curves only
+    // where the picture shows it, so a close-up of a long path costs what it shows.
     struct Guide {
-        // Cubic Bezier segments (world): start, control 1, control 2, end; consecutive segments
-        // share their ends.
-        std::vector<Vec2> beziers;  // 1 + 3k points
+        std::shared_ptr<const Path> path;
+        double s0 = 0.0, s1 = 0.0;  // arc range on one piece of the path
         Rgba colour;
         double width_px = 1.0;
         bool dashed = false;

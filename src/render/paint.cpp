@@ -143,4 +143,13 @@ std::string format_tick(double v, int decimals) {
     return s;
 }
 
+std::string scale_label(double metres) {
+    if (metres >= 1e4) return fmt::format("{:g} km", metres / 1e3);
+    if (metres >= 1) return format_tick(metres, 0) + " m";
+    if (metres >= 1e-2) return format_tick(metres, 2) + " m";
+    if (metres >= 1e-3) return fmt::format("{:g} mm", metres * 1e3);
+    if (metres >= 1e-6) return fmt::format("{:g} \u00b5m", metres * 1e6);
+    return fmt::format("{:g} nm", metres * 1e9);
+}
+
 }  // namespace dragon::render

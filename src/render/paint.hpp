@@ -46,5 +46,8 @@ Ticks nice_ticks(double lo, double hi, int target = 5);
 // The largest 1, 2 or 5 times a power of ten not above x (> 0).
 double nice_floor(double x);
 std::string format_tick(double v, int decimals);
+// A scale bar's length (1, 2 or 5 times a power of ten, m) in the unit that reads best:
+// "0.50 m", "2 m", "5 mm", "200 µm", "20 km".
+std::string scale_label(double metres);
 
 }  // namespace dragon::render
