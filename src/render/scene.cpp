@@ -49,7 +49,12 @@ void place_camera(Scene& scene, const Frame& frame, const Camera& cam) {
         scene.view_centre = frame.handles.empty() ? Vec2{} : frame.handles.front().pos;
         break;
     }
-    if (!(cam.extent > 0)) throw InputError(fmt::format("camera extent {} m must be positive", cam.extent));
+    if (!(cam.extent >= kMinViewExtent && cam.extent <= kMaxViewExtent))
+        throw InputError(fmt::format("camera extent {} m is not allowed: use {:g}..{:g} m", cam.extent, kMinViewExtent,
+                                     kMaxViewExtent));
+    if (!(std::max(std::abs(scene.view_centre.x), std::abs(scene.view_centre.y)) <= kMaxViewCentre))
+        throw InputError(fmt::format("camera centre ({}, {}) is not allowed: each coordinate must be finite and "
+                                     "within {:g} m", scene.view_centre.x, scene.view_centre.y, kMaxViewCentre));
     scene.view_width = scene.view_height = cam.extent;
 }
 
