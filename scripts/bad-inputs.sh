@@ -82,6 +82,9 @@ row video -o a.mp4 --size big --to 1
 row video -o a.mp4 --size 64x48 --fps 5 --from 0 --to 1 --preset glacial
 row video -o a.gif --size 64x48 --fps 5 --from 0 --to 1 --colours 1
 row video -o a.mp4 --size 64x48 --fps 5 --from 0 --to 1 --speedup -1
+row video -o a.mp4 --size 64x48 --fps 5 --from 0 --to 1 --hold 3601
+row video -o a.mp4 --size 64x48 --fps 5 --from 0 --to 1 --zoom nan
+row video -o a.mp4 --size 1280x720 --fps 5 --to 1 --follow-head --zoom 1e-9
 
 header "dragon render and figures (tests/render/test_cli_render.cpp)"
 row render --time 100 -o bad.bmp
@@ -90,6 +93,13 @@ row render --time 100 --size 10x10 -o x.png
 row render --time 100 --theme sepia -o x.png
 row render --time 1e6 -o x.png
 row render --time 100 -o /no/such/dir/x.png
+row render --time 0 --zoom nan -o x.png
+row render --time 0 --zoom 1e-300 -o x.png
+row render --time 0 --zoom 1e300 -o x.png
+row render --time 0 --centre nan 0 --zoom 1 -o x.png
+row render --time 0 --centre 1e300 0 --zoom 1 -o x.png
+row render --time 0 --zoom 1e-9 -o x.png
+row render --collision --zoom 1e-9 -o x.png
 row figures --only no_such_figure -o figs
 
 header "Out of range (tests/cli/test_cli_extremes.cpp)"

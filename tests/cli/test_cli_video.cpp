@@ -91,7 +91,13 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCase{"bad_size", "--size big --to 1", "a.mp4", "--size"},
                       BadCase{"bad_preset", ok + " --preset glacial", "a.mp4", "--preset"},
                       BadCase{"bad_colours", ok + " --colours 1", "a.gif", "--colours"},
-                      BadCase{"bad_speedup", ok + " --speedup -1", "a.mp4", "--speedup"}),
+                      BadCase{"bad_speedup", ok + " --speedup -1", "a.mp4", "--speedup"},
+                      BadCase{"hold_over_an_hour", ok + " --hold 3601", "a.mp4", "--hold 3601"},
+                      BadCase{"zoom_nan", ok + " --zoom nan", "a.mp4", "--zoom nan"},
+                      BadCase{"zoom_huge", ok + " --zoom 1e300", "a.mp4", "--zoom 1e+300"},
+                      // 8.8 m out, doubles cannot resolve pixels of 1e-9 / 720 m.
+                      BadCase{"zoom_too_fine", "--size 1280x720 --fps 5 --to 1 --follow-head --zoom 1e-9", "a.mp4",
+                              "--zoom 1e-09"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(CliVideo, WritesTheFilmAndSaysSo) {
