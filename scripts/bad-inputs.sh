@@ -138,6 +138,9 @@ row video -o a.webm --size 64x48 --fps 5 --from 0 --to 1 --preset fast
 row video -o a.mp4 --size 64x48 --fps 5 --from 0 --to 1 --colours 64
 row video -o a.mp4 --size 64x48 --fps 1e-9 --to 1
 row video -o a.mp4 --size 64x48 --speedup 1e-300 --to 1
+row video -o a.mp4 --size 64x48 --fps 5 --from 0 --to 1 --hold 3601
+row video -o a.mp4 --size 64x48 --fps 5 --from 0 --to 1 --zoom nan
+row video -o a.mp4 --size 1280x720 --fps 5 --to 1 --follow-head --zoom 1e-9
 
 header "dragon render and figures (tests/render/test_cli_render.cpp)"
 row render --time 100 -o bad.bmp
@@ -146,6 +149,13 @@ row render --time 100 --size 10x10 -o x.png
 row render --time 100 --theme sepia -o x.png
 row render --time 1e6 -o x.png
 row render --time 100 -o /no/such/dir/x.png
+row render --time 0 --zoom nan -o x.png
+row render --time 0 --zoom 1e-300 -o x.png
+row render --time 0 --zoom 1e300 -o x.png
+row render --time 0 --centre nan 0 --zoom 1 -o x.png
+row render --time 0 --centre 1e300 0 --zoom 1 -o x.png
+row render --time 0 --zoom 1e-9 -o x.png
+row render --collision --zoom 1e-9 -o x.png
 row figures --only no_such_figure -o figs
 row render --time 1 --theme /tmp -o x.png
 

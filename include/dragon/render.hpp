@@ -3,6 +3,7 @@
 // frames differ only in the surface.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -71,6 +72,23 @@ struct Camera {
     static Camera follow(double extent_m) { return {Mode::follow_head, {}, extent_m}; }
 };
 
+// The views a picture can mean. Narrower than kMinViewExtent, or with pixels finer than
+// kMinPixelOverRadius of the view's distance from the origin (about 4,500 units in the last
+// place of a coordinate there), a picture would show rounding, not the dragon; wider than
+// kMaxViewExtent or centred further out than kMaxViewCentre, it would show none of any path
+// (every handle stays within kMaxReach = 1e7 m of the centre).
+inline constexpr double kMinViewExtent = 1e-9;        // m
+inline constexpr double kMaxViewExtent = 1e8;         // m
+inline constexpr double kMaxViewCentre = 1e8;         // m, each coordinate
+inline constexpr double kMinPixelOverRadius = 1e-12;  // pixel size over the view's distance from the origin
+
+enum class ViewError { none, not_finite, too_narrow, too_wide, too_far, too_fine };
+// What is wrong with a view of view_width x view_height metres about `centre`, drawn on
+// width_px x height_px pixels (the view fits inside, aspect ratio kept).
+ViewError check_view(Vec2 centre, double view_width, double view_height, int width_px, int height_px);
+// The narrowest square view about `centre` that check_view takes at this size, m.
+double narrowest_view(Vec2 centre, int width_px, int height_px);
+
 // Two benches that touch and where (from first_contact / clearance).
 struct CollisionMark {
     int bench_a = 0;  // 1..N
@@ -122,7 +140,8 @@ struct Label {
     double dx_px = 4.0, dy_px = -4.0;
 };
 
-// A display list: everything draw() needs, already resolved (no solver calls while drawing).
+// A display list: everything draw() needs, already resolved (no solver calls while drawing;
+// only the guides' path is evaluated, over the part of it in the picture).
 struct Scene {
     enum class Style { head, body, tail, highlight, collision };
     struct Bench {
@@ -130,10 +149,11 @@ struct Scene {
         Style style;
         double speed;  // mean of its two handles, m/s
     };
+    // A stretch of the path, drawn as a thin line. draw() flattens it into Bezier curves only
+    // where the picture shows it, so a close-up of a long path costs what it shows.
     struct Guide {
-        // Cubic Bezier segments (world): start, control 1, control 2, end; consecutive segments
-        // share their ends.
-        std::vector<Vec2> beziers;  // 1 + 3k points
+        std::shared_ptr<const Path> path;
+        double s0 = 0.0, s1 = 0.0;  // arc range on one piece of the path
         Rgba colour;
         double width_px = 1.0;
         bool dashed = false;
@@ -161,14 +181,20 @@ struct Scene {
     std::vector<Label> labels;
 };
 
+// Throws InputError for a fixed or followed camera whose extent is outside kMinViewExtent ..
+// kMaxViewExtent or whose centre is not finite or beyond kMaxViewCentre.
 Scene make_scene(const Simulation& sim, const Frame& frame, const SceneOptions& opt);
 
 // Paints the scene over the whole width_px x height_px area of `cr` (its current transform is
 // taken as device pixels), starting with an opaque background. Leaves cr's state unchanged.
 void draw(cairo_t* cr, const Scene& scene, int width_px, int height_px);
 
-// Whole files, written all-or-nothing (AtomicFile). Throw InputError for a bad size or path,
-// std::runtime_error if Cairo fails.
+// Throws InputError, naming the view and what is allowed, unless check_view takes the scene's
+// view at this size.
+void require_drawable(const Scene& scene, int width_px, int height_px);
+
+// Whole files, written all-or-nothing (AtomicFile). Throw InputError for a bad size or path or
+// a view require_drawable refuses, std::runtime_error if Cairo fails.
 void render_png(const Scene& scene, int width_px, int height_px, const std::string& path);
 void render_svg(const Scene& scene, int width_px, int height_px, const std::string& path);
 

@@ -108,4 +108,8 @@ Scenario load_scenario(const std::string& path, Scenario base = {});
 
 const char* to_string(PathKind k);
 
+// Is this the contest's own dragon, path and speed (the built-in defaults; the path kind aside)?
+// Only then do remarks about the contest's paper apply to a scenario's answers.
+bool is_contest_default(const Scenario& s);
+
 }  // namespace dragon

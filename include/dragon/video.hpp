@@ -71,6 +71,8 @@ public:
     void write(const std::uint8_t* argb32, int stride);
     // The same from a Cairo image surface (flushed here).
     void write(cairo_surface_t* surface);
+    // The last frame written, once more (a held picture): no conversion, straight to the encoder.
+    void repeat();
 
     // Drains the encoder, writes the trailer and renames the file into place.
     void finish();
@@ -108,11 +110,13 @@ struct EncodeStats {
 
 // Renders `frame_count` frames with `paint` on render threads (one per core) and encodes them
 // in order on this one, through a ring of 2 reusable surfaces per render thread, so drawing
-// and encoding overlap and every core works. GIF palettes are sampled from the first, middle
-// and last frames first. An error on any thread stops them all and is rethrown here; the
-// target is written only if every frame made it.
+// and encoding overlap and every core works. Only frames 0 .. painted - 1 are painted (all of
+// them when `painted` is 0): the rest repeat frame painted - 1, drawn once and handed to the
+// encoder again (a held last moment costs its encoding alone). GIF palettes are sampled from
+// the first, middle and last frames first. An error on any thread stops them all and is
+// rethrown here; the target is written only if every frame made it.
 EncodeStats encode_frames(const std::string& path, const VideoOptions& opt, int frame_count,
-                          const PaintFn& paint, const ProgressFn& progress = {});
+                          const PaintFn& paint, const ProgressFn& progress = {}, int painted = 0);
 
 // ---- Films of a simulation -------------------------------------------------------------------
 
@@ -121,7 +125,7 @@ struct Clip {
     double from = 0.0;     // simulated seconds
     double to = 0.0;       // simulated seconds, after `from`; the last frame shows exactly this moment
     double speedup = 1.0;  // simulated seconds per second of video
-    double hold = 0.0;     // seconds of video the last moment stays on screen
+    double hold = 0.0;     // seconds of video the last moment stays on screen, 0..3600 (drawn once)
 };
 
 // A clip made drawable: the moment and the scene of every frame. Frames are at from,
@@ -130,7 +134,8 @@ struct Clip {
 class Animation {
 public:
     // Throws InputError for an empty or reversed range, a time off the path (past the spiral's
-    // centre, say), a speedup or fps <= 0 or a negative hold. With the camera on fit_dragon the
+    // centre, say), a speedup or fps <= 0, a hold outside 0..3600 s or a fixed or followed view
+    // that cannot be drawn (see check_view). With the camera on fit_dragon the
     // view is fixed for the whole clip: it fits the dragon at nine moments spread over it; with
     // speed colours and no range given, the range is fixed likewise from those moments.
     // `end_mark`: two benches that touch at `to`, drawn marked on the frames of that moment.
@@ -139,6 +144,8 @@ public:
               std::optional<CollisionMark> end_mark = {});
 
     int frame_count() const { return frame_count_; }
+    // Frames that differ: from this one on, the held last moment repeats frame distinct_frames() - 1.
+    int distinct_frames() const { return moving_frames_; }
     double fps() const { return fps_; }
     const Clip& clip() const { return clip_; }
     double time_at(int index) const;

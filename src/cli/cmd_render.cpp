@@ -80,6 +80,7 @@ void register_render(CLI::App& app, Registry& reg) {
         }
         const Scene scene = make_scene(sim, frame, so);
         const auto [w, h] = opt->look.size();
+        if (opt->look.zoom()) require_zoom_resolves(scene, w, h, *opt->look.zoom());
         if (ext == ".png") render_png(scene, w, h, opt->out);
         else render_svg(scene, w, h, opt->out);
         status(opt->quiet, "wrote {} ({} x {} px, t = {:.6f} s)", opt->out, w, h, frame.time);

@@ -11,6 +11,7 @@
 #include "cli/contact_search.hpp"
 #include "cli/report.hpp"
 #include "cli/progress.hpp"
+#include "cli/render_flags.hpp"
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
 #include "dragon/analyses.hpp"
@@ -139,7 +140,7 @@ void register_video(CLI::App& app, Registry& reg) {
                     "would have to jump). Default: collision; 100 on the turnaround path");
     sub->add_option("--fps", opt->fps, "Frames per second of video, 0.01 to 240 (default 30)");
     sub->add_option("--speedup", opt->speedup, "Simulated seconds per second of video (default 10)");
-    sub->add_option("--hold", opt->hold, "Seconds the last moment stays on screen (default 1 at a collision, else 0)");
+    sub->add_option("--hold", opt->hold, "Seconds the last moment stays on screen, 0..3600, drawn once (default 1 at a collision, else 0)");
     sub->add_option("--size", opt->size, "Picture size in pixels, WIDTHxHEIGHT (default 1280x720; even for mp4/webm)");
     sub->add_option("--crf", opt->crf,
                     "Quality, lower is better: H.264 0-51 (default 20), VP9 0-63 (default 32); not for GIF");
@@ -175,8 +176,7 @@ void register_video(CLI::App& app, Registry& reg) {
         if (format != VideoFormat::gif && sub->count("--colours") > 0)
             throw InputError(fmt::format("--colours {} is not allowed for .{}: it sets a GIF's palette", opt->colours,
                                          to_string(format)));
-        if (opt->zoom && !(*opt->zoom > 0.0))
-            throw InputError(fmt::format("--zoom {} is not allowed: use metres above 0", *opt->zoom));
+        if (opt->zoom) check_zoom(*opt->zoom);
         { AtomicFile probe(opt->out); }  // an unwritable path fails here, before any work
         const Scenario s = opt->scenario.resolve();
         SceneOptions scene;
@@ -193,6 +193,10 @@ void register_video(CLI::App& app, Registry& reg) {
         const End end = resolve_to(opt->to, sim, from);
         Clip clip{from, end.time, opt->speedup, opt->hold.value_or(end.mark ? 1.0 : 0.0)};
         const Animation anim(sim, clip, vo.fps, scene, end.mark);
+        // A followed head is furthest from the origin at an end of the clip.
+        if (opt->zoom)
+            for (int index : {0, anim.distinct_frames() - 1})
+                require_zoom_resolves(anim.scene_at(index), vo.width, vo.height, *opt->zoom);
 
         quiet_codec_logs();
         const EncodeStats stats = [&] {

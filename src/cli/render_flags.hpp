@@ -14,6 +14,13 @@
 
 namespace dragon::cli {
 
+// --zoom as given: a finite width within kMinViewExtent..kMaxViewExtent (InputError naming it).
+void check_zoom(double zoom);
+// The view a --zoom ended up with (about the head, the contact or --centre), at this picture
+// size: InputError naming --zoom, the centre and the narrowest zoom allowed there, unless
+// doubles resolve its pixels.
+void require_zoom_resolves(const Scene& scene, int width_px, int height_px, double zoom);
+
 class RenderFlags {
 public:
     void add_to(CLI::App* sub, bool with_view = true);

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "dragon/render.hpp"
+#include "render/guide.hpp"
 #include "render/paint.hpp"
 
 namespace dragon {
@@ -19,35 +20,72 @@ namespace {
 
 using render::set_colour;
 
-// World (metres, y up) to device pixels (y down), aspect ratio kept.
+// World (metres, y up) to device pixels (y down), aspect ratio kept; and the boxes (pixels)
+// that keep Cairo's work to the picture (see clip.hpp): shapes inside `tame` go to Cairo as they
+// are, the rest are cut to `cut` first.
 struct View {
     double cx, cy, scale, ox, oy;
+    render::Box tame, cut;
     Vec2 px(Vec2 p) const { return {ox + (p.x - cx) * scale, oy - (p.y - cy) * scale}; }
 };
 
 // Space kept free on the right for the colour bar, in units of u.
 constexpr double colour_bar_room = 110.0;
 
-View make_view(const Scene& s, double w, double h, double right_room) {
+// Cut shapes keep a margin wider than any line outside the picture, so no cut edge shows.
+View make_view(const Scene& s, double w, double h, double right_room, double u) {
     const double avail = std::max(1.0, w - right_room);
     const double scale = std::min(avail / s.view_width, h / s.view_height);
-    return {s.view_centre.x, s.view_centre.y, scale, 0.5 * avail, 0.5 * h};
+    const render::Box picture{{0, 0}, {w, h}};
+    return {s.view_centre.x, s.view_centre.y, scale, 0.5 * avail, 0.5 * h, picture.grown(4 * (w + h)),
+            picture.grown(32 * u)};
+}
+
+// Flattening tolerance of the arcs cut here, px (Cairo's own default).
+constexpr double arc_tolerance = 0.1;
+
+void polygon_path(cairo_t* cr, const std::vector<Vec2>& pts) {
+    if (pts.empty()) return;
+    cairo_move_to(cr, pts[0].x, pts[0].y);
+    for (std::size_t i = 1; i < pts.size(); ++i) cairo_line_to(cr, pts[i].x, pts[i].y);
+    cairo_close_path(cr);
 }
 
 void rect_path(cairo_t* cr, const View& v, const Rect& r) {
     const Corners c = corners(r);
-    Vec2 p = v.px(c.p[0]);
-    cairo_move_to(cr, p.x, p.y);
-    for (int i = 1; i < 4; ++i) {
-        p = v.px(c.p[i]);
-        cairo_line_to(cr, p.x, p.y);
-    }
-    cairo_close_path(cr);
+    std::vector<Vec2> pts;
+    for (Vec2 p : c.p) pts.push_back(v.px(p));
+    if (!std::all_of(pts.begin(), pts.end(), [&](Vec2 p) { return v.tame.holds(p); }))
+        pts = render::clip_polygon(std::move(pts), v.cut);
+    polygon_path(cr, pts);
 }
 
-void circle_path(cairo_t* cr, Vec2 p, double r) {
-    cairo_new_sub_path(cr);
-    cairo_arc(cr, p.x, p.y, r, 0, 2 * std::numbers::pi);
+bool tame_circle(const View& v, Vec2 p, double r) { return v.tame.grown(-r).holds(p); }
+bool off_picture(const View& v, Vec2 p, double r) { return !v.cut.grown(r).holds(p); }
+
+// A disk of radius r px about p, to fill.
+void circle_path(cairo_t* cr, const View& v, Vec2 p, double r) {
+    if (off_picture(v, p, r)) return;
+    if (tame_circle(v, p, r)) {
+        cairo_new_sub_path(cr);
+        cairo_arc(cr, p.x, p.y, r, 0, 2 * std::numbers::pi);
+    } else {
+        polygon_path(cr, render::disk_in_box(p, r, v.cut, arc_tolerance));
+    }
+}
+
+// The circle's outline, to stroke.
+void ring_path(cairo_t* cr, const View& v, Vec2 p, double r) {
+    if (off_picture(v, p, r)) return;
+    if (tame_circle(v, p, r)) {
+        cairo_new_sub_path(cr);
+        cairo_arc(cr, p.x, p.y, r, 0, 2 * std::numbers::pi);
+        return;
+    }
+    for (const auto& piece : render::circle_in_box(p, r, v.cut, arc_tolerance)) {
+        cairo_move_to(cr, piece[0].x, piece[0].y);
+        for (std::size_t i = 1; i < piece.size(); ++i) cairo_line_to(cr, piece[i].x, piece[i].y);
+    }
 }
 
 void set_dash(cairo_t* cr, bool dashed, double u) {
@@ -81,9 +119,10 @@ void draw_turning_space(cairo_t* cr, const Scene& s, const View& v, double u) {
     if (!s.turning_radius) return;
     const Vec2 c = v.px({0, 0});
     const double r = *s.turning_radius * v.scale;
-    circle_path(cr, c, r);
+    circle_path(cr, v, c, r);
     set_colour(cr, s.theme.turning_fill);
-    cairo_fill_preserve(cr);
+    cairo_fill(cr);
+    ring_path(cr, v, c, r);
     set_colour(cr, s.theme.turning_space);
     cairo_set_line_width(cr, 1.5 * u);
     set_dash(cr, true, u);
@@ -91,27 +130,59 @@ void draw_turning_space(cairo_t* cr, const Scene& s, const View& v, double u) {
     set_dash(cr, false, u);
 }
 
-// Guides are stroked in short runs: a stroke's cost follows the rows its bounding box covers,
-// and a whole spiral covers the picture. A quarter-pixel flattening tolerance is invisible on a
-// one-pixel line and halves the segments.
-void draw_guides(cairo_t* cr, const Scene& s, const View& v, double u) {
+// The part of the world the picture shows, widened by `pad_px` pixels on every side.
+render::Box world_box(const View& v, double w, double h, double pad_px) {
+    const double pad = pad_px / v.scale;
+    return {{v.cx - v.ox / v.scale - pad, v.cy - (h - v.oy) / v.scale - pad},
+            {v.cx + (w - v.ox) / v.scale + pad, v.cy + v.oy / v.scale + pad}};
+}
+
+// Bezier segments the guides may use in one picture: far more than a coiled dragon needs (about
+// 2,000 at any size), and few enough that a path packed tighter than the pixels costs what
+// the picture's size allows rather than what the path's length asks.
+double guide_budget(double w, double h) { return 20.0 * (w + h); }
+
+// Guides are flattened only where the picture shows them: the arc ranges that come within the
+// picture's box, at steps of a fortieth of its extent, so a close-up of a long path costs what
+// it shows. They are stroked in short runs: a stroke's cost follows the rows its bounding box
+// covers, and a whole spiral covers the picture. A quarter-pixel flattening tolerance is
+// invisible on a one-pixel line and halves the segments.
+void draw_guides(cairo_t* cr, const Scene& s, const View& v, double u, double w, double h) {
+    const render::Box box = world_box(v, w, h, 8 * u);
+    const double extent = box.extent();
+    std::vector<std::vector<std::pair<double, double>>> ranges;
+    double shown = 0;  // arc length of the guides in the picture, m
+    for (const auto& g : s.guides) {
+        ranges.push_back(g.path ? render::arcs_in_box(*g.path, g.s0, g.s1, box, extent / 40.0)
+                                : std::vector<std::pair<double, double>>{});
+        for (auto [a, b] : ranges.back()) shown += b - a;
+    }
+    const double budget_step = shown / guide_budget(w, h);
+    const double max_step = std::max(extent / 40.0, budget_step);
+    const double min_step = std::max(0.5 / v.scale, budget_step);  // half a pixel
+
     constexpr std::size_t run = 12;  // Bezier segments per stroke
     cairo_save(cr);
     cairo_set_tolerance(cr, 0.25);
-    for (const auto& g : s.guides) {
-        if (g.beziers.size() < 4) continue;
+    for (std::size_t i = 0; i < s.guides.size(); ++i) {
+        const auto& g = s.guides[i];
         set_colour(cr, g.colour);
         cairo_set_line_width(cr, g.width_px * u);
         set_dash(cr, g.dashed, u);
-        const std::size_t segments = (g.beziers.size() - 1) / 3;
-        for (std::size_t k = 0; k < segments; ++k) {
-            if (k % run == 0) {
-                const Vec2 p = v.px(g.beziers[3 * k]);
-                cairo_move_to(cr, p.x, p.y);
+        for (auto [a, b] : ranges[i]) {
+            for (const auto& r : render::path_beziers(*g.path, a, b, max_step, 0.3, min_step)) {
+                const std::vector<Vec2>& z = r.beziers;
+                const std::size_t segments = (z.size() - 1) / 3;
+                for (std::size_t k = 0; k < segments; ++k) {
+                    if (k % run == 0) {
+                        const Vec2 p = v.px(z[3 * k]);
+                        cairo_move_to(cr, p.x, p.y);
+                    }
+                    const Vec2 p1 = v.px(z[3 * k + 1]), p2 = v.px(z[3 * k + 2]), p3 = v.px(z[3 * k + 3]);
+                    cairo_curve_to(cr, p1.x, p1.y, p2.x, p2.y, p3.x, p3.y);
+                    if (k % run == run - 1 || k + 1 == segments) cairo_stroke(cr);
+                }
             }
-            const Vec2 a = v.px(g.beziers[3 * k + 1]), b = v.px(g.beziers[3 * k + 2]), c = v.px(g.beziers[3 * k + 3]);
-            cairo_curve_to(cr, a.x, a.y, b.x, b.y, c.x, c.y);
-            if (k % run == run - 1 || k + 1 == segments) cairo_stroke(cr);
         }
     }
     cairo_restore(cr);
@@ -202,6 +273,7 @@ void draw_handles(cairo_t* cr, const Scene& s, const View& v, double u) {
         // Bezier arcs per dot (a fifth of the cost).
         for (Vec2 h : s.handles) {
             const Vec2 c = v.px(h);
+            if (off_picture(v, c, r)) continue;
             for (int i = 0; i < 8; ++i) {
                 const double a = (i + 0.5) * std::numbers::pi / 4;
                 const double x = c.x + r * std::cos(a), y = c.y + r * std::sin(a);
@@ -211,18 +283,20 @@ void draw_handles(cairo_t* cr, const Scene& s, const View& v, double u) {
             cairo_close_path(cr);
         }
     } else {
-        for (Vec2 h : s.handles) circle_path(cr, v.px(h), r);
+        for (Vec2 h : s.handles) circle_path(cr, v, v.px(h), r);
     }
     cairo_fill(cr);
 }
 
-void draw_marker(cairo_t* cr, const Marker& m, Vec2 p, double u) {
+void draw_marker(cairo_t* cr, const View& v, const Marker& m, Vec2 p, double u) {
+    if (off_picture(v, p, m.radius_px * u)) return;
     set_colour(cr, m.colour);
-    circle_path(cr, p, m.radius_px * u);
     if (m.ring) {
+        ring_path(cr, v, p, m.radius_px * u);
         cairo_set_line_width(cr, 1.5 * u);
         cairo_stroke(cr);
     } else {
+        circle_path(cr, v, p, m.radius_px * u);
         cairo_fill(cr);
     }
 }
@@ -230,8 +304,8 @@ void draw_marker(cairo_t* cr, const Marker& m, Vec2 p, double u) {
 void draw_collision(cairo_t* cr, const Scene& s, const View& v, double u) {
     if (!s.collision) return;
     const Vec2 p = v.px(s.collision->point);
-    draw_marker(cr, {s.collision->point, s.theme.contact, 9.0, true}, p, u);
-    draw_marker(cr, {s.collision->point, s.theme.contact, 2.2, false}, p, u);
+    draw_marker(cr, v, {s.collision->point, s.theme.contact, 9.0, true}, p, u);
+    draw_marker(cr, v, {s.collision->point, s.theme.contact, 2.2, false}, p, u);
 }
 
 void draw_overlays(cairo_t* cr, const Scene& s, const View& v, double u) {
@@ -247,18 +321,26 @@ void draw_overlays(cairo_t* cr, const Scene& s, const View& v, double u) {
             tip = v.px(pl.points[last]);
             dir = normalized(tip - v.px(pl.points[last - 1]));
         }
-        for (std::size_t i = 0; i <= last; ++i) {
-            Vec2 p = v.px(pl.points[i]);
-            if (arrow && i == last) p = tip - 0.7 * head * dir;
-            if (i == 0) cairo_move_to(cr, p.x, p.y);
-            else cairo_line_to(cr, p.x, p.y);
+        std::vector<Vec2> pts;
+        for (std::size_t i = 0; i <= last; ++i) pts.push_back(v.px(pl.points[i]));
+        if (arrow) pts[last] = tip - 0.7 * head * dir;
+        if (std::all_of(pts.begin(), pts.end(), [&](Vec2 p) { return v.tame.holds(p); })) {
+            for (std::size_t i = 0; i <= last; ++i) {
+                if (i == 0) cairo_move_to(cr, pts[i].x, pts[i].y);
+                else cairo_line_to(cr, pts[i].x, pts[i].y);
+            }
+            if (pl.closed) cairo_close_path(cr);
+        } else {
+            for (const auto& piece : render::clip_polyline(pts, pl.closed, v.cut)) {
+                cairo_move_to(cr, piece[0].x, piece[0].y);
+                for (std::size_t i = 1; i < piece.size(); ++i) cairo_line_to(cr, piece[i].x, piece[i].y);
+            }
         }
-        if (pl.closed) cairo_close_path(cr);
         set_colour(cr, pl.colour);
         cairo_set_line_width(cr, pl.width_px * u);
         set_dash(cr, pl.dashed, u);
         cairo_stroke(cr);
-        if (arrow) {
+        if (arrow && !off_picture(v, tip, head)) {
             const Vec2 n = perp(dir);
             const Vec2 a = tip - head * dir + 0.45 * head * n, b = tip - head * dir - 0.45 * head * n;
             cairo_move_to(cr, tip.x, tip.y);
@@ -269,11 +351,12 @@ void draw_overlays(cairo_t* cr, const Scene& s, const View& v, double u) {
         }
     }
     set_dash(cr, false, u);
-    for (const auto& m : s.markers) draw_marker(cr, m, v.px(m.pos), u);
+    for (const auto& m : s.markers) draw_marker(cr, v, m, v.px(m.pos), u);
     if (!s.show_text) return;
     // Labels get a halo of the background colour so they read over benches and lines.
     for (const auto& l : s.labels) {
         const Vec2 p = v.px(l.pos);
+        if (!v.tame.holds(p)) continue;  // far outside the picture: none of it could show
         render::halo_text(cr, s.theme.font, l.size_px * u, p.x + l.dx_px * u, p.y + l.dy_px * u, l.text,
                           l.colour, s.theme.background, 3.0 * u);
     }
@@ -305,7 +388,7 @@ void draw_scale_bar(cairo_t* cr, const Scene& s, const View& v, double u, double
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
     if (s.show_text)
         render::text(cr, s.theme.font, 13 * u, x0 + 0.5 * len, y0 - 9 * u,
-                     render::format_tick(metres, metres < 1 ? 2 : 0) + " m", 0.5);
+                     render::scale_label(metres), 0.5);
 }
 
 void draw_colour_bar(cairo_t* cr, const Scene& s, double u, double w, double h) {
@@ -338,30 +421,33 @@ void draw_colour_bar(cairo_t* cr, const Scene& s, double u, double w, double h) 
     render::text(cr, s.theme.font, 12 * u, x + 0.5 * bar_w, y0 - 18 * u, "speed (m/s)", 0.5);
 }
 
-void draw_annotation(cairo_t* cr, const Scene& s, double u) {
+void draw_annotation(cairo_t* cr, const Scene& s, double u, double w) {
     if (!s.show_text || s.annotation.empty()) return;
-    // One line per '\n'; the first is the headline, the rest a little smaller.
-    std::vector<std::string> lines;
+    // One line per '\n'; the first is the headline, the rest a little smaller. Each is fitted
+    // to the picture's width: wrapped or set smaller rather than run off its edge.
+    const double room = w - 32 * u, gap = 6 * u;
+    std::vector<render::FittedText> blocks;
     for (std::size_t at = 0;;) {
         const std::size_t nl = s.annotation.find('\n', at);
-        lines.push_back(s.annotation.substr(at, nl == std::string::npos ? std::string::npos : nl - at));
+        const std::string line = s.annotation.substr(at, nl == std::string::npos ? std::string::npos : nl - at);
+        blocks.push_back(render::fit_text(cr, s.theme.font, (blocks.empty() ? 15 : 13) * u, line, room));
         if (nl == std::string::npos) break;
         at = nl + 1;
     }
-    const double size = 15 * u, small = 13 * u, gap = 6 * u;
-    double tw = 0, th = size;
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-        tw = std::max(tw, render::text_width(cr, s.theme.font, i ? small : size, lines[i]));
-        if (i) th += gap + small;
-    }
+    double tw = 0, th = -gap;
+    for (const auto& b : blocks)
+        for (const auto& line : b.lines) {
+            tw = std::max(tw, render::text_width(cr, s.theme.font, b.size, line));
+            th += b.size + gap;
+        }
     backdrop(cr, s, 8 * u, 8 * u, tw + 16 * u, th + 14 * u);
     set_colour(cr, s.theme.text);
     double y = 15 * u;
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-        const double sz = i ? small : size;
-        render::text(cr, s.theme.font, sz, 16 * u, y + 0.5 * sz, lines[i], 0.0, 0.5);
-        y += sz + gap;
-    }
+    for (const auto& b : blocks)
+        for (const auto& line : b.lines) {
+            render::text(cr, s.theme.font, b.size, 16 * u, y + 0.5 * b.size, line, 0.0, 0.5);
+            y += b.size + gap;
+        }
 }
 
 }  // namespace
@@ -381,7 +467,7 @@ void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
 
     const bool vector_surface = cairo_surface_get_type(cairo_get_target(cr)) != CAIRO_SURFACE_TYPE_IMAGE;
     const double right = (s.colour_by_speed && s.show_colour_bar) ? colour_bar_room * u : 0.0;
-    const View v = make_view(s, w, h, right);
+    const View v = make_view(s, w, h, right, u);
 
     // The world keeps clear of the colour bar's strip.
     cairo_save(cr);
@@ -390,7 +476,7 @@ void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
         cairo_clip(cr);
     }
     draw_turning_space(cr, s, v, u);
-    draw_guides(cr, s, v, u);
+    draw_guides(cr, s, v, u, w - right, h);
     draw_benches(cr, s, v, u, vector_surface, w - right, h);
     draw_handles(cr, s, v, u);
     draw_collision(cr, s, v, u);
@@ -398,7 +484,7 @@ void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
     cairo_restore(cr);
     draw_scale_bar(cr, s, v, u, h);
     draw_colour_bar(cr, s, u, w, h);
-    draw_annotation(cr, s, u);
+    draw_annotation(cr, s, u, w);
     cairo_restore(cr);
 }
 

@@ -3,6 +3,7 @@
 // against time.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -11,16 +12,11 @@
 #include "dragon/cairo_handles.hpp"
 #include "dragon/collision.hpp"
 #include "render/figure_kit.hpp"
+#include "render/paint.hpp"
 
 namespace dragon::fig {
 
 namespace {
-
-Contact coil_in_contact(const Simulation& sim) {
-    auto c = first_contact(sim, 0.0, sim.end_time());
-    if (!c) throw std::runtime_error("this scenario coils in to the centre without a collision: no contact to draw");
-    return *c;
-}
 
 double bounding_radius(const Rect& r) { return std::hypot(r.half_length, r.half_width); }
 
@@ -33,13 +29,6 @@ Polyline segment(Vec2 a, Vec2 b, Rgba colour, double width, bool dashed = false)
     return p;
 }
 
-void paint(const Scene& s, int w, int h, const std::string& path) {
-    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
-    cairo::Context cr = cairo::make_context(surface.get());
-    draw(cr.get(), s, w, h);
-    write_png(surface.get(), path);
-}
-
 // The time the head front handle reaches the turning-space boundary on a plain spiral.
 double boundary_time(const Simulation& sim) {
     const auto& spiral = static_cast<const Spiral&>(sim.path());
@@ -47,19 +36,32 @@ double boundary_time(const Simulation& sim) {
     return (-spiral.length_to(theta_end) - sim.start_arc()) / sim.scenario().head_speed;
 }
 
+// The last moment the coil-in figures show: the first contact, or with none the end of the run.
+double last_moment(const Context& c, const Simulation& sim) {
+    return shown_span(sim, 0.0, sim.end_time(), c.answers->contact()).to;
+}
+
+// Non-adjacent benches of a chain of n other than `bench`: every bench but itself and its
+// one or two neighbours.
+int others(int bench, int n) { return n - 1 - (bench > 1) - (bench < n); }
+
 }  // namespace
 
 void broad_phase(const Context& c, const std::string& path) {
     const Simulation sim(c.base);
-    const Contact hit = coil_in_contact(sim);
-    const Frame& f = hit.frame;
+    const std::optional<Contact>& hit = c.answers->contact();
+    const Frame f = hit ? hit->frame : sim.frame(last_moment(c, sim));
     const Theme& th = c.opt.theme;
-    const int focus = 1;  // the head: the bench that collides first
+    // The bench nearer the head of the touching pair (the head itself on the contest's dragon);
+    // without a contact, the head.
+    const int focus = hit ? hit->bench_a : 1;
     const double margin = 1.0;  // the clearance search's margin, m
     const Rect& r = f.benches[focus - 1];
     // The sweep band: the bench's bounding box on x, widened by half the margin each side (as in
     // candidate_pairs; a bench whose own band overlaps it goes on to the circle test).
     const double reach = r.half_length * std::abs(r.axis.x) + r.half_width * std::abs(r.axis.y) + 0.5 * margin;
+    // Twice the circle of bench + margin across: the candidates and their neighbours.
+    const double extent = 4.0 * (bounding_radius(r) + margin);
 
     std::vector<int> candidates;
     for (auto [i, j] : candidate_pairs(f, margin))
@@ -67,65 +69,104 @@ void broad_phase(const Context& c, const std::string& path) {
 
     SceneOptions so;
     so.theme = th;
-    so.camera = Camera::at(r.centre, 11.0);
+    so.camera = Camera::at(r.centre, extent);
     so.highlight_benches = candidates;
+    const std::string when =
+        hit ? fmt::format("at the first contact (t = {:.2f} s)", hit->time)
+            : fmt::format("at t = {:.2f} s (no two benches touch on the way in)", f.time);
     so.annotation = fmt::format(
-        "Broad phase around bench {} at the first contact (t = {:.2f} s): {} of {} benches are candidates\n"
+        "Broad phase around bench {} {}: {} of {} benches are candidates\n"
         "Sweep and prune on x (box extents), then bounding circles within a margin of {:g} m (purple); only these get the exact test.",
-        focus, hit.time, candidates.size(), f.benches.size() - 2, margin);
+        focus, when, candidates.size(), others(focus, static_cast<int>(f.benches.size())), margin);
     Scene s = make_scene(sim, f, so);
 
     // The sweep on x, then the circle test: a candidate's bounding circle comes within the
     // margin of the focus bench's.
     const double x0 = r.centre.x - reach, x1 = r.centre.x + reach;
-    for (double x : {x0, x1}) s.polylines.push_back(segment({x, r.centre.y - 8}, {x, r.centre.y + 8}, th.text, 1.2, true));
+    for (double x : {x0, x1})
+        s.polylines.push_back(segment({x, r.centre.y - extent}, {x, r.centre.y + extent}, th.text, 1.2, true));
     for (int bench : candidates) {
         const Rect& b = f.benches[bench - 1];
         s.polylines.push_back(circle(b.centre, bounding_radius(b), with_alpha(th.highlight, 0.45), 1.0));
     }
     s.polylines.push_back(circle(r.centre, bounding_radius(r) + margin, th.head, 2.2, true));
     s.polylines.push_back(circle(r.centre, bounding_radius(r), th.head, 1.6));
-    s.labels.push_back(label(r.centre + Vec2{0, bounding_radius(r) + margin}, "bench 1's bounding circle + margin", th.head, 14, 6, -8));
-    s.labels.push_back(label({x1, r.centre.y - 4.6}, "sweep band on x", th.text, 14, 6, 0));
-    paint(s, c.px(900), c.px(900), path);
+    s.labels.push_back(label(r.centre + Vec2{0, bounding_radius(r) + margin},
+                             fmt::format("bench {}'s bounding circle + margin", focus), th.head, 14, 6, -8));
+    s.labels.push_back(label({x1, r.centre.y - 0.42 * extent}, "sweep band on x", th.text, 14, 6, 0));
+    write_scene(c, s, c.px(900), c.px(900), path);
 }
 
 void first_contact_zoom(const Context& c, const std::string& path) {
     const Simulation sim(c.base);
-    const Contact hit = coil_in_contact(sim);
-    const Frame& f = hit.frame;
+    const std::optional<Contact>& hit = c.answers->contact();
+    const Frame f = hit ? hit->frame : sim.frame(last_moment(c, sim));
     const Theme& th = c.opt.theme;
-    const Rect& a = f.benches[hit.bench_a - 1];
-    const Rect& b = f.benches[hit.bench_b - 1];
+    // Without a contact, the closest pair at the last moment, said to be apart.
+    const Clearance closest = clearance(f);
+    const int bench_a = hit ? hit->bench_a : closest.bench_a, bench_b = hit ? hit->bench_b : closest.bench_b;
+    const int w = c.px(1000), h = c.px(1000);
+    if (bench_a == 0) {  // fewer than three benches: no pair that could touch
+        SceneOptions so;
+        so.theme = th;
+        so.annotation = fmt::format("No contact: a chain of {} benches has no two that do not share a handle",
+                                    f.benches.size());
+        write_scene(c, make_scene(sim, f, so), w, h, path);
+        return;
+    }
+    const Rect& a = f.benches[bench_a - 1];
+    const Rect& b = f.benches[bench_b - 1];
     const Vec2 p = contact_point(a, b);
-    const double extent = 2.4;
+    const Separation sep = separation(a, b);
+    // Boards and the gap between them, large: eight board widths, or three gaps if wider.
+    const double extent = std::max(8.0 * c.base.bench.width, 3.0 * sep.distance);
 
     SceneOptions so;
     so.theme = th;
     so.camera = Camera::at(p, extent);
-    so.collision = CollisionMark{hit.bench_a, hit.bench_b, p};
-    so.annotation = fmt::format("First contact at t = {:.6f} s: bench {} touches bench {} (head at r = {:.4f} m)",
-                                hit.time, hit.bench_a, hit.bench_b, hit.head_radius);
+    if (hit) {
+        so.collision = CollisionMark{bench_a, bench_b, p};
+        so.annotation = fmt::format("First contact at t = {:.6f} s: bench {} touches bench {} (head at r = {:.4f} m)",
+                                    hit->time, bench_a, bench_b, hit->head_radius);
+    } else {
+        so.highlight_benches = {bench_a, bench_b};
+        so.annotation = fmt::format("No contact on the way in: at t = {:.6f} s, the last moment, the closest benches "
+                                    "are {} and {}, {:.6f} m apart",
+                                    f.time, bench_a, bench_b, closest.distance);
+    }
     Scene s = make_scene(sim, f, so);
-    // Name each touching bench beside the contact, along its own axis.
+    // Name each bench of the pair beside the contact, along its own axis: a little way back
+    // from the point nearest the contact, or the nearest place to that on the board where the
+    // name is clear of the picture's edges, its title and the inset (bottom right).
+    auto clear_of_all = [&](Vec2 at) {
+        const double x = (at.x - p.x) / extent, y = (p.y - at.y) / extent;  // right, down
+        return x > -0.42 && x < 0.36 && y > -0.38 && y < 0.42 && !(x > 0.09 && y > 0.19);
+    };
     auto name_at = [&](const Rect& r, int bench) {
         const double along = std::clamp(dot(p - r.centre, r.axis), -r.half_length, r.half_length);
-        const double back = along > 0 ? -0.55 : 0.55;
-        const Vec2 at = r.centre + (along + back) * r.axis;
+        const double wanted = along + (along > 0 ? -0.23 : 0.23) * extent;
+        Vec2 at = r.centre + wanted * r.axis;
+        double best = std::numeric_limits<double>::infinity();
+        for (int k = 0; k <= 80 && !clear_of_all(r.centre + wanted * r.axis); ++k) {
+            const double a = -r.half_length + 2 * r.half_length * k / 80;
+            if (const Vec2 q = r.centre + a * r.axis; clear_of_all(q) && std::abs(a - wanted) < best)
+                best = std::abs(a - wanted), at = q;
+        }
         std::string name = bench == 1 ? "bench 1 (head)" : fmt::format("bench {}", bench);
         s.labels.push_back(label(at, name, th.text, 15, -40, -16));
     };
-    name_at(a, hit.bench_a);
-    name_at(b, hit.bench_b);
-    const Separation sep = separation(a, b);
-    s.labels.push_back(label(p, fmt::format("contact: separation {:.1e} m", sep.distance), th.text, 13, 16, 26));
+    name_at(a, bench_a);
+    name_at(b, bench_b);
+    s.labels.push_back(label(p, hit ? fmt::format("contact: separation {:.1e} m", sep.distance)
+                                    : fmt::format("closest: {:.6f} m apart", sep.distance),
+                             th.text, 13, 16, 26));
     // The handles near the contact, numbered: those well inside the view, so that no number
     // hides under the title band or runs off the edge.
     for (std::size_t i = 0; i < f.handles.size(); ++i)
         if (const Vec2 d = f.handles[i].pos - p; std::abs(d.x) < 0.46 * extent && d.y > -0.46 * extent && d.y < 0.43 * extent)
             s.labels.push_back(label(f.handles[i].pos, fmt::format("{}", i), with_alpha(th.text, 0.7), 12, 8, 14));
 
-    const int w = c.px(1000), h = c.px(1000);
+    c.tell(s);
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
     cairo::Context cr = cairo::make_context(surface.get());
     draw(cr.get(), s, w, h);
@@ -135,6 +176,7 @@ void first_contact_zoom(const Context& c, const std::string& path) {
     io.show_text = false;
     io.show_scale_bar = false;
     io.collision = so.collision;
+    io.highlight_benches = so.highlight_benches;
     Scene inset = make_scene(sim, f, io);
     const double half = 0.5 * extent;
     inset.polylines.push_back({{p + Vec2{-half, -half}, p + Vec2{half, -half}, p + Vec2{half, half}, p + Vec2{-half, half}},
@@ -153,15 +195,29 @@ void first_contact_zoom(const Context& c, const std::string& path) {
     write_png(surface.get(), path);
 }
 
+// Panel pitches a round step apart around `centre`, none below `lo`: three below it and three
+// above (or all above lo when it is near).
+std::vector<double> panel_pitches(double centre, double lo, double step) {
+    double below = std::floor(centre / step) * step;
+    if (below >= centre) below -= step;
+    std::vector<double> out;
+    for (int k = -2; out.size() < 6; ++k)
+        if (const double p = below + k * step; p >= lo) out.push_back(p);
+    return out;
+}
+
 void pitch_states(const Context& c, const std::string& path) {
     const Theme& th = c.opt.theme;
-    // Six pitches 5 mm apart across the neighbourhood of the minimum. The exact minimum is
-    // `dragon min-pitch`'s job: bisecting to 1e-10 m needs runs at pitches whose clearance
-    // stays near zero for minutes of simulated time, far too slow for a gallery. The title
-    // states the bracket these panels prove.
-    const std::vector<double> pitches{0.440, 0.445, 0.450, 0.455, 0.460, 0.470};
+    const MinPitch& least = c.answers->min_pitch();
+    const double radius = c.base.path.turn_radius;
+    // Six panels around the scenario's own minimum pitch, 0.7 to 1.7 % of it apart (or around
+    // the window's top when nothing in it is collision-free). Each is its own run to the
+    // boundary: they show the minimum's neighbourhood; `min_pitch` found the minimum itself.
+    const double centre = std::isnan(least.pitch) ? least.search_hi : least.pitch;
+    const double step = render::nice_floor(centre / 60.0);
+    const std::vector<double> pitches = panel_pitches(centre, least.search_lo, step);
+    const int decimals = std::max(3, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
     std::vector<Scene> panels;
-    std::vector<double> touching, clear;
     std::vector<std::string> captions;
     for (double pitch : pitches) {
         Scenario sc = c.base;
@@ -169,29 +225,52 @@ void pitch_states(const Context& c, const std::string& path) {
         const Simulation sim(sc);
         SceneOptions so;
         so.theme = th;
-        so.camera = Camera::at({0, 0}, 2 * sc.path.turn_radius + 7.0);
+        so.camera = Camera::at({0, 0}, 2.0 * (radius + sc.bench.head_length));
         so.show_scale_bar = false;
         so.annotation = "";
         const auto hit = contact_before_boundary(c.base, pitch);
-        (hit ? touching : clear).push_back(pitch);
         Frame f;
         if (hit) {
             f = hit->frame;
             const Vec2 q = contact_point(f.benches[hit->bench_a - 1], f.benches[hit->bench_b - 1]);
             so.collision = CollisionMark{hit->bench_a, hit->bench_b, q};
-            captions.push_back(fmt::format("pitch {:.3f} m: benches {} and {} touch at t = {:.2f} s", pitch, hit->bench_a,
-                                        hit->bench_b, hit->time));
+            captions.push_back(fmt::format("pitch {:.{}f} m: benches {} and {} touch at t = {:.2f} s", pitch, decimals,
+                                           hit->bench_a, hit->bench_b, hit->time));
         } else {
             f = sim.frame(boundary_time(sim));
-            captions.push_back(fmt::format("pitch {:.3f} m: the head reaches r = {:g} m, no contact", pitch,
-                                           sc.path.turn_radius));
+            captions.push_back(fmt::format("pitch {:.{}f} m: the head reaches r = {:g} m, no contact", pitch, decimals,
+                                           radius));
         }
         panels.push_back(make_scene(sim, f, so));
     }
+    std::string verdict;
+    if (std::isnan(least.pitch))
+        verdict = fmt::format("no pitch in [{:.4f}, {:.4f}] m reaches it collision-free", least.search_lo,
+                              least.search_hi);
+    else if (least.pitch <= least.search_lo)
+        verdict = fmt::format("every pitch searched, from {:.4f} m, reaches it collision-free", least.search_lo);
+    else
+        verdict = fmt::format("the smallest collision-free pitch is {:.6f} m", least.pitch);
+    const std::string title = fmt::format("Coiling in to the turning space (r = {:g} m): {}{}", radius, verdict,
+                                          c.contest() ? " (the paper says 0.42 m)" : "");
+    c.tell(title);
+    for (const auto& caption : captions) c.tell(caption);
+
     const int pw = c.px(440), ph = c.px(440), gap = 6, caption_h = c.px(24);
     const int cols = 3, rows = 2;
-    const int title_h = c.px(40);
-    const int w = cols * pw + (cols + 1) * gap, h = rows * (ph + caption_h) + (rows + 1) * gap + title_h;
+    const int w = cols * pw + (cols + 1) * gap;
+    // The title wraps rather than run off the picture: measured on a scratch surface first,
+    // because the picture's height depends on it.
+    const double title_size = 18.0 * c.opt.scale;
+    render::FittedText fitted;
+    {
+        cairo::Surface scratch(cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1));
+        cairo::Context m = cairo::make_context(scratch.get());
+        fitted = render::fit_text(m.get(), th.font, title_size, title, w - 2.0 * (gap + 8), true);
+    }
+    const double line_h = 1.3 * fitted.size;
+    const int title_h = c.px(40) + static_cast<int>(std::ceil(line_h * (static_cast<double>(fitted.lines.size()) - 1)));
+    const int h = rows * (ph + caption_h) + (rows + 1) * gap + title_h;
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
     cairo::Context cr = cairo::make_context(surface.get());
     cairo_set_source_rgb(cr.get(), th.background.r, th.background.g, th.background.b);
@@ -201,58 +280,64 @@ void pitch_states(const Context& c, const std::string& path) {
     draw_panels(cr.get(), panels, captions, cols, pw, ph, caption_h, th, gap);
     cairo_restore(cr.get());
     cairo_set_source_rgb(cr.get(), th.text.r, th.text.g, th.text.b);
-    cairo_select_font_face(cr.get(), th.font.c_str(), CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
-    cairo_set_font_size(cr.get(), 18.0 * c.opt.scale);
-    cairo_move_to(cr.get(), gap + 8, title_h * 0.7);
-    // The bracket the panels prove: the largest pitch that touches, and the next one up (from
-    // which every panel is clear).
-    std::string verdict = "no pitch here reaches the boundary clear";
-    if (!clear.empty()) {
-        double below = 0, above = 0;
-        for (std::size_t i = pitches.size(); i-- > 0;) {
-            if (std::find(touching.begin(), touching.end(), pitches[i]) != touching.end()) {
-                below = pitches[i];
-                above = i + 1 < pitches.size() ? pitches[i + 1] : 0;
-                break;
-            }
-            above = pitches[i];
-        }
-        verdict = below > 0 ? fmt::format("the smallest collision-free pitch lies in ({:.3f}, {:.3f}] m", below, above)
-                            : fmt::format("every pitch from {:.3f} m reaches the boundary clear", above);
-    }
-    const std::string title = fmt::format("Coiling in to the turning space (r = {:g} m): {} (the paper says 0.42 m)",
-                                          c.base.path.turn_radius, verdict);
-    cairo_show_text(cr.get(), title.c_str());
+    for (std::size_t i = 0; i < fitted.lines.size(); ++i)
+        render::text(cr.get(), th.font, fitted.size, gap + 8, c.px(40) * 0.7 + line_h * static_cast<double>(i),
+                     fitted.lines[i], 0.0, 0.0, true);
     write_png(surface.get(), path);
 }
 
 void clearance_over_time(const Context& c, const std::string& path) {
     const Simulation sim(c.base);
-    const Contact hit = coil_in_contact(sim);
+    const std::optional<Contact>& hit = c.answers->contact();
+    const TimeSpan span = shown_span(sim, 0.0, sim.end_time(), hit);
     Plot p;
     p.theme = c.opt.theme;
     p.title = "Clearance: the smallest gap between non-adjacent benches";
-    p.note = fmt::format("Exact rectangle distances. First contact at t = {:.6f} s (benches {} and {}); the paper's 0.1 s grid gives 413 s.",
-                         hit.time, hit.bench_a, hit.bench_b);
     p.x_label = "time (s)";
     p.y_label = "clearance (m)";
     p.legend = Plot::Legend::none;
     PlotSeries s{"", {}, series_colour(p.theme, 0), 1.6};
+    Clearance least{std::numeric_limits<double>::infinity(), 0, 0, {}, {}};
+    double least_t = span.from;
     Frame f;
     auto add = [&](double t) {
         sim.frame_into(t, f);
-        s.points.push_back({t, clearance(f).distance});
+        const Clearance cl = clearance(f);
+        if (!std::isfinite(cl.distance)) return;  // fewer than three benches: no pair
+        s.points.push_back({t, cl.distance});
+        if (cl.distance < least.distance) least = cl, least_t = t;
     };
-    for (double t = 0; t < hit.time - 6.0; t += 1.0) add(t);
-    for (double t = std::max(0.0, hit.time - 6.0); t < hit.time; t += 0.02) add(t);
-    add(hit.time);
+    // 400 samples over the run, and 300 more over its last 1.5 %, where the gap closes.
+    const double length = span.to - span.from, fine_from = span.to - 0.015 * length;
+    for (int k = 0; k < 400; ++k) {
+        const double t = span.from + length * k / 400;
+        if (t < fine_from) add(t);
+    }
+    for (int k = 0; k < 300; ++k) add(fine_from + (span.to - fine_from) * k / 300);
+    add(span.to);
+    if (hit) {
+        p.note = fmt::format("Exact rectangle distances. First contact at t = {:.6f} s (benches {} and {}){}", hit->time,
+                             hit->bench_a, hit->bench_b, c.contest() ? "; the paper's 0.1 s grid gives 413 s." : ".");
+        p.ref_lines.push_back({true, hit->time, fmt::format("{:.4f} s", hit->time), p.theme.collision});
+    } else if (s.points.empty()) {
+        p.note = fmt::format("A chain of {} benches has no two that do not share a handle: nothing can touch.",
+                             c.base.bench.bench_count);
+    } else {
+        p.note = fmt::format("Exact rectangle distances. No contact on the way in (to t = {:.2f} s): the smallest sampled "
+                             "clearance is {:.6f} m, benches {} and {} at t = {:.2f} s.",
+                             span.to, least.distance, least.bench_a, least.bench_b, least_t);
+        p.ref_lines.push_back({true, least_t, fmt::format("{:.2f} s", least_t), p.theme.text});
+    }
     p.series.push_back(s);
-    p.ref_lines.push_back({true, hit.time, fmt::format("{:.4f} s", hit.time), p.theme.collision});
     p.ref_lines.push_back({false, 0.0, "", with_alpha(p.theme.text, 0.6)});
+    const double tick = render::nice_floor(std::max(span.to, 1e-9) / 8.0);
     p.x_min = 0;
-    p.x_max = std::ceil(hit.time / 50.0) * 50.0;
-    p.y_min = -0.02;
-    write_plot(p, c.px(1000), c.px(600), path);
+    p.x_max = std::ceil(span.to / tick) * tick;
+    double top = 0;
+    for (Vec2 q : s.points) top = std::max(top, q.y);
+    p.y_min = -0.1 * (top > 0 ? top : 0.2);
+    if (s.points.empty()) p.y_max = 1.0;
+    write_plot(c, p, c.px(1000), c.px(600), path);
 }
 
 }  // namespace dragon::fig

@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "dragon/cairo_handles.hpp"
 #include "render/figure_kit.hpp"
 
 namespace dragon::fig {
@@ -50,7 +49,8 @@ Polyline arrow(Vec2 from, Vec2 to, Rgba colour, double width = 2.2) {
 
 void link_geometry(const Context& c, const std::string& path) {
     const Simulation sim(c.base);
-    const double t = 300.0;
+    // Q1's last moment, or the first contact if it comes sooner.
+    const double t = shown_span(sim, 0.0, 300.0, c.answers->contact()).to;
     Frame f = sim.frame(t);
     f.handles.resize(4);  // the head, the first two body benches: the rest would only crowd
     f.benches.resize(3);
@@ -69,10 +69,10 @@ void link_geometry(const Context& c, const std::string& path) {
     so.show_turning_space = false;
     so.camera = Camera::at({0.5 * (x0 + x1), 0.5 * (y0 + y1)}, std::max(x1 - x0, y1 - y0) + 1.4);
     so.annotation = fmt::format(
-        "One link at t = {:g} s: the next handle is the nearest root of |P(s) \u2212 P(s\u2080)| = d behind the head\n"
+        "One link at t = {} s: the next handle is the nearest root of |P(s) \u2212 P(s\u2080)| = d behind the head\n"
         "Rigid link: v\u2080 (T\u2080\u00b7u) = v\u2081 (T\u2081\u00b7u), with T the unit tangents and u along the link\n"
         "Boards {:.2f} m (head) and {:.2f} m long, {:.2f} m wide; holes {:.3f} m from the ends",
-        t, spec.head_length, spec.body_length, spec.width, spec.hole_offset);
+        seconds(t), spec.head_length, spec.body_length, spec.width, spec.hole_offset);
     Scene s = make_scene(sim, f, so);
     s.benches.back().style = Scene::Style::body;  // bench 3 is not the tail: the chain was cut short
 
@@ -110,11 +110,7 @@ void link_geometry(const Context& c, const std::string& path) {
     s.labels.push_back(label(h0, "handle 0 (head front)", ink, 13, 10, -10));
     s.labels.push_back(label(h2, "handle 2", ink, 13, 10, -8));
 
-    const int w = c.px(1000), h = c.px(1000);
-    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
-    cairo::Context cr = cairo::make_context(surface.get());
-    draw(cr.get(), s, w, h);
-    write_png(surface.get(), path);
+    write_scene(c, s, c.px(1000), c.px(1000), path);
 }
 
 }  // namespace dragon::fig

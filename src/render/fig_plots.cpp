@@ -16,23 +16,25 @@ void speeds_by_handle(const Context& c, const std::string& path) {
     Plot p;
     p.theme = c.opt.theme;
     p.title = "Speed of every handle along the chain (exact, from rigid links)";
-    p.note = fmt::format("Coiling in at {:g} m/s, pitch {:g} m. The paper's finite differences set the body to 0 at t = 0.",
-                         c.base.head_speed, c.base.coil_pitch());
-    p.x_label = "handle (0 = head front, 223 = tail rear)";
+    p.note = fmt::format("Coiling in at {:g} m/s, pitch {:g} m.{}", c.base.head_speed, c.base.coil_pitch(),
+                         c.contest() ? " The paper's finite differences set the body to 0 at t = 0." : "");
+    p.x_label = fmt::format("handle (0 = head front, {} = tail rear)", c.base.bench.bench_count);
     p.y_label = "speed (m/s)";
     p.legend = Plot::Legend::bottom_left;
-    int i = 0;
-    for (double t : {0.0, 60.0, 120.0, 180.0, 240.0, 300.0}) {
+    // Q1's six moments (0, 60, ..., 300 s), spread over a shorter run if the dragon stops sooner.
+    const TimeSpan span = shown_span(sim, 0.0, 300.0, c.answers->contact());
+    for (int i = 0; i <= 5; ++i) {
+        const double t = span.from + (span.to - span.from) * i / 5;
         const Frame f = sim.frame(t);
         PlotSeries s;
-        s.label = fmt::format("t = {:g} s", t);
-        s.colour = series_colour(p.theme, i++);
+        s.label = fmt::format("t = {} s", seconds(t));
+        s.colour = series_colour(p.theme, i);
         for (std::size_t k = 0; k < f.handles.size(); ++k) s.points.push_back({double(k), f.handles[k].speed});
         p.series.push_back(std::move(s));
     }
     p.x_min = 0;
     p.x_max = static_cast<double>(c.base.bench.bench_count);
-    write_plot(p, c.px(1000), c.px(600), path);
+    write_plot(c, p, c.px(1000), c.px(600), path);
 }
 
 void s_curve_geometry(const Context& c, const std::string& path) {
@@ -43,7 +45,7 @@ void s_curve_geometry(const Context& c, const std::string& path) {
     const Theme& th = c.opt.theme;
     Plot p;
     p.theme = th;
-    p.title = "The turnaround S-curve: two tangent arcs, r\u2081 = 2 r\u2082";
+    p.title = fmt::format("The turnaround S-curve: two tangent arcs, r\u2081 = {:g} r\u2082", sc.path.arc_ratio);
     p.note = fmt::format("Pitch {:g} m, turning space radius {:g} m: r\u2081 = {:.6f} m, r\u2082 = {:.6f} m, length {:.6f} m",
                          d.pitch, sc.path.turn_radius, d.r1, d.r2, d.length);
     p.x_label = "x (m)";
@@ -86,7 +88,7 @@ void s_curve_geometry(const Context& c, const std::string& path) {
     point(d.c2, "C\u2082", th.head, 6, -6);
     point({0, 0}, "O", soft, 6, 16);
     p.x_min = -R - 1.2, p.x_max = R + 1.2, p.y_min = -R - 1.2, p.y_max = R + 1.2;
-    write_plot(p, c.px(900), c.px(860), path);
+    write_plot(c, p, c.px(900), c.px(860), path);
 }
 
 void speed_ratio_on_turnaround(const Context& c, const std::string& path) {
@@ -101,8 +103,10 @@ void speed_ratio_on_turnaround(const Context& c, const std::string& path) {
     p.y_label = "max handle speed / head speed";
     p.legend = Plot::Legend::none;
     PlotSeries s{"", {}, series_colour(p.theme, 0), 1.6};
+    // Q4's window, -100 s to 100 s, sampled every 0.125 s.
+    const TimeSpan span = shown_span(sim, -100.0, 100.0, std::nullopt);
     for (int i = 0; i <= 1600; ++i) {
-        const double t = -100.0 + 200.0 * i / 1600;
+        const double t = span.from + (span.to - span.from) * i / 1600;
         s.points.push_back({t, speed_ratio_at(sim.path(), sc.bench, sim.head_arc(t)).ratio});
     }
     p.series.push_back(s);
@@ -110,7 +114,7 @@ void speed_ratio_on_turnaround(const Context& c, const std::string& path) {
     p.ref_lines.push_back({true, d.length / sc.head_speed, "", p.theme.s_curve});
     // The marked maximum is Q5's, refined between samples (the curve's own peak sits a little
     // lower: the samples straddle it).
-    const MaxSpeed q5 = max_head_speed(sc, 2.0);
+    const MaxSpeed q5 = max_head_speed(sc, 2.0, span.from, span.to);
     const bool run = q5.tied.size() > 1 && q5.tied.back() - q5.tied.front() + 1 == static_cast<int>(q5.tied.size());
     const std::string who = run                    ? fmt::format("handles {}-{}", q5.tied.front(), q5.tied.back())
                             : q5.tied.size() > 1 ? fmt::format("handles {}", fmt::join(q5.tied, ", "))
@@ -118,9 +122,9 @@ void speed_ratio_on_turnaround(const Context& c, const std::string& path) {
     p.labels.push_back({{q5.time, q5.ratio}, fmt::format("max {:.6f} at t = {:.6f} s", q5.ratio, q5.time),
                         p.theme.text, 10, 4, 13, true});
     p.y_max = 1.0 + 1.12 * (q5.ratio - 1.0);
-    p.note = fmt::format("Sampled every 0.125 s; the maximum refined ({}). Head speed limit: 2 / {:.6f} = {:.6f} m/s.",
-                         who, q5.ratio, q5.max_head_speed);
-    write_plot(p, c.px(1000), c.px(600), path);
+    p.note = fmt::format("Sampled every {:g} s; the maximum refined ({}). Head speed limit: 2 / {:.6f} = {:.6f} m/s.",
+                         (span.to - span.from) / 1600, who, q5.ratio, q5.max_head_speed);
+    write_plot(c, p, c.px(1000), c.px(600), path);
 }
 
 }  // namespace dragon::fig

@@ -4,8 +4,11 @@
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "dragon/atomic_file.hpp"
 #include "dragon/cairo_handles.hpp"
+#include "render/paint.hpp"
 #include "render/png8.hpp"
 
 namespace dragon::fig {
@@ -52,6 +55,13 @@ Label label(Vec2 at, std::string text, Rgba colour, double size_px, double dx, d
     return l;
 }
 
+std::string seconds(double t) {
+    std::string s = fmt::format("{:.3f}", t);
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+    return s;
+}
+
 Rgba with_alpha(Rgba c, double a) {
     c.a = a;
     return c;
@@ -70,12 +80,12 @@ void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, const std::vecto
         cairo_set_source_rgb(cr, theme.background.r, theme.background.g, theme.background.b);
         cairo_paint(cr);
         if (i < captions.size()) {
-            // Captions outside the picture, at a size that reads whatever the panel's size.
+            // Captions outside the picture, at a size that reads whatever the panel's size, on
+            // one line: smaller rather than cut at the panel's edge.
             cairo_set_source_rgb(cr, theme.text.r, theme.text.g, theme.text.b);
-            cairo_select_font_face(cr, theme.font.c_str(), CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-            cairo_set_font_size(cr, 0.6 * caption_h);
-            cairo_move_to(cr, 0.3 * caption_h, 0.72 * caption_h);
-            cairo_show_text(cr, captions[i].c_str());
+            const render::FittedText t =
+                render::fit_text(cr, theme.font, 0.6 * caption_h, captions[i], pw - 0.6 * caption_h, false, 1);
+            render::text(cr, theme.font, t.size, 0.3 * caption_h, 0.72 * caption_h, captions[i]);
         }
         cairo_translate(cr, 0, caption_h);
         cairo_rectangle(cr, 0, 0, pw, ph);
@@ -90,7 +100,33 @@ void write_png(cairo_surface_t* surface, const std::string& path, int colours) {
     render::write_png8(surface, path, colours);
 }
 
-void write_plot(const Plot& plot, int w, int h, const std::string& path) {
+void Context::tell(const std::string& text) const {
+    if (opt.on_text && !text.empty()) opt.on_text(figure, text);
+}
+
+void Context::tell(const Scene& s) const {
+    if (!s.show_text) return;
+    tell(s.annotation);
+    for (const Label& l : s.labels) tell(l.text);
+}
+
+void Context::tell(const Plot& p) const {
+    for (const std::string* t : {&p.title, &p.note, &p.x_label, &p.y_label}) tell(*t);
+    for (const PlotSeries& s : p.series) tell(s.label);
+    for (const PlotRefLine& r : p.ref_lines) tell(r.label);
+    for (const PlotLabel& l : p.labels) tell(l.text);
+}
+
+void write_scene(const Context& c, const Scene& scene, int w, int h, const std::string& path, int colours) {
+    c.tell(scene);
+    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
+    cairo::Context cr = cairo::make_context(surface.get());
+    draw(cr.get(), scene, w, h);
+    write_png(surface.get(), path, colours);
+}
+
+void write_plot(const Context& c, const Plot& plot, int w, int h, const std::string& path) {
+    c.tell(plot);
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
     cairo::Context cr = cairo::make_context(surface.get());
     draw_plot(cr.get(), plot, 0, 0, w, h);

@@ -1,6 +1,7 @@
 // Shared pieces of the gallery's figures: sizes, labels, a contact witness, panel layout.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -10,13 +11,22 @@
 #include "dragon/figures.hpp"
 #include "dragon/plot.hpp"
 #include "dragon/render.hpp"
+#include "render/figure_answers.hpp"
 
 namespace dragon::fig {
 
 struct Context {
     Scenario base;     // the coil-in scenario (path kind spiral)
     FigureOptions opt;
+    std::shared_ptr<Answers> answers;  // the scenario's answers, shared by the run's figures
+    std::string figure;                // the file stem of the figure being made
     int px(double gallery_px) const { return static_cast<int>(gallery_px * opt.scale + 0.5) & ~1; }
+    // Remarks about the contest's paper only for the contest's own scenario.
+    bool contest() const { return is_contest_default(base); }
+    // Hands every text a figure puts on its picture to opt.on_text (a no-op without one).
+    void tell(const std::string& text) const;
+    void tell(const Scene& scene) const;
+    void tell(const Plot& plot) const;
 };
 
 // The point where two touching (or nearly touching) rectangles meet: the corner of either one
@@ -30,6 +40,8 @@ double distance_to(const Rect& r, Vec2 p);
 Polyline circle(Vec2 centre, double radius, Rgba colour, double width_px = 1.2, bool dashed = false);
 Label label(Vec2 at, std::string text, Rgba colour, double size_px = 13, double dx = 6, double dy = -6);
 Rgba with_alpha(Rgba c, double a);
+// A time for a caption: up to three decimals, no trailing zeros ("300", "412.474").
+std::string seconds(double t);
 
 // Several scenes side by side: cols x rows panels of equal size, each drawn by draw() under a
 // caption strip caption_h pixels tall.
@@ -38,7 +50,9 @@ void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, const std::vecto
 // A palette PNG: 64 colours suit flat drawings; speed-coloured pictures need 256 so the colour
 // map stays smooth.
 void write_png(cairo_surface_t* surface, const std::string& path, int colours = 64);
-void write_plot(const Plot& plot, int w, int h, const std::string& path);
+// One scene or one plot as the whole picture, its texts told first.
+void write_scene(const Context& c, const Scene& scene, int w, int h, const std::string& path, int colours = 64);
+void write_plot(const Context& c, const Plot& plot, int w, int h, const std::string& path);
 
 // The figures (one file each).
 void link_geometry(const Context& c, const std::string& path);

@@ -18,7 +18,7 @@ struct Entry {
 const std::vector<Entry>& entries() {
     static const std::vector<Entry> list{
         {{"fig1_link_geometry", "One link: the chord equation's roots and the rigid-link speed relation"}, fig::link_geometry},
-        {{"fig2_dragon_300s", "The whole dragon at 300 s, coloured by exact speed"}, fig::dragon_at_300s},
+        {{"fig2_dragon_300s", "The whole dragon at 300 s (at the first contact if sooner), coloured by exact speed"}, fig::dragon_at_300s},
         {{"fig3_broad_phase", "The broad phase around the head at the first contact"}, fig::broad_phase},
         {{"fig4_first_contact", "The touching rectangles at the first contact, zoomed in"}, fig::first_contact_zoom},
         {{"fig5_pitch_states", "Contact or clearance at six pitches around the true minimum"}, fig::pitch_states},
@@ -54,11 +54,13 @@ void write_figures(const std::string& dir, const Scenario& base, const FigureOpt
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) throw InputError(fmt::format("cannot create the figure folder {}: {}", dir, ec.message()));
-    fig::Context ctx{base, opt};
+    fig::Context ctx{base, opt, nullptr, ""};
     ctx.base.path.kind = PathKind::spiral;
+    ctx.answers = std::make_shared<fig::Answers>(ctx.base);
     for (const auto& e : entries()) {
         if (!opt.only.empty() && std::find(opt.only.begin(), opt.only.end(), e.info.name) == opt.only.end()) continue;
         const std::string path = (std::filesystem::path(dir) / (e.info.name + ".png")).string();
+        ctx.figure = e.info.name;
         e.make(ctx, path);
         if (done) done(e.info, path);
     }

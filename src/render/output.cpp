@@ -31,6 +31,7 @@ void check(cairo_status_t st, const char* what) {
 
 void render_png(const Scene& scene, int w, int h, const std::string& path) {
     check_size(w, h);
+    require_drawable(scene, w, h);
     AtomicFile out(path);
     // Opaque pictures: RGB24 writes a PNG without an alpha channel (a quarter smaller).
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
@@ -48,6 +49,7 @@ void render_png(const Scene& scene, int w, int h, const std::string& path) {
 
 void render_svg(const Scene& scene, int w, int h, const std::string& path) {
     check_size(w, h);
+    require_drawable(scene, w, h);
     AtomicFile out(path);
     {
         // SVG user units are points; one pixel of the layout is one unit.

@@ -64,6 +64,53 @@ double text_width(cairo_t* cr, const std::string& font, double size_px, const st
     return e.x_advance;
 }
 
+namespace {
+// Words joined greedily into lines no wider than `room` (a word wider than that gets a line
+// of its own).
+std::vector<std::string> wrap(cairo_t* cr, const std::string& font, double size, const std::string& s, double room,
+                              bool bold) {
+    std::vector<std::string> lines;
+    std::string line;
+    for (std::size_t at = 0; at < s.size();) {
+        const std::size_t space = s.find(' ', at);
+        const std::string word = s.substr(at, space == std::string::npos ? std::string::npos : space - at);
+        at = space == std::string::npos ? s.size() : space + 1;
+        if (word.empty()) continue;
+        const std::string longer = line.empty() ? word : line + " " + word;
+        if (line.empty() || text_width(cr, font, size, longer, bold) <= room) {
+            line = longer;
+        } else {
+            lines.push_back(line);
+            line = word;
+        }
+    }
+    if (!line.empty()) lines.push_back(line);
+    return lines;
+}
+
+bool fits(cairo_t* cr, const std::string& font, double size, const std::vector<std::string>& lines, double room,
+          bool bold) {
+    return std::all_of(lines.begin(), lines.end(),
+                       [&](const std::string& l) { return text_width(cr, font, size, l, bold) <= room; });
+}
+}  // namespace
+
+FittedText fit_text(cairo_t* cr, const std::string& font, double size, const std::string& s, double room, bool bold,
+                    int max_lines) {
+    if (s.empty()) return {size, {}};
+    // One line, down to 88 % of the size: reads better than a second line holding one word.
+    for (double k = 1.0; k >= 0.875; k -= 0.025)
+        if (fits(cr, font, k * size, {s}, room, bold)) return {k * size, {s}};
+    // Wrapped, then smaller until every line fits (a fifth of the size at the least).
+    double k = 1.0;
+    std::vector<std::string> lines = wrap(cr, font, size, s, room, bold);
+    while (k > 0.2 && (static_cast<int>(lines.size()) > max_lines || !fits(cr, font, k * size, lines, room, bold))) {
+        k *= 0.95;
+        lines = wrap(cr, font, k * size, s, room, bold);
+    }
+    return {k * size, lines};
+}
+
 double nice_floor(double x) {
     const double p = std::pow(10.0, std::floor(std::log10(x)));
     const double m = x / p;
@@ -94,6 +141,15 @@ std::string format_tick(double v, int decimals) {
     // A proper minus sign reads better than a hyphen.
     if (!s.empty() && s[0] == '-') s = "\u2212" + s.substr(1);
     return s;
+}
+
+std::string scale_label(double metres) {
+    if (metres >= 1e4) return fmt::format("{:g} km", metres / 1e3);
+    if (metres >= 1) return format_tick(metres, 0) + " m";
+    if (metres >= 1e-2) return format_tick(metres, 2) + " m";
+    if (metres >= 1e-3) return fmt::format("{:g} mm", metres * 1e3);
+    if (metres >= 1e-6) return fmt::format("{:g} \u00b5m", metres * 1e6);
+    return fmt::format("{:g} nm", metres * 1e9);
 }
 
 }  // namespace dragon::render

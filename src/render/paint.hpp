@@ -25,6 +25,17 @@ void halo_text(cairo_t* cr, const std::string& font, double size_px, double x, d
 double text_width(cairo_t* cr, const std::string& font, double size_px, const std::string& s,
                   bool bold = false);
 
+// Text set to fit `room` px across: on one line at `size` if it fits, or a little smaller;
+// else wrapped at spaces into at most `max_lines` lines, smaller still if need be. Measured,
+// not scaled: hinting rounds every glyph's advance, so a width does not shrink in proportion
+// to the size.
+struct FittedText {
+    double size = 0.0;
+    std::vector<std::string> lines;
+};
+FittedText fit_text(cairo_t* cr, const std::string& font, double size_px, const std::string& s, double room,
+                    bool bold = false, int max_lines = 2);
+
 // Tick positions for [lo, hi]: about `target` steps of 1, 2 or 5 times a power of ten.
 struct Ticks {
     double step = 1.0;
@@ -35,5 +46,8 @@ Ticks nice_ticks(double lo, double hi, int target = 5);
 // The largest 1, 2 or 5 times a power of ten not above x (> 0).
 double nice_floor(double x);
 std::string format_tick(double v, int decimals);
+// A scale bar's length (1, 2 or 5 times a power of ten, m) in the unit that reads best:
+// "0.50 m", "2 m", "5 mm", "200 µm", "20 km".
+std::string scale_label(double metres);
 
 }  // namespace dragon::render

@@ -174,9 +174,20 @@ void draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, double 
     double ytw = 0;
     for (double v : yt0.values)
         ytw = std::max(ytw, render::text_width(cr, th.font, 12 * u, render::format_tick(v, yt0.decimals)));
-    const double top = y + (p.title.empty() ? 16 : p.note.empty() ? 40 : 58) * u;
-    Frame2 f{x + ytw + (p.y_label.empty() ? 18 : 40) * u, top, x + w - 20 * u,
-             y + h - (p.x_label.empty() ? 30 : 52) * u, xr, yr};
+    // Title and note run across the frame's width, wrapped or set smaller rather than clipped;
+    // the frame starts below however many lines they take.
+    const double x0 = x + ytw + (p.y_label.empty() ? 18 : 40) * u, x1 = x + w - 20 * u;
+    const render::FittedText title = render::fit_text(cr, th.font, 15 * u, p.title, x1 - x0, true);
+    const render::FittedText note = render::fit_text(cr, th.font, 12 * u, p.note, x1 - x0);
+    std::vector<double> title_y, note_y;  // baselines
+    double line_y = y + 24 * u;
+    for (std::size_t i = 0; i < title.lines.size(); ++i, line_y += 1.3 * title.size) title_y.push_back(line_y);
+    if (!title.lines.empty()) line_y += 20 * u - 1.3 * title.size;
+    for (std::size_t i = 0; i < note.lines.size(); ++i, line_y += 1.35 * note.size) note_y.push_back(line_y);
+    const double top = title_y.empty() && note_y.empty() ? y + 16 * u
+                       : note_y.empty()                  ? title_y.back() + 16 * u
+                                                         : note_y.back() + 14 * u;
+    Frame2 f{x0, top, x1, y + h - (p.x_label.empty() ? 30 : 52) * u, xr, yr};
     if (p.equal_aspect) equalise(f);
     const auto xt = render::nice_ticks(f.xr.lo, f.xr.hi, std::max(3, static_cast<int>((f.x1 - f.x0) / (90 * u))));
     const auto yt = render::nice_ticks(f.yr.lo, f.yr.hi, std::max(3, static_cast<int>((f.y1 - f.y0) / (60 * u))));
@@ -251,21 +262,12 @@ void draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, double 
         render::text(cr, th.font, 13 * u, 0, 0, p.y_label, 0.5);
         cairo_restore(cr);
     }
-    // Title and note run from the frame's left edge to the image's; a long one is set smaller
-    // rather than clipped.
-    const double room = x + w - 8 * u - f.x0;
-    auto fitted = [&](double size, const std::string& s, bool bold) {
-        const double wide = render::text_width(cr, th.font, size, s, bold);
-        return wide > room ? size * room / wide : size;
-    };
-    if (!p.title.empty())
-        render::text(cr, th.font, fitted(15 * u, p.title, true), f.x0, y + 24 * u, p.title, 0.0, 0.0, true);
-    if (!p.note.empty()) {
-        Rgba soft = th.text;
-        soft.a = 0.75;
-        set_colour(cr, soft);
-        render::text(cr, th.font, fitted(12 * u, p.note, false), f.x0, y + 44 * u, p.note);
-    }
+    for (std::size_t i = 0; i < title.lines.size(); ++i)
+        render::text(cr, th.font, title.size, x0, title_y[i], title.lines[i], 0.0, 0.0, true);
+    Rgba soft = th.text;
+    soft.a = 0.75;
+    set_colour(cr, soft);
+    for (std::size_t i = 0; i < note.lines.size(); ++i) render::text(cr, th.font, note.size, x0, note_y[i], note.lines[i]);
     draw_legend(cr, p, f, u);
     cairo_restore(cr);
 }

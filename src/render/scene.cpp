@@ -49,7 +49,12 @@ void place_camera(Scene& scene, const Frame& frame, const Camera& cam) {
         scene.view_centre = frame.handles.empty() ? Vec2{} : frame.handles.front().pos;
         break;
     }
-    if (!(cam.extent > 0)) throw InputError(fmt::format("camera extent {} m must be positive", cam.extent));
+    if (!(cam.extent >= kMinViewExtent && cam.extent <= kMaxViewExtent))
+        throw InputError(fmt::format("camera extent {} m is not allowed: use {:g}..{:g} m", cam.extent, kMinViewExtent,
+                                     kMaxViewExtent));
+    if (!(std::max(std::abs(scene.view_centre.x), std::abs(scene.view_centre.y)) <= kMaxViewCentre))
+        throw InputError(fmt::format("camera centre ({}, {}) is not allowed: each coordinate must be finite and "
+                                     "within {:g} m", scene.view_centre.x, scene.view_centre.y, kMaxViewCentre));
     scene.view_width = scene.view_height = cam.extent;
 }
 
@@ -93,14 +98,16 @@ void add_guides(Scene& scene, const Simulation& sim, const Frame& frame) {
     // centre on the plain spiral), so the guide frames the dragon.
     const double s0 = tail_arc - 2 * std::numbers::pi * norm(tail) - 1.0;
     const double s1 = std::isinf(path.s_max()) ? frame.head_arc + chain_length : path.s_max();
-    const double view = std::max(scene.view_width, scene.view_height);
     const PathKind kind = sim.scenario().path.kind;
     for (auto [a, b] : visible_ranges(path, spec, frame, s0, s1)) {
-        for (auto& run : render::path_beziers(path, a, b, view / 40.0)) {
+        for (auto [p, q] : render::split_by_piece(path, a, b)) {
+            const int piece = path.at_arc(0.5 * (p + q)).place.piece;
             Scene::Guide g;
-            g.beziers = std::move(run.beziers);
-            g.colour = guide_colour(scene.theme, kind, run.piece);
-            g.width_px = (kind == PathKind::turnaround && run.piece >= 1 && run.piece <= 2) ? 2.0 : 1.0;
+            g.path = sim.shared_path();
+            g.s0 = p;
+            g.s1 = q;
+            g.colour = guide_colour(scene.theme, kind, piece);
+            g.width_px = (kind == PathKind::turnaround && piece >= 1 && piece <= 2) ? 2.0 : 1.0;
             scene.guides.push_back(std::move(g));
         }
     }

@@ -14,6 +14,9 @@ namespace {
 
 // Far beyond any sensible film (an hour at 240 fps is 864 000); stops a typo from running for days.
 constexpr int max_frames = 1'000'000;
+// A held last moment is drawn once, but every second of it is still encoded (about 700 frames/s
+// of a still 720p picture here): an hour is the longest still a film can sensibly end on.
+constexpr double max_hold = 3600.0;  // s
 // Moments the fixed view is fitted to: the dragon coils in or out monotonically, so a few
 // spread samples bound it; the margin covers the motion in between.
 constexpr int camera_samples = 9;
@@ -75,8 +78,8 @@ Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions 
     if (!(clip.speedup > 0.0) || !std::isfinite(clip.speedup))
         throw InputError(fmt::format("--speedup {} is not allowed: use simulated seconds per video second above 0",
                                      clip.speedup));
-    if (!(clip.hold >= 0.0) || !std::isfinite(clip.hold))
-        throw InputError(fmt::format("--hold {} is not allowed: use seconds >= 0", clip.hold));
+    if (!(clip.hold >= 0.0 && clip.hold <= max_hold))
+        throw InputError(fmt::format("--hold {} is not allowed: use 0..{:g} seconds", clip.hold, max_hold));
 
     const double steps = (clip.to - clip.from) * fps / clip.speedup;
     const double hold_frames = std::round(clip.hold * fps);
@@ -114,8 +117,13 @@ EncodeStats write_video(const Animation& anim, const std::string& path, VideoOpt
                         const ProgressFn& progress) {
     opt.fps = anim.fps();
     const int w = opt.width, h = opt.height;
+    // A followed view is furthest from the origin at an end of the clip (the head coils in,
+    // or turns and coils out): the ends show whether every frame can be drawn.
+    require_drawable(anim.scene_at(0), w, h);
+    require_drawable(anim.scene_at(anim.distinct_frames() - 1), w, h);
     return encode_frames(path, opt, anim.frame_count(),
-                         [&](int index, cairo_t* cr) { anim.paint(index, cr, w, h); }, progress);
+                         [&](int index, cairo_t* cr) { anim.paint(index, cr, w, h); }, progress,
+                         anim.distinct_frames());
 }
 
 }  // namespace dragon

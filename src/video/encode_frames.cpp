@@ -94,8 +94,11 @@ private:
 }  // namespace
 
 EncodeStats encode_frames(const std::string& path, const VideoOptions& opt, int frame_count,
-                          const PaintFn& paint, const ProgressFn& progress) {
+                          const PaintFn& paint, const ProgressFn& progress, int painted) {
     if (frame_count < 1) throw InputError(fmt::format("a video needs at least one frame, not {}", frame_count));
+    if (painted < 0 || painted > frame_count)
+        throw std::invalid_argument(fmt::format("encode_frames: {} painted frames of {}", painted, frame_count));
+    if (painted == 0) painted = frame_count;
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -109,7 +112,7 @@ EncodeStats encode_frames(const std::string& path, const VideoOptions& opt, int 
     if (writer.format() == VideoFormat::gif) {
         // One palette for the whole clip, from its start, middle and end (the end is where a
         // collision's highlight colour shows up).
-        for (int index : {0, frame_count / 2, frame_count - 1}) {
+        for (int index : {0, painted / 2, painted - 1}) {
             paint_into(ring.surface(0), index, paint);
             writer.add_palette_sample(cairo_image_surface_get_data(ring.surface(0)),
                                       cairo_image_surface_get_stride(ring.surface(0)));
@@ -122,7 +125,7 @@ EncodeStats encode_frames(const std::string& path, const VideoOptions& opt, int 
     for (int w = 0; w < workers; ++w) {
         renderers.emplace_back([&] {
             try {
-                while (const std::optional<int> index = ring.claim(frame_count)) {
+                while (const std::optional<int> index = ring.claim(painted)) {
                     paint_into(ring.surface(*index), *index, paint);
                     ring.mark_drawn(*index);
                 }
@@ -138,12 +141,19 @@ EncodeStats encode_frames(const std::string& path, const VideoOptions& opt, int 
     };
 
     try {
-        for (int index = 0; index < frame_count; ++index) {
+        for (int index = 0; index < painted; ++index) {
             if (!ring.wait_drawn(index)) break;  // a render thread failed
             writer.write(ring.surface(index));
             ring.mark_encoded(index);
             if (progress) progress({index + 1, frame_count, elapsed()});
         }
+        // The held frames: no render thread claims past `painted`, so nothing draws over the
+        // last painted frame's slot; the writer sends its converted picture again.
+        if (writer.frames_written() == painted)
+            for (int index = painted; index < frame_count; ++index) {
+                writer.repeat();
+                if (progress) progress({index + 1, frame_count, elapsed()});
+            }
     } catch (...) {
         ring.stop();
         join_all();

@@ -165,6 +165,17 @@ struct VideoWriter::Impl {
         drain();
     }
 
+    void repeat() {
+        if (finished) throw std::logic_error("VideoWriter::repeat after finish");
+        if (next_pts == 0) throw std::logic_error("VideoWriter::repeat before the first frame");
+        // The encoder may still hold the frame's buffers: writable means a copy of the same
+        // picture if so.
+        av::check(av_frame_make_writable(frame.get()), "cannot reuse the video frame");
+        frame->pts = next_pts++;
+        av::check(avcodec_send_frame(enc.get(), frame.get()), "cannot encode a frame");
+        drain();
+    }
+
     // Moves every packet the encoder has ready to the muxer.
     void drain() {
         for (;;) {
@@ -217,6 +228,8 @@ void VideoWriter::write(cairo_surface_t* surface) {
     cairo_surface_flush(surface);
     write(cairo_image_surface_get_data(surface), cairo_image_surface_get_stride(surface));
 }
+
+void VideoWriter::repeat() { impl_->repeat(); }
 
 void VideoWriter::finish() { impl_->finish(); }
 

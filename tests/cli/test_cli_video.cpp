@@ -101,7 +101,13 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCase{"fps_tiny", "--size 64x48 --fps 1e-9 --to 1", "a.mp4",
                               "--fps 1e-09 is not allowed: use a rate from 0.01 to 240"},
                       BadCase{"speedup_tiny", "--size 64x48 --speedup 1e-300 --to 1", "a.mp4",
-                              "the film would have 3e+301 frames"}),
+                              "the film would have 3e+301 frames"},
+                      BadCase{"hold_over_an_hour", ok + " --hold 3601", "a.mp4", "--hold 3601"},
+                      BadCase{"zoom_nan", ok + " --zoom nan", "a.mp4", "--zoom nan"},
+                      BadCase{"zoom_huge", ok + " --zoom 1e300", "a.mp4", "--zoom 1e+300"},
+                      // 8.8 m out, doubles cannot resolve pixels of 1e-9 / 720 m.
+                      BadCase{"zoom_too_fine", "--size 1280x720 --fps 5 --to 1 --follow-head --zoom 1e-9", "a.mp4",
+                              "--zoom 1e-09"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(CliVideo, TheSlowestRateWorksForEveryFormat) {

@@ -1,8 +1,11 @@
 // dragon render and dragon figures end to end: files written whole, bad input exits 2 and
 // leaves nothing behind.
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -20,6 +23,22 @@ int run(const std::string& args) {
     const std::string cmd = std::string(DRAGON_EXE) + " " + args + " > /dev/null 2>&1";
     const int status = std::system(cmd.c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+struct Captured {
+    int code;
+    std::string err;
+};
+
+// Runs dragon with stderr captured (stdout dropped).
+Captured run_err(const std::string& args) {
+    const fs::path err = dragon_test::scratch_dir() / "stderr.txt";
+    const std::string cmd = std::string(DRAGON_EXE) + " " + args + " > /dev/null 2>" + err.string();
+    const int status = std::system(cmd.c_str());
+    std::ifstream in(err);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ss.str()};
 }
 
 class CliRender : public ::testing::Test {
@@ -71,6 +90,42 @@ TEST_F(CliRender, FiguresListAndOne) {
     // Every figure has its own file name.
     std::set<std::string> names;
     for (const auto& f : dragon::figure_list()) EXPECT_TRUE(names.insert(f.name).second) << f.name;
+}
+
+// Views no one can mean: refused with exit code 2 and one line naming the value, no file.
+TEST_F(CliRender, ViewsNoOneCanMeanAreRefused) {
+    const auto out = dir / "view.png";
+    struct Case {
+        std::string args, word;
+    };
+    for (const Case& c : {Case{"--time 0 --zoom nan", "--zoom nan"}, Case{"--time 0 --zoom inf", "--zoom inf"},
+                          Case{"--time 0 --zoom 0", "--zoom 0"}, Case{"--time 0 --zoom 1e-300", "--zoom 1e-300"},
+                          Case{"--time 0 --zoom 1e300", "--zoom 1e+300"},
+                          Case{"--time 0 --centre nan 0 --zoom 1", "--centre nan"},
+                          Case{"--time 0 --centre 0 inf --zoom 1", "--centre 0 inf"},
+                          Case{"--time 0 --centre 1e300 0 --zoom 1", "--centre 1e+300"},
+                          // The head is 8.8 m out: a pixel of 1e-9 / 1600 m is finer than doubles
+                          // resolve there (1.4e-8 m is the narrowest view).
+                          Case{"--time 0 --zoom 1e-9", "use --zoom 1.41e-08"},
+                          Case{"--collision --zoom 1e-9", "--zoom 1e-09"}}) {
+        fs::remove(out);
+        const Captured r = run_err("render " + c.args + " -o " + out.string());
+        EXPECT_EQ(r.code, 2) << c.args << ": " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << ": " << r.err;
+        EXPECT_NE(r.err.find(c.word), std::string::npos) << c.args << ": " << r.err;
+        EXPECT_FALSE(fs::exists(out)) << c.args;
+    }
+}
+
+// Close-ups of any size are drawn, at the cost of what they show (the whole path flattened at
+// the view's scale took 97 s and 9.8 GB for --zoom 1e-4, and never ended for smaller ones).
+TEST_F(CliRender, CloseUpsDownToTheNarrowestViewAreDrawn) {
+    for (const std::string zoom : {"1e-3", "1e-4", "1e-6", "2e-8"}) {
+        const auto png = dir / ("zoom" + zoom + ".png");
+        EXPECT_EQ(run("render --time 0 --size 400x400 --zoom " + zoom + " -o " + png.string()), 0) << zoom;
+        EXPECT_TRUE(fs::exists(png)) << zoom;
+    }
+    EXPECT_EQ(run("render --collision --size 400x400 --zoom 1e-6 -o " + (dir / "contact.svg").string()), 0);
 }
 
 }  // namespace

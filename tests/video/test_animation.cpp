@@ -1,5 +1,6 @@
 // Films of a simulation: frame timing, the clip's checks, and a decoded frame against the
 // renderer's own picture of that moment.
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -63,6 +64,58 @@ TEST(Animation, RejectsEmptyRangesAndTimesOffThePath) {
     EXPECT_THROW(Animation(sim, Clip{0.0, 1.0, 0.0}, 30, SceneOptions{}), InputError);
     EXPECT_THROW(Animation(sim, Clip{0.0, 1.0}, 0.0, SceneOptions{}), InputError);
     EXPECT_THROW(Animation(sim, Clip{0.0, 1.0, 1.0, -1.0}, 30, SceneOptions{}), InputError);
+    EXPECT_THROW(Animation(sim, Clip{0.0, 1.0, 1.0, 3601.0}, 30, SceneOptions{}), InputError);
+    EXPECT_THROW(Animation(sim, Clip{0.0, 1.0, 1.0, std::nan("")}, 30, SceneOptions{}), InputError);
+}
+
+// A held last moment is drawn once: the encoder gets that picture again for every held frame,
+// and the film still lasts its whole length and ends on it.
+TEST(Animation, HeldLastMomentIsDrawnOnce) {
+    const Simulation sim(Scenario{});
+    const Clip clip{100.0, 101.0, 1.0, 3.0};
+    const double fps = 10;
+    const Animation anim(sim, clip, fps, SceneOptions{});
+    const int moving = 11;  // 100, 100.1, ..., 101 s
+    const int held = 30;    // 3 s at 10 fps
+    ASSERT_EQ(anim.distinct_frames(), moving);
+    ASSERT_EQ(anim.frame_count(), moving + held);
+
+    VideoOptions opt;  // H.264 at crf 20, as in DecodedH264FrameMatchesTheRenderersPicture
+    opt.width = 640;
+    opt.height = 360;
+    opt.fps = fps;
+    std::atomic<int> painted{0};
+    const std::string path = scratch("held.mp4");
+    const EncodeStats stats = encode_frames(
+        path, opt, anim.frame_count(),
+        [&](int index, cairo_t* cr) {
+            ++painted;
+            anim.paint(index, cr, opt.width, opt.height);
+        },
+        {}, anim.distinct_frames());
+    EXPECT_EQ(painted.load(), moving);
+    EXPECT_EQ(stats.frames, moving + held);
+
+    const test::DecodedVideo v = test::decode_video(path, moving + held - 1);
+    EXPECT_EQ(v.frames, moving + held);
+    EXPECT_NEAR(v.duration, (moving + held) / fps, 0.5 / fps);
+    EXPECT_GT(test::psnr(v.kept, rendered(anim, moving - 1, opt.width, opt.height)), 30.0);
+}
+
+// write_video holds the last moment the same way (for every format: GIF's palette too).
+TEST(Animation, WriteVideoHoldsTheLastMoment) {
+    const Simulation sim(Scenario{});
+    const Animation anim(sim, Clip{10.0, 11.0, 1.0, 2.0}, 5, SceneOptions{});
+    VideoOptions opt;
+    opt.width = 96;
+    opt.height = 64;
+    for (const char* name : {"held.mp4", "held.gif"}) {
+        const std::string path = scratch(name);
+        write_video(anim, path, opt);
+        const test::DecodedVideo v = test::decode_video(path, anim.frame_count() - 1);
+        EXPECT_EQ(v.frames, anim.frame_count()) << name;
+        EXPECT_GT(test::psnr(v.kept, rendered(anim, anim.distinct_frames() - 1, opt.width, opt.height)), 25.0) << name;
+    }
 }
 
 TEST(Animation, CollisionIsMarkedOnlyAtTheEnd) {
