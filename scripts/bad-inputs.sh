@@ -167,6 +167,21 @@ row simulate --hole-offset 1.0999 --body-length 2.2 --to 0
 row simulate --path turnaround --from 1e7 --to 1e7
 row simulate --bench-count 1000000 --body-length 20 --to 0
 
+header "The end of the valid motion: refused past it, reported where it cuts a search short (tests/cli/test_cli_valid_motion.cpp)"
+row simulate --from 432.9 --to 432.93 --step 0.01
+row simulate --path turnaround --arc-ratio 3 --from 15.1477 --to 15.1478 --step 0.00001
+row render --time 433 -o x.png
+row video --from 430 --to 433 --size 64x48 -o x.mp4
+row_last collide --path turnaround --arc-ratio 3 --from -100 --to 100
+row_last collide --pitch 0.7
+row collide --from 100 --to 50
+row collide --to inf
+row_last max-speed --arc-ratio 3
+row max-speed --head-length 6 --arc-ratio 1
+row_last turnaround --arc-ratio 3
+row min-pitch --lo 0.46 --hi 0.5
+row min-pitch --lo 0.36 --hi 0.4
+
 header "Extreme but valid scenarios (tests/cli/test_cli_extremes.cpp)"
 row_last simulate --bench-count 1 --to 3
 row collide --bench-count 1
