@@ -72,7 +72,7 @@ struct MinPitch {
     // motion ends first (it is infeasible for that reason, not for a collision); none if no
     // run was cut short.
     std::optional<PitchJam> jam;
-    std::string guarantee;                 // how the search avoids stepping over a window
+    double tolerance;                      // each change of feasibility located to this, m
 };
 // The run of the head to the boundary at one pitch: its first contact, else the end of the
 // valid motion if that comes before the boundary. Feasible when neither happens.

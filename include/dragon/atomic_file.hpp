@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "dragon/errors.hpp"
+
 namespace dragon {
 
 class AtomicFile {
@@ -26,7 +28,7 @@ public:
     void commit();
     // The error for a failed write: "cannot write '<target>': <reason>". It names the target,
     // never the hidden temporary file the user did not choose.
-    std::runtime_error write_error(const std::string& reason) const;
+    FileError write_error(const std::string& reason) const;
 
 private:
     friend void commit_together(const std::vector<AtomicFile*>& files);

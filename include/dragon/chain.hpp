@@ -62,7 +62,7 @@ public:
     // The latest time the head stays on the path (the spiral's centre; +inf on the turnaround).
     double end_time() const;
 
-    // Throws InputError (naming `what`, e.g. "--to") unless the head is on the path at time t
+    // Throws InputError (its field `what`, e.g. "time range end") unless the head is on the path at time t
     // and the whole chain within kMaxReach of the spiral's centre (the turnaround path is endless,
     // but far out its points lose precision).
     void require_on_path(double t, const char* what) const;
@@ -103,5 +103,13 @@ private:
 
 // One line for a message: what happens to which handle at the jam.
 std::string describe(const Jam& j);
+
+// A moment past the end of the valid motion (Simulation::require_valid): the field and time,
+// and the jam, for an application to word (allowed() words it in the library's terms).
+struct PastTheValidMotion : InputError {
+    PastTheValidMotion(const char* field, double t, const Jam& j);
+    Jam jam;
+    bool ahead;  // the jam lies ahead of t = 0 (the motion valid until it), else behind
+};
 
 }  // namespace dragon

@@ -5,13 +5,9 @@
 #include <stdexcept>
 #include <string>
 
-namespace dragon {
+#include "dragon/errors.hpp"
 
-// Bad user input (a value out of range, a malformed file, an unknown flag).
-// The CLI turns it into one line on stderr and exit code 2.
-struct InputError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
+namespace dragon {
 
 struct BenchSpec {
     int bench_count = 223;       // benches in the chain; bench 1 is the head

@@ -117,7 +117,6 @@ struct TurnaroundStudy {
     std::vector<TurnStudyRow> by_ratio;
     std::vector<TurnStudyRow> by_entry;
     double ratio_spread;    // largest minus smallest S-curve length over by_ratio, m
-    std::string conclusion; // one paragraph answering Q4's question from the numbers
 };
 // The default study: ratios 0.25..10 and entry radii from the boundary in to half of it, each
 // row with whether this dragon can follow it.

@@ -70,14 +70,14 @@ void register_collide(CLI::App& app, Registry& reg) {
         double to = 0.0;
         std::optional<Jam> jam;  // the end of the valid motion, if it cuts the search short
         if (opt->to) {
-            const Simulation::Span span = sim.clip_to_valid(opt->from, *opt->to, "--from", "--to");
+            const Simulation::Span span = sim.clip_to_valid(opt->from, *opt->to, "time range start", "time range end");
             to = span.to;
             jam = span.jam;
         } else {
             const ValidRange valid = sim.valid_range();
             if (!std::isfinite(valid.to))
                 throw InputError("--to is needed here: on the turnaround path the dragon's motion never ends");
-            sim.require_valid(opt->from, "--from");
+            sim.require_valid(opt->from, "time range start");
             to = valid.to;
             jam = valid.after;
             if (!(to > opt->from))

@@ -8,6 +8,7 @@
 #include "cli/progress.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
+#include "cli/wording.hpp"
 #include "cli/status.hpp"
 #include "dragon/analyses.hpp"
 
@@ -56,7 +57,7 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
                         {"grid", m.grid},
                         {"intervals", intervals},
                         {"jam", jam},
-                        {"guarantee", m.guarantee}});
+                        {"guarantee", min_pitch_guarantee(m)}});
             return 0;
         }
         // The pitch is resolved to tol::pitch (1e-9 m): ten decimals show it.
@@ -75,7 +76,7 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
         if (m.jam)
             fmt::print("at pitch {} m (the largest of the scan where this happens) the dragon cannot follow the spiral "
                        "to radius {} m at all: {}\n", m.jam->pitch, s.path.turn_radius, jam_sentence(m.jam->jam));
-        fmt::print("search: {}\n", m.guarantee);
+        fmt::print("search: {}\n", min_pitch_guarantee(m));
         return 0;
     };
 }

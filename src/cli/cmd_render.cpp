@@ -31,8 +31,8 @@ struct RenderOptions {
 // can follow it, the turnaround from -100 s to 100 s (the contest's window, cut the same way).
 Contact find_contact(const Simulation& sim) {
     const bool turn = sim.scenario().path.kind == PathKind::turnaround;
-    const Simulation::Span span = turn ? sim.clip_to_valid(-100.0, 100.0, "--from", "--to")
-                                       : sim.clip_to_valid(0.0, sim.end_time(), "--from", "--to");
+    const Simulation::Span span = turn ? sim.clip_to_valid(-100.0, 100.0, "time range start", "time range end")
+                                       : sim.clip_to_valid(0.0, sim.end_time(), "time range start", "time range end");
     auto c = first_contact_after(sim, span.from, span.to);
     if (!c)
         throw InputError(fmt::format("--collision: no two benches touch between {} s and {} s on this scenario{}; "
@@ -75,7 +75,7 @@ void register_render(CLI::App& app, Registry& reg) {
                                             c.bench_a, c.bench_b);
             if (opt->look.zoom()) so.camera = Camera::at(at, *opt->look.zoom());
         } else {
-            sim.require_valid(*opt->time, "--time");
+            sim.require_valid(*opt->time, "time");
             frame = sim.frame(*opt->time);
         }
         const Scene scene = make_scene(sim, frame, so);

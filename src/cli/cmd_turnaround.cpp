@@ -10,6 +10,7 @@
 #include "cli/progress.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
+#include "cli/wording.hpp"
 #include "cli/status.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/tables.hpp"
@@ -70,7 +71,7 @@ void print_answer_json(const TurnaroundStudy& st, const std::optional<RunClearan
                    {"length_vs_ratio", rows_json(st.by_ratio)},
                    {"length_vs_entry_radius", rows_json(st.by_entry)},
                    {"ratio_spread", st.ratio_spread},
-                   {"conclusion", st.conclusion}};
+                   {"conclusion", turnaround_conclusion(st)}};
     if (clear) {
         // No pair within the scan's cutoff: the distance is only a lower bound, with no pair or time.
         const bool near = clear->bench_a > 0;
@@ -116,7 +117,7 @@ void print_text(const TurnaroundStudy& st, const std::optional<RunClearance>& cl
     for (const TurnStudyRow& r : st.by_entry)
         fmt::print("  {:>12.4f}  {:>14.6f}  {:>22.6f}  {}\n", r.entry_radius, r.s_curve_length, r.inside_length,
                    followable(r));
-    fmt::print("\n  {}\n", st.conclusion);
+    fmt::print("\n  {}\n", turnaround_conclusion(st));
 
     if (!clear) return;
     const std::string range = fmt::format("t = {}..{} s", format_time(clear->from),

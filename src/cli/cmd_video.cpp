@@ -89,7 +89,7 @@ End resolve_to(const std::string& to, const Simulation& sim, double from) {
         // As far as the dragon can follow its path; where that never ends (the turnaround
         // path, followed for ever), an hour ahead, far past any run the contest asks about.
         constexpr double endless_search = 3600.0;  // s
-        sim.require_valid(from, "--from");
+        sim.require_valid(from, "time range start");
         const double end = sim.valid_end();
         const double until = std::isfinite(end) ? end : from + endless_search;
         const std::optional<Contact> c = first_contact_after(sim, from, until);

@@ -10,6 +10,7 @@
 
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
+#include "cli/error_words.hpp"
 #include "cli/kill_cleanup.hpp"
 #include "dragon/scenario.hpp"
 
@@ -52,9 +53,11 @@ int main(int argc, char** argv) {
         const std::string name = app.get_subcommands().front()->get_name();
         code = reg.at(name)();
     } catch (const InputError& e) {
-        std::fprintf(stderr, "dragon: error: %s\n", e.what());
+        std::fprintf(stderr, "dragon: error: %s\n", cli::word(e).c_str());
         return 2;
     } catch (const std::exception& e) {
+        // A SolverError (no answer reached) or a FileError (a file that cannot be written) are
+        // failures of the run, not of its input: exit 1.
         // A write to stdout that failed (fmt::print throws then): the one cause worth naming.
         const auto* sys = dynamic_cast<const std::system_error*>(&e);
         if (std::ferror(stdout)) return stdout_failed(sys ? sys->code().value() : errno);

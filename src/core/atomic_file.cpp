@@ -91,9 +91,7 @@ void AtomicFile::commit() {
     live_slot_ = -1;
 }
 
-std::runtime_error AtomicFile::write_error(const std::string& reason) const {
-    return std::runtime_error(fmt::format("cannot write '{}': {}", target_, reason));
-}
+FileError AtomicFile::write_error(const std::string& reason) const { return FileError(target_, "write", reason); }
 
 void commit_together(const std::vector<AtomicFile*>& files) {
     struct Backup {

@@ -31,7 +31,7 @@ void solve_chain_front(const Path& path, const BenchSpec& spec, double head_arc,
         const double d = spec.link_after(i);
         const std::optional<Located> next = path.behind(cur, d);
         if (!next) {
-            throw InputError(fmt::format("handle {} does not fit on the path behind handle {} "
+            throw SolverError(fmt::format("handle {} does not fit on the path behind handle {} "
                                          "(link {} m): the chain runs off the path's end",
                                          i + 1, i, d));
         }
@@ -86,24 +86,21 @@ double Simulation::end_time() const {
 }
 
 void Simulation::require_on_path(double t, const char* what) const {
-    if (!std::isfinite(t))
-        throw InputError(fmt::format("{} {} is not allowed: it must be a finite time in seconds", what, t));
+    if (!std::isfinite(t)) throw InputError(what, error_value(t), "it must be a finite time in seconds");
     const double s = head_arc(t);
     if (s > path_->s_max()) {
-        throw InputError(fmt::format("{} {} is not allowed: the head reaches the end of the path "
-                                     "(the spiral's centre) at t = {:.6f} s", what, t, end_time()));
+        throw InputError(what, error_value(t),
+                         fmt::format("the head reaches the end of the path (the spiral's centre) at t = {:.6f} s",
+                                     end_time()));
     }
-    if (s < path_->s_min()) {
-        throw InputError(fmt::format("{} {} is not allowed: it puts the head before the start of the path",
-                                     what, t));
-    }
+    if (s < path_->s_min()) throw InputError(what, error_value(t), "it puts the head before the start of the path");
     // On the plain spiral -s is the head's arc length from the centre; on the turnaround path
     // it is at most the entry's plus |s|. The tail is a chain's length farther out at most.
     const double reach = entry_length_ + std::abs(s) + scenario_.bench.chain_length();
     if (!(reach <= kMaxReach)) {
-        throw InputError(fmt::format("{} {} is not allowed: it puts the chain {:.8g} m along the path from "
-                                     "the spiral's centre; at most {:.0f} m keeps positions to 1e-8 m",
-                                     what, t, reach, kMaxReach));
+        throw InputError(what, error_value(t),
+                         fmt::format("it puts the chain {:.8g} m along the path from the spiral's centre; at most "
+                                     "{:.0f} m keeps positions to 1e-8 m", reach, kMaxReach));
     }
 }
 
@@ -155,8 +152,7 @@ void Simulation::require_valid(double t, const char* what) const {
     // before, and that is the limit worth naming.
     const double on_path = std::clamp(t, -std::numeric_limits<double>::max(), end_time());
     if (const std::optional<Jam> j = jam_before(on_path)) {
-        throw InputError(fmt::format("{} {} is not allowed: the dragon can follow its path only {} t = {:.9f} s, "
-                                     "where {}", what, t, t >= 0.0 ? "until" : "from", j->time, describe(*j)));
+        throw PastTheValidMotion(what, t, *j);
     }
     require_on_path(t, what);
 }
@@ -176,6 +172,13 @@ Simulation::Span Simulation::clip_to_valid(double t0, double t1, const char* fro
     require_on_path(span.to, to_what);
     return span;
 }
+
+PastTheValidMotion::PastTheValidMotion(const char* field, double t, const Jam& j)
+    : InputError(field, error_value(t),
+                 fmt::format("the dragon can follow its path only {} t = {:.9f} s, where {}", t >= 0.0 ? "until" : "from",
+                             j.time, describe(j))),
+      jam(j),
+      ahead(t >= 0.0) {}
 
 std::string describe(const Jam& j) {
     const int h = j.handle;

@@ -26,8 +26,9 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
                   Workspace& ws) {
     Approach a{{INFINITY, 0, 0, {}, {}}, INFINITY, 0.0, false, INFINITY};
     if (f.benches.size() < 3) return a;
-    const std::vector<BenchMotion> motion = bench_motions(f);
     // The search's own scratch (a search evaluates hundreds of frames).
+    bench_motions_into(f, ws.motion);
+    const std::vector<BenchMotion>& motion = ws.motion;
     std::vector<double>& gaps = ws.gaps;
     std::vector<double>& half_diagonals = ws.half_diagonals;
     std::vector<Radial>& radial = ws.radial;

@@ -92,6 +92,7 @@ struct Approach {
 // the per-pair arrays of an evaluation. One per worker of a search, never shared.
 struct Workspace {
     BroadPhase broad;
+    std::vector<BenchMotion> motion;
     std::vector<double> gaps, half_diagonals;
     std::vector<Radial> radial;
     struct Candidate {

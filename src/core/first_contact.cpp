@@ -134,8 +134,8 @@ std::optional<Contact> first_contact(const Simulation& sim, double t_from, doubl
                                      const ContactSearchOptions& options) {
     // Both ends within the valid motion (the range between them then is too); searched here,
     // once, so that the frames below find it known.
-    sim.require_valid(t_from, "--from");
-    sim.require_valid(t_to, "--to");
+    sim.require_valid(t_from, "time range start");
+    sim.require_valid(t_to, "time range end");
     InlineExecutor in_order;
     Executor& ex = options.on_step ? in_order : executor_or_default(options.executor);
     auto never = [] { return false; };

@@ -79,10 +79,9 @@ SpeedRatio speed_ratio_at(const Path& path, const BenchSpec& spec, double head_a
 
 MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, double t1) {
     if (!std::isfinite(limit) || limit <= 0.0)
-        throw InputError(fmt::format("--limit {} is not allowed: it must be a finite speed > 0 m/s", limit));
+        throw InputError("speed limit", error_value(limit), "it must be a finite speed > 0 m/s");
     if (!std::isfinite(t0) || !std::isfinite(t1) || t1 <= t0)
-        throw InputError(fmt::format("time range {}..{} is not allowed: it must be finite and "
-                                     "non-empty", t0, t1));
+        throw InputError("time range", fmt::format("{}..{} s", t0, t1), "it must be finite and non-empty");
     Scenario s = scenario;
     s.path.kind = PathKind::turnaround;
     const Simulation sim(s);
@@ -90,7 +89,7 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, doubl
     RatioProbe probe(path, s.bench);
     MaxSpeed out{};
     // Only the valid motion counts: past its end the speeds are those of a teleporting dragon.
-    const Simulation::Span span = sim.clip_to_valid(t0, t1, "--from", "--to");
+    const Simulation::Span span = sim.clip_to_valid(t0, t1, "time range start", "time range end");
     out.jam = span.jam;
     out.from = t0 = span.from;
     out.to = t1 = span.to;
@@ -114,10 +113,10 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, doubl
     if (s.bench.bench_count > 1) shortest = std::min(shortest, s.bench.link_length(2));
     const double samples = std::ceil((s1 - s0) * kSamplesPerLink / shortest);
     if (!(samples * s.bench.handle_count() <= kMaxHandlePositions))
-        throw InputError(fmt::format(
-            "--from {} --to {} at head speed {} m/s take the head over {:.6g} m of the path: the scan "
-            "would solve {:.3g} chains of {} handles (at most {:.0e} handle positions); narrow --from/--to",
-            t0, t1, v, s1 - s0, samples, s.bench.handle_count(), kMaxHandlePositions));
+        throw InputError("time range", fmt::format("{}..{} s", t0, t1),
+                         fmt::format("at head speed {} m/s it takes the head over {:.6g} m of the path, and the scan "
+                                     "would solve {:.3g} chains of {} handles (at most {:.0e} handle positions); "
+                                     "narrow it", v, s1 - s0, samples, s.bench.handle_count(), kMaxHandlePositions));
     const int steps = std::max(2, static_cast<int>(samples));
     const double ds = (s1 - s0) / steps;
 

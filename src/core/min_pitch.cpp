@@ -189,18 +189,18 @@ MinPitch min_pitch(const Scenario& s, double lo, double hi, const MinPitchOption
     validate(s, value::bench | value::head_speed | value::start_turn | value::turn_radius);
     constexpr double kMaxPitch = 1e3;  // m, the largest pitch validate() allows
     if (!(hi <= kMaxPitch))
-        throw InputError(fmt::format("--hi {} is not allowed: a pitch is at most {} m", hi, kMaxPitch));
+        throw InputError("pitch search range end", error_value(hi), fmt::format("a pitch is at most {} m", kMaxPitch));
     if (!(lo > s.bench.width) || !(hi > lo))
         throw InputError(fmt::format("pitch search range [{}, {}] is not allowed: it needs width {} < lo < hi",
                                      lo, hi, s.bench.width));
     if (!(grid > 0.0) || !std::isfinite(grid))
-        throw InputError(fmt::format("--grid {} is not allowed: give a pitch spacing above 0, in m", grid));
+        throw InputError("pitch grid", error_value(grid), "give a pitch spacing above 0, in m");
     // Grid steps: a range that is a whole number of spacings up to rounding gets that number.
     const double steps = std::ceil((hi - lo) / grid * (1.0 - 1e-12));
     if (steps > kMaxPitchGridSteps)
-        throw InputError(fmt::format("--grid {} is not allowed: it makes {:.3g} grid steps over [{}, {}]; at most {} "
-                                     "(a grid of at least {:.2g} m)", grid, steps, lo, hi,
-                                     kMaxPitchGridSteps, (hi - lo) / kMaxPitchGridSteps));
+        throw InputError("pitch grid", error_value(grid),
+                         fmt::format("it makes {:.3g} grid steps over [{}, {}]; at most {} (a grid of at least {:.2g} m)",
+                                     steps, lo, hi, kMaxPitchGridSteps, (hi - lo) / kMaxPitchGridSteps));
     MinPitch out{};
     out.search_lo = lo;
     out.search_hi = hi;
@@ -234,15 +234,7 @@ MinPitch min_pitch(const Scenario& s, double lo, double hi, const MinPitchOption
     }
     for (size_t k = pitches.size(); k-- > 0;)
         if (ok[k].jam) { out.jam = PitchJam{pitches[k], *ok[k].jam}; break; }
-    out.guarantee = fmt::format(
-        "feasibility evaluated on a {:.4g} m pitch grid over [{}, {}], each change narrowed to {:.0e} m "
-        "(where the touching pair's closest approach is zero, confirmed by full runs on either side); "
-        "each evaluation checks the whole run to the boundary with time steps no contact can fit in "
-        "(clearance over a bound on its rate of change, second order near grazing passes), and that the "
-        "dragon can follow the spiral that far (a run whose motion ends first is infeasible); a window "
-        "narrower than the grid spacing could still lie unseen between two grid points of the same state "
-        "(a finer --grid rules out narrower ones)",
-        (hi - lo) / n, lo, hi, tol::pitch);
+    out.tolerance = tol::pitch;
     return out;
 }
 

@@ -6,7 +6,13 @@
 namespace dragon {
 
 std::vector<BenchMotion> bench_motions(const Frame& f) {
-    std::vector<BenchMotion> out(f.benches.size());
+    std::vector<BenchMotion> out;
+    bench_motions_into(f, out);
+    return out;
+}
+
+void bench_motions_into(const Frame& f, std::vector<BenchMotion>& out) {
+    out.resize(f.benches.size());
     for (size_t k = 0; k < f.benches.size(); ++k) {
         const Handle& front = f.handles[k];
         const Handle& rear = f.handles[k + 1];
@@ -15,7 +21,6 @@ std::vector<BenchMotion> bench_motions(const Frame& f) {
         const double len2 = dot(d, d);
         out[k] = {f.benches[k].centre, 0.5 * (vf + vr), cross(d, vf - vr) / len2};
     }
-    return out;
 }
 
 double separation_rate_bound(const Rect& a, const BenchMotion& ma, const BenchMotion& mb, double gap) {

@@ -18,6 +18,8 @@ struct BenchMotion {
 // From the handles' exact velocities (speed times unit tangent). Rigidity makes both ends'
 // velocity components along the bench equal, so the across-components give the turn rate.
 std::vector<BenchMotion> bench_motions(const Frame& f);
+// The same into `out`, reusing its storage.
+void bench_motions_into(const Frame& f, std::vector<BenchMotion>& out);
 
 // An upper bound on |d/dt separation(a, b)| now: the largest speed of a point of a relative to
 // the body of b. The relative velocity field is affine, so its largest norm over a rectangle is

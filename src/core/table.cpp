@@ -13,10 +13,10 @@ namespace dragon {
 void simulate_table_into(const Simulation& sim, double t0, double t1, double dt, std::vector<Frame>& frames,
                          Executor* executor) {
     if (!std::isfinite(dt) || dt <= 0.0)
-        throw InputError(fmt::format("--step {} is not allowed: it must be a finite number > 0", dt));
-    sim.require_valid(t0, "--from");
-    sim.require_valid(t1, "--to");
-    if (t1 < t0) throw InputError(fmt::format("--to {} is before --from {}: the time range is empty", t1, t0));
+        throw InputError("time step", error_value(dt), "it must be a finite number > 0");
+    sim.require_valid(t0, "time range start");
+    sim.require_valid(t1, "time range end");
+    if (t1 < t0) throw InputError("time range end", error_value(t1), fmt::format("it is before the start, {}", t0));
     // Count by index, so no drift. The last time is t1 when the grid lands on it up to rounding
     // (k dt within 1e-9 of the range, relative: 0.1 * 3 is not 0.3 in binary), else the last grid
     // time before it: --step 0.3 --to 1 ends at 0.9.
@@ -25,9 +25,9 @@ void simulate_table_into(const Simulation& sim, double t0, double t1, double dt,
     const double count = std::floor(span + slack) + 1.0;
     const double rows = count * sim.scenario().bench.handle_count();
     if (rows > 5e6)
-        throw InputError(fmt::format("--step {} gives {:.3g} frames x {} handles: at most 5,000,000 rows; "
-                                     "use a larger step or a shorter range", dt, count,
-                                     sim.scenario().bench.handle_count()));
+        throw InputError("time step", error_value(dt),
+                         fmt::format("it gives {:.3g} frames x {} handles, and at most 5,000,000 rows fit; use a larger "
+                                     "step or a shorter range", count, sim.scenario().bench.handle_count()));
     frames.resize(static_cast<size_t>(count));
     // Frames are independent: the executor's workers take them one at a time. Small tables
     // stay on this thread (starting the workers would cost more than the frames).

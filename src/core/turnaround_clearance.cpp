@@ -46,15 +46,14 @@ double fastest_point(const Frame& f) {
 
 RunClearance min_clearance(const Scenario& scenario, double t0, double t1, const WorkProgress& progress) {
     if (!std::isfinite(t0) || !std::isfinite(t1) || t1 <= t0)
-        throw InputError(fmt::format("time range {}..{} is not allowed: it must be finite and "
-                                     "non-empty", t0, t1));
+        throw InputError("time range", fmt::format("{}..{} s", t0, t1), "it must be finite and non-empty");
     Scenario s = scenario;
     s.path.kind = PathKind::turnaround;
     const Simulation sim(s);
     Frame f;
     RunClearance out{};
     // Past the end of the valid motion the benches teleport: only the valid part is looked at.
-    const Simulation::Span span = sim.clip_to_valid(t0, t1, "--from", "--to");
+    const Simulation::Span span = sim.clip_to_valid(t0, t1, "time range start", "time range end");
     out.from = t0 = span.from;
     out.to = t1 = span.to;
     out.jam = span.jam;
@@ -66,11 +65,11 @@ RunClearance min_clearance(const Scenario& scenario, double t0, double t1, const
 
     const double samples = std::ceil((t1 - t0) * s.head_speed / kScanTravel);
     if (!(samples * s.bench.bench_count <= kMaxBenchChecks))
-        throw InputError(fmt::format(
-            "--from {} --to {} at head speed {} m/s take the head over {:.6g} m of the path: the clearance "
-            "scan would check {:.3g} chains of {} benches (at most {:.0e} bench checks); narrow --from/--to "
-            "or use --no-clearance", t0, t1, s.head_speed, (t1 - t0) * s.head_speed, samples,
-            s.bench.bench_count, kMaxBenchChecks));
+        throw InputError("clearance time range", fmt::format("{}..{} s", t0, t1),
+                         fmt::format("at head speed {} m/s it takes the head over {:.6g} m of the path, and the "
+                                     "clearance scan would check {:.3g} chains of {} benches (at most {:.0e} bench "
+                                     "checks); narrow it, or leave the clearance out", s.head_speed,
+                                     (t1 - t0) * s.head_speed, samples, s.bench.bench_count, kMaxBenchChecks));
     const int steps = std::max(2, static_cast<int>(samples));
     const double dt = (t1 - t0) / steps;
     out.scan_step = dt;

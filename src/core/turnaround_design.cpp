@@ -14,7 +14,7 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 void require_positive(const char* name, double v) {
     if (!std::isfinite(v) || v <= 0.0)
-        throw InputError(fmt::format("{} = {} is not allowed: it must be a finite number > 0", name, v));
+        throw InputError(name, error_value(v), "it must be a finite number > 0");
 }
 
 // x wrapped into (0, 2 pi]: a sweep angle of an arc.

@@ -40,8 +40,8 @@ std::vector<TurnStudyRow> length_vs_entry_radius(double pitch, double turn_radiu
     std::vector<TurnStudyRow> rows;
     for (double r : entry_radii) {
         if (r > turn_radius)
-            throw InputError(fmt::format("entry radius {} is not allowed: the turn must start inside "
-                                         "the turning space (radius {})", r, turn_radius));
+            throw InputError("entry radius", error_value(r),
+                             fmt::format("the turn must start inside the turning space (radius {})", turn_radius));
         rows.push_back(row_of(design_s_curve(pitch, r, ratio), turn_radius));
     }
     return rows;
@@ -56,20 +56,6 @@ void followability(std::vector<TurnStudyRow>& rows, double pitch, const BenchSpe
     }
 }
 
-namespace {
-
-// "0.5, 1, 1.5 and 2" (the ratios a dragon can follow, as written in the conclusion).
-std::string ratio_list(const std::vector<TurnStudyRow>& rows, bool followable) {
-    std::vector<std::string> items;
-    for (const TurnStudyRow& r : rows)
-        if (r.followable() == followable) items.push_back(fmt::format("{:g}", r.ratio));
-    std::string out;
-    for (size_t i = 0; i < items.size(); ++i)
-        out += (i == 0 ? "" : i + 1 == items.size() ? " and " : ", ") + items[i];
-    return out;
-}
-
-}  // namespace
 
 TurnaroundStudy study_turnaround(const Scenario& s) {
     const double pitch = s.path.turn_pitch, radius = s.path.turn_radius, ratio = s.path.arc_ratio;
@@ -92,41 +78,6 @@ TurnaroundStudy study_turnaround(const Scenario& s) {
                                             return a.s_curve_length < b.s_curve_length;
                                         });
     st.ratio_spread = hi->s_curve_length - lo->s_curve_length;
-    const TurnStudyRow& inner = st.by_entry.back();
-    st.conclusion = fmt::format(
-        "Not by changing the ratio: tangent at A and B, r1 + r2 = R sqrt(1 + theta^2) / theta and "
-        "both arcs sweep the same angle whatever r1 / r2 is, so the S-curve is {:.6f} m for every "
-        "ratio (spread {:.1e} m over ratios {:g}..{:g}).",
-        st.design.length, st.ratio_spread, st.by_ratio.front().ratio, st.by_ratio.back().ratio);
-    // Which of these turns can this dragon follow at all?
-    const std::string usable = ratio_list(st.by_ratio, true), unusable = ratio_list(st.by_ratio, false);
-    if (unusable.empty())
-        st.conclusion += fmt::format(" This dragon can follow it at every ratio studied.");
-    else if (usable.empty())
-        st.conclusion += " This dragon can follow it at none of them: at every ratio a handle would have to "
-                         "jump on the way through.";
-    else
-        st.conclusion += fmt::format(" This dragon can follow it only at ratios {}; at {} a handle would have to "
-                                     "jump on the way through (an arc too tight for its benches).", usable, unusable);
-    if (st.design_jam)
-        st.conclusion += fmt::format(" At the chosen ratio {:g} the dragon's motion ends at t = {:.6f} s: {}.", ratio,
-                                     st.design_jam->time, describe(*st.design_jam));
-    st.conclusion += fmt::format(
-        " The S-curve gets shorter only if the turn starts deeper inside the turning space ({:.6f} m "
-        "from radius {:.4g} m), but then the head coils in and out further along the spirals: its whole "
-        "way inside the turning space grows from {:.6f} m to {:.6f} m.",
-        inner.s_curve_length, inner.entry_radius, st.by_entry.front().inside_length, inner.inside_length);
-    // The outermost entry radius this dragon cannot follow, if any (the boundary's own row is
-    // the chosen design, said above).
-    for (size_t k = 1; k < st.by_entry.size(); ++k) {
-        if (!st.by_entry[k].followable()) {
-            st.conclusion += fmt::format(" Nor can this dragon follow those from entry radius {:.4g} m inward.",
-                                         st.by_entry[k].entry_radius);
-            break;
-        }
-    }
-    st.conclusion += " With the turn tangent at the boundary the curve is as short as it gets for the way "
-                     "through the turning space.";
     return st;
 }
 

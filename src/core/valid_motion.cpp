@@ -61,7 +61,7 @@ public:
 
     void evaluate(double s, Evaluation& e) {
         if (++stats_.evaluations > kMaxEvaluations)
-            throw std::logic_error("jam search: no end within its allowance of evaluations (a broken bound)");
+            throw SolverError("jam search: no end within its allowance of evaluations (a broken bound)");
         e.s = s;
         solve_chain(path_, spec_, s, 1.0, e.frame);
         const size_t links = e.frame.benches.size();

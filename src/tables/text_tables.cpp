@@ -22,7 +22,7 @@ using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
 
 void check_digits(int digits) {
     if (digits < 0 || digits > kMaxDigits)
-        throw InputError(fmt::format("--digits {} is not allowed: use 0 to {} decimals", digits, kMaxDigits));
+        throw InputError("decimals", std::to_string(digits), fmt::format("use 0 to {} decimals", kMaxDigits));
 }
 
 // Writes the buffer out and empties it; false (errno set) if the stream took less.
@@ -71,7 +71,7 @@ void write_csv(const std::vector<Frame>& frames, const std::string& path, int di
 void print_csv(const std::vector<Frame>& frames, std::FILE* out, int digits) {
     check_digits(digits);
     if (!put_csv(frames, out, digits))
-        throw std::runtime_error(fmt::format("cannot write the table: {}", std::strerror(errno)));
+        throw FileError("standard output", "write the table to", std::strerror(errno));
 }
 
 void write_json(const std::vector<Frame>& frames, const std::string& path, int digits) {

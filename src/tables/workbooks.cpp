@@ -79,7 +79,7 @@ WorkbookPtr new_workbook(const AtomicFile& out, bool row_by_row = false) {
 
 lxw_worksheet* add_sheet(lxw_workbook* wb, const char* name) {
     lxw_worksheet* ws = workbook_add_worksheet(wb, name);
-    if (!ws) throw std::runtime_error(fmt::format("cannot add sheet '{}'", name));
+    if (!ws) throw SolverError(fmt::format("libxlsxwriter cannot add the sheet '{}'", name));
     return ws;
 }
 

@@ -71,8 +71,8 @@ Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions 
         throw InputError(fmt::format("time range --from {} --to {} is empty: --to must be after --from",
                                      clip.from, clip.to));
     // A film never shows a moment past the end of the valid motion (nor past the path's end).
-    sim.require_valid(clip.from, "--from");
-    sim.require_valid(clip.to, "--to");
+    sim.require_valid(clip.from, "time range start");
+    sim.require_valid(clip.to, "time range end");
     if (!(fps > 0.0) || !std::isfinite(fps))
         throw InputError(fmt::format("--fps {} is not allowed: use a rate above 0", fps));
     if (!(clip.speedup > 0.0) || !std::isfinite(clip.speedup))

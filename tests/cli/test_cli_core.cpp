@@ -145,7 +145,7 @@ INSTANTIATE_TEST_SUITE_P(
         // Out of range, named by the flag that put it there; messages in a few digits.
         BadCase{"min-pitch --hi 1e308", "--hi 1e+308 is not allowed: a pitch is at most 1000 m"},
         BadCase{"min-pitch --grid 1e-300", "it makes 2e+299 grid steps"},
-        BadCase{"simulate --step 1e-300 -o @OUT", "--step 1e-300 gives 3e+302 frames"},
+        BadCase{"simulate --step 1e-300 -o @OUT", "--step 1e-300 is not allowed: it gives 3e+302 frames"},
         BadCase{"simulate --path turnaround --from 1e300 --to 1e300 -o @OUT", "puts the chain 1e+300 m along"},
         BadCase{"simulate --hole-offset nan -o @OUT", "hole offset = nan is not allowed: it must be a finite number >= 0"},
         BadCase{"simulate --digits 18 -o @OUT", "--digits 18 is not allowed: use 0 to 17"},

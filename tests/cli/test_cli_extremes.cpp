@@ -138,7 +138,7 @@ TEST(Extremes, FastHead) {
     expect_works(turn, "turnaround --speed 100");
     EXPECT_TRUE(has(turn.out, "smallest 0.279043 m, benches 1 and 17 at t = 0.301599 s")) << turn.out;
     // 2,000 km of path to scan: refused rather than minutes of work.
-    refused("max-speed --speed 1e4", "narrow --from/--to");
+    refused("max-speed --speed 1e4", "--from/--to -100..100 s is not allowed: at head speed 10000 m/s");
 }
 
 TEST(Extremes, PastTheCollision) {

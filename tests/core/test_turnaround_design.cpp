@@ -139,6 +139,8 @@ TEST(TurnaroundStudy, RatioDoesNotMatterAndAnInnerStartTrades) {
         EXPECT_GT(st.by_entry[i].inside_length, st.by_entry[i - 1].inside_length);
     }
     EXPECT_NEAR(st.by_entry.front().inside_length, st.design.length, 1e-9);
-    EXPECT_FALSE(st.conclusion.empty());
+    // The contest's dragon follows its own design (ratio 2, entry at the boundary) all the way.
+    EXPECT_FALSE(st.design_jam.has_value());
+    EXPECT_TRUE(st.by_entry.front().followable());
     EXPECT_THROW(length_vs_entry_radius(1.7, 4.5, 2.0, {5.0}), InputError);
 }

@@ -1,0 +1,51 @@
+// The library's errors, as data. Each says what went wrong in the library's own terms; an
+// application words it for its users (the dragon CLI names its flags) and maps its kind to an
+// exit code. Three kinds:
+//  - InputError: a value the caller gave cannot be used (out of range, malformed). It carries the
+//    value's name in the library (`field`: "time range end", "pitch grid"), the value as given,
+//    and what is allowed, or only a sentence when no single value is at fault.
+//  - SolverError: the computation could not reach an answer; not the caller's input.
+//  - FileError: a file could not be read or written: which, and why.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace dragon {
+
+class InputError : public std::runtime_error {
+public:
+    // A sentence only (a malformed file, a rule between several values).
+    explicit InputError(const std::string& message);
+    // One value: what() is "{field} {value} is not allowed: {allowed}".
+    InputError(std::string field, std::string value, std::string allowed);
+
+    const std::string& field() const { return field_; }  // empty for a sentence-only error
+    const std::string& value() const { return value_; }
+    const std::string& allowed() const { return allowed_; }
+
+private:
+    std::string field_, value_, allowed_;
+};
+
+class SolverError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class FileError : public std::runtime_error {
+public:
+    // what() is "cannot {action} '{path}': {reason}".
+    FileError(std::string path, std::string action, std::string reason);
+    const std::string& path() const { return path_; }
+    const std::string& reason() const { return reason_; }
+
+private:
+    std::string path_, reason_;
+};
+
+// A number as an error shows it: as short as it reads back exactly (5000, 0.1, 1e+300), never
+// three hundred digits.
+std::string error_value(double v);
+
+}  // namespace dragon

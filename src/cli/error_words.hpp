@@ -1,0 +1,16 @@
+// The library's errors worded for the command line: a value the library names in its own terms
+// ("time range end") is named by the flag that set it ("--to"), and each kind of error maps to
+// its exit code.
+#pragma once
+
+#include <string>
+
+#include "dragon/errors.hpp"
+
+namespace dragon::cli {
+
+// The one line an InputError becomes: "--to 5000 is not allowed: ..." when its field is a flag's
+// value, else the library's own sentence.
+std::string word(const InputError& e);
+
+}  // namespace dragon::cli
