@@ -48,6 +48,11 @@ struct ContactSearchOptions {
 std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to,
                                      const ContactSearchOptions& options = {});
 
+// When the head front handle reaches the turning space's boundary coiling in: on the plain
+// spiral the moment its radius is the scenario's turn_radius (before t = 0 if it starts inside),
+// on the turnaround path t = 0 (the turn starts there).
+double boundary_time(const Simulation& sim);
+
 // Q3: smallest pitch for which the head reaches the turning-space boundary without a collision.
 struct PitchInterval {
     double lo, hi;

@@ -1,6 +1,15 @@
 // Named tolerances and limits, each with its unit and the reason for its value.
 #pragma once
 
+#include <numbers>
+
+namespace dragon {
+
+// One turn, rad.
+inline constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+}  // namespace dragon
+
 namespace dragon::tol {
 
 // Root finders on a path parameter stop when a Newton step is below this (radians of theta or of
@@ -20,6 +29,13 @@ inline constexpr double arc_relative = 1e-15;
 // bug into an error instead of a hang.
 inline constexpr int max_newton = 60;
 inline constexpr int max_march = 400;
+
+// Searches that step by a bound on how fast a margin can shrink (first contact, the end of the
+// valid motion, the turnaround's clearance scan) assume the true rate over a step stays below
+// this many times the rate measured at its start; the next evaluation checks the assumption
+// where it can. The benches' velocities change by far less over one step of at most 2 m of head
+// travel.
+inline constexpr double rate_safety = 2.0;
 
 // Time to which first contacts are refined, s (the issue asks for 1e-9 s).
 inline constexpr double contact_time = 1e-10;

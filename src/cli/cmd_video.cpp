@@ -67,16 +67,6 @@ std::pair<int, int> parse_size(const std::string& s) {
     return {w, h};
 }
 
-// When the head front handle reaches the turning-space boundary: on the spiral, radius
-// turn_radius; on the turnaround path the turn begins there at t = 0 by definition.
-double boundary_time(const Simulation& sim) {
-    const Scenario& s = sim.scenario();
-    if (s.path.kind == PathKind::turnaround) return 0.0;
-    const auto& spiral = static_cast<const Spiral&>(sim.path());
-    const double theta = s.path.turn_radius / spiral.b();
-    return (-spiral.length_to(theta) - sim.start_arc()) / s.head_speed;
-}
-
 struct End {
     double time;
     std::optional<CollisionMark> mark;

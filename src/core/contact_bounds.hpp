@@ -5,12 +5,12 @@
 
 #include "core/motion.hpp"
 #include "dragon/chain.hpp"
+#include "dragon/constants.hpp"
 
 namespace dragon::contact {
 
-// Slack on the closing-speed bounds over one step: steps assume the true rate stays below
-// kSafety times the one measured now, which the next evaluation checks.
-inline constexpr double kSafety = 2.0;
+// Slack on the closing-speed bounds over one step (tol::rate_safety).
+inline constexpr double kSafety = tol::rate_safety;
 
 // The benches' distances from the origin and how fast they change (motion.hpp), for every bench.
 void radial_extents(const Frame& f, const std::vector<BenchMotion>& motion, std::vector<Radial>& out);

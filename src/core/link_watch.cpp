@@ -1,8 +1,10 @@
 #include "core/link_watch.hpp"
+#include "core/golden_section.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 #include <vector>
 
 namespace dragon::jam {
@@ -16,23 +18,6 @@ constexpr int kMaxSamples = 400;
 // Golden-section search on the health stops at this bracket of the piece's parameter: the
 // health is then known to ~1e-24 m near a smooth minimum and to ~1e-12 m at a kink.
 constexpr double kHealthArc = 1e-12;
-
-double golden_min(double a, double b, const auto& f, double& at) {
-    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-    double x1 = b - g * (b - a), x2 = a + g * (b - a);
-    double f1 = f(x1), f2 = f(x2);
-    for (int it = 0; it < 200 && b - a > kHealthArc; ++it) {
-        if (f1 <= f2) {
-            b = x2, x2 = x1, f2 = f1;
-            x1 = b - g * (b - a), f1 = f(x1);
-        } else {
-            a = x1, x1 = x2, f1 = f2;
-            x2 = a + g * (b - a), f2 = f(x2);
-        }
-    }
-    at = f1 <= f2 ? x1 : x2;
-    return std::min(f1, f2);
-}
 
 // The |curvature| a handle may meet within `reach` of path either way: its own, and the span of
 // every piece whose stretch of path lies that close.
@@ -156,10 +141,10 @@ LinkCheck check_shape(const Path& path, const Handle& front, const Handle& rear,
             }
         }
     }
-    double u_at = best.u;
-    const double refined = best.u_hi > best.u_lo
-                               ? golden_min(best.u_lo, best.u_hi, [&](double x) { return health_at(path.at({best.piece, x})); }, u_at)
-                               : best.value;
+    double u_at = best.u, refined = best.value;
+    if (best.u_hi > best.u_lo)
+        std::tie(u_at, refined) =
+            golden_min([&](double x) { return health_at(path.at({best.piece, x})); }, best.u_lo, best.u_hi, kHealthArc);
     out.margin = std::min({best.value, refined, at_rear});
     out.at_root = at_rear <= refined;
     const Place watch = out.at_root ? rear.place : Place{best.piece, u_at};

@@ -7,13 +7,14 @@
 #include <optional>
 
 #include "dragon/chain.hpp"
+#include "dragon/constants.hpp"
 #include "dragon/path.hpp"
 
 namespace dragon::jam {
 
 // Steps assume the margin's rate of change grows by at most this factor over the step (the
 // contact search's assumption too); the next evaluation checks it.
-inline constexpr double kSafety = 2.0;
+inline constexpr double kSafety = tol::rate_safety;
 // Links whose path turns by less than this between their handles are certified by that turning
 // alone (pi/2 is the limit: below it the distance from the front handle grows all along the
 // link), rad. Above it, the health is computed.

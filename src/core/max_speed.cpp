@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "core/golden_section.hpp"
 #include "core/make_path.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/turnaround.hpp"
@@ -52,22 +53,10 @@ private:
     Frame frame_;
 };
 
-// Golden-section search for the largest ratio on [a, b] (a unimodal bracket around a coarse
-// maximum; kinks are fine, no derivative is used).
+// The largest ratio on [a, b] (a unimodal bracket around a coarse maximum; kinks are fine).
 std::pair<double, SpeedRatio> golden_max(RatioProbe& probe, double a, double b) {
-    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-    double x1 = b - g * (b - a), x2 = a + g * (b - a);
-    SpeedRatio f1 = probe(x1), f2 = probe(x2);
-    while (b - a > kArcTolerance) {
-        if (f1.ratio >= f2.ratio) {
-            b = x2; x2 = x1; f2 = f1;
-            x1 = b - g * (b - a); f1 = probe(x1);
-        } else {
-            a = x1; x1 = x2; f1 = f2;
-            x2 = a + g * (b - a); f2 = probe(x2);
-        }
-    }
-    return f1.ratio >= f2.ratio ? std::pair{x1, f1} : std::pair{x2, f2};
+    const auto larger = [](const SpeedRatio& x, const SpeedRatio& y) { return x.ratio > y.ratio; };
+    return golden_min([&probe](double s) { return probe(s); }, a, b, kArcTolerance, larger);
 }
 
 }  // namespace

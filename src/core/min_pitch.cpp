@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "core/golden_section.hpp"
 #include "core/make_path.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/constants.hpp"
@@ -17,21 +18,30 @@
 namespace dragon {
 
 namespace {
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-}
+
+// Narrowing a change of feasibility: the touching pair's closest approach is looked for within
+// kApproachWindow of its contact time (the window closes where the contact was, within seconds
+// for nearby pitches), on kApproachSamples samples then by golden section to kApproachTime
+// (the approach is flat to ~1e-14 m that close to its minimum); regula falsi on the pitch runs
+// at most kFalsiRounds rounds of kFalsiSteps steps before the k-section takes over.
+constexpr double kApproachWindow = 5.0;  // s
+constexpr int kApproachSamples = 40;
+constexpr double kApproachTime = 1e-7;   // s
+constexpr int kFalsiRounds = 4;
+constexpr int kFalsiSteps = 60;
+
+}  // namespace
 
 BoundaryRun run_to_boundary(Scenario s, double pitch) {
     s.path.kind = PathKind::spiral;
     s.path.pitch = pitch;
     const Simulation sim(s);
-    const auto& spiral = static_cast<const Spiral&>(sim.path());
-    const double start_radius = spiral.b() * kTwoPi * s.path.start_turn;
+    const double start_radius = Spiral(pitch).b() * kTwoPi * s.path.start_turn;  // r = b theta
     if (start_radius <= s.path.turn_radius)
-        throw InputError(fmt::format("pitch {} puts the head's start (radius {:.4f} m) inside the turning "
-                                     "space (radius {} m)", pitch, start_radius, s.path.turn_radius));
-    // The moment the head front handle reaches radius turn_radius.
-    const double theta_end = s.path.turn_radius / spiral.b();
-    const double t_end = (-spiral.length_to(theta_end) - sim.start_arc()) / s.head_speed;
+        throw InputError("pitch", error_value(pitch),
+                         fmt::format("it puts the head's start (radius {:.4f} m) inside the turning space (radius {} m)",
+                                     start_radius, s.path.turn_radius));
+    const double t_end = boundary_time(sim);
     BoundaryRun run;
     run.jam = sim.jam_before(t_end);
     // On this thread: min_pitch runs its pitches in parallel already.
@@ -98,8 +108,8 @@ double k_section(const Scenario& s, Executor& ex, double a, double b, bool feasi
     return feasible_at_a ? a : b;  // keep the feasible side of the cut
 }
 
-// The closest approach of benches a and b over [t0, t1] at pitch p: a scan, then golden-section
-// search around the smallest sample.
+// The closest approach of benches a and b over [t0, t1] at pitch p: a scan of kApproachSamples,
+// then golden-section search around the smallest sample, to kApproachTime.
 double closest_approach(const Scenario& s, double pitch, int a, int b, double t0, double t1) {
     Scenario q = s;
     q.path.pitch = pitch;
@@ -111,26 +121,14 @@ double closest_approach(const Scenario& s, double pitch, int a, int b, double t0
         sim.frame_into(t, f);
         return separation(f.benches[static_cast<size_t>(a - 1)], f.benches[static_cast<size_t>(b - 1)]).distance;
     };
-    constexpr int kSamples = 40;
+    constexpr int kSamples = kApproachSamples;
     double best_t = t0, best = INFINITY;
     for (int k = 0; k <= kSamples; ++k) {
         const double t = t0 + (t1 - t0) * k / kSamples;
         if (const double g = gap(t); g < best) best = g, best_t = t;
     }
     double lo = std::max(t0, best_t - (t1 - t0) / kSamples), hi = std::min(t1, best_t + (t1 - t0) / kSamples);
-    const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-    double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
-    double g1 = gap(x1), g2 = gap(x2);
-    while (hi - lo > 1e-7) {
-        if (g1 < g2) {
-            hi = x2, x2 = x1, g2 = g1;
-            x1 = hi - ratio * (hi - lo), g1 = gap(x1);
-        } else {
-            lo = x1, x1 = x2, g1 = g2;
-            x2 = lo + ratio * (hi - lo), g2 = gap(x2);
-        }
-    }
-    return std::min({best, g1, g2});
+    return std::min(best, golden_min(gap, lo, hi, kApproachTime).second);
 }
 
 // Narrows a change of feasibility between grid points. Where it is a contact window closing
@@ -146,13 +144,13 @@ double refine_cut(const Scenario& s, Executor& ex, double a, double b, const Pro
     double p_in = feasible_at_a ? b : a, p_ok = feasible_at_a ? a : b;
     const double dir = p_ok > p_in ? 1.0 : -1.0;
     // A change from a jam is no contact window: only the k-section can narrow it.
-    for (int round = 0; round < 4 && !hit.jam; ++round) {
-        const double t0 = std::max(0.0, hit.time - 5.0), t1 = hit.time + 5.0;
+    for (int round = 0; round < kFalsiRounds && !hit.jam; ++round) {
+        const double t0 = std::max(0.0, hit.time - kApproachWindow), t1 = hit.time + kApproachWindow;
         auto closest = [&](double p) { return closest_approach(s, p, hit.bench_a, hit.bench_b, t0, t1); };
         double lo = p_in, hi = p_ok, g_lo = closest(lo), g_hi = closest(hi);
         if (!(g_lo < 0.0 && g_hi > 0.0)) break;
         int side = 0;
-        for (int it = 0; it < 60 && std::abs(hi - lo) > 0.1 * tol::pitch; ++it) {
+        for (int it = 0; it < kFalsiSteps && std::abs(hi - lo) > 0.1 * tol::pitch; ++it) {
             const double p = lo - g_lo * (hi - lo) / (g_hi - g_lo);
             const double g = closest(p);
             if (g == 0.0) { lo = hi = p; break; }

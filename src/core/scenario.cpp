@@ -1,3 +1,4 @@
+#include "dragon/constants.hpp"
 #include "dragon/scenario.hpp"
 
 #include <cmath>
@@ -52,7 +53,6 @@ bool has(ScenarioValues set, ScenarioValues wanted) { return (set & wanted) == w
 void require_reach(const Scenario& s, bool spiral) {
     const BenchSpec& b = s.bench;
     const Spiral coil(spiral ? s.path.pitch : s.path.turn_pitch);
-    constexpr double kTwoPi = 6.283185307179586476925286766559;
     const double head = coil.length_to(spiral ? kTwoPi * s.path.start_turn : s.path.turn_radius / coil.b());
     if (!(head + b.chain_length() <= kMaxReach))
         refuse(value::bench | (spiral ? value::pitch | value::start_turn : value::turn_pitch | value::turn_radius),

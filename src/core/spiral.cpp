@@ -1,4 +1,5 @@
 #include <cmath>
+#include <numbers>
 #include <limits>
 #include <utility>
 
@@ -10,8 +11,7 @@
 namespace dragon {
 
 namespace {
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-constexpr double kPi = 3.141592653589793238462643383279;
+constexpr double kPi = std::numbers::pi;
 }  // namespace
 
 Spiral::Spiral(double pitch) : pitch_(pitch), b_(pitch / kTwoPi) {}

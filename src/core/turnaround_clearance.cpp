@@ -6,9 +6,11 @@
 
 #include <fmt/format.h>
 
+#include "core/golden_section.hpp"
 #include "core/motion.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/collision.hpp"
+#include "dragon/constants.hpp"
 #include "dragon/turnaround.hpp"
 
 namespace dragon {
@@ -25,9 +27,8 @@ constexpr double kScanTravel = 0.05;
 // The scan's cost cap, in bench rectangles checked (samples times benches): ~20 s on one core.
 // The contest's run takes 9e5; a head speed of 100 m/s over -100..100 s 9e7.
 constexpr double kMaxBenchChecks = 1e8;
-// The point-speed bound is taken at the samples; allow it to grow by this factor within a step
-// (the benches' velocities change slowly; first_contact uses the same factor).
-constexpr double kSafety = 2.0;
+// The point-speed bound is taken at the samples; allow it to grow by this factor within a step.
+constexpr double kSafety = tol::rate_safety;
 // Pairs farther apart than this count as this far, m: only the smallest clearance matters, and
 // the broad phase then looks at nearby pairs only.
 constexpr double kCutoff = 0.5;
@@ -90,30 +91,18 @@ RunClearance min_clearance(const Scenario& scenario, double t0, double t1, const
     // step of it the clearance falls at most about as fast as towards its neighbours.
     const double best_coarse = *std::min_element(c.begin(), c.end());
     out.distance = std::numeric_limits<double>::infinity();
-    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
     for (int k = 0; k <= steps; ++k) {
         const size_t i = static_cast<size_t>(k);
         const double left = k == 0 ? c[i] : c[i - 1], right = k == steps ? c[i] : c[i + 1];
         // A plateau counts once, at its first sample.
         if ((k > 0 && c[i] >= left) || c[i] > right || c[i] >= kCutoff) continue;
         if (c[i] - 2.0 * std::max(left - c[i], right - c[i]) > best_coarse) continue;
-        double a = t0 + std::max(0, k - 1) * dt, b = std::min(t1, t0 + std::min(steps, k + 1) * dt);
-        double x1 = b - g * (b - a), x2 = a + g * (b - a);
-        Clearance f1 = probe(x1), f2 = probe(x2);
-        while (b - a > kTimeTolerance) {
-            if (f1.distance <= f2.distance) {
-                b = x2; x2 = x1; f2 = f1;
-                x1 = b - g * (b - a); f1 = probe(x1);
-            } else {
-                a = x1; x1 = x2; f1 = f2;
-                x2 = a + g * (b - a); f2 = probe(x2);
-            }
-        }
-        const bool first = f1.distance <= f2.distance;
-        const Clearance& best = first ? f1 : f2;
+        const double a = t0 + std::max(0, k - 1) * dt, b = std::min(t1, t0 + std::min(steps, k + 1) * dt);
+        const auto nearer = [](const Clearance& x, const Clearance& y) { return x.distance < y.distance; };
+        const auto [at, best] = golden_min(probe, a, b, kTimeTolerance, nearer);
         if (best.distance < out.distance) {
             out.distance = best.distance;
-            out.time = first ? x1 : x2;
+            out.time = at;
             out.bench_a = best.bench_a;
             out.bench_b = best.bench_b;
         }

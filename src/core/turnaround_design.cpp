@@ -1,16 +1,17 @@
 // The S-curve's exact design from the pitch, the entry radius and the radius ratio.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 
+#include "dragon/constants.hpp"
 #include "dragon/turnaround.hpp"
 
 namespace dragon {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 void require_positive(const char* name, double v) {
     if (!std::isfinite(v) || v <= 0.0)

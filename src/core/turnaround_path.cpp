@@ -11,7 +11,6 @@ namespace dragon {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // A chord root this close (in radians of arc angle) outside an arc's range still counts as on
