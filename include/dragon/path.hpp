@@ -116,6 +116,11 @@ public:
     double theta_at_length(double length) const;
 
 private:
+    // behind(), when the chord cannot reach round past the far side (one root within half a
+    // turn: Halley's method), and when it can (a march that cannot step over a root).
+    std::optional<Located> behind_within_half_turn(const Located& from, double chord) const;
+    std::optional<Located> behind_round_the_centre(const Located& from, double chord) const;
+
     double pitch_;
     double b_;
 };

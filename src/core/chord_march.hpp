@@ -15,6 +15,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "dragon/constants.hpp"
 #include "dragon/geometry.hpp"
@@ -73,5 +74,26 @@ std::optional<double> march_to_chord(Eval eval, Bound bound, Vec2 q, double chor
     }
     throw std::logic_error("march_to_chord: no convergence within its allowance of steps");
 }
+
+// The spiral P(theta) = b theta (cos theta, sin theta) as a march piece, and the bounds
+// |P'|^2 = b^2 (1 + theta^2) and |P''| = b sqrt(4 + theta^2), both growing with |theta|, so their
+// maxima over a step are at its end farther from the centre.
+struct SpiralPiece {
+    double b;
+    PieceSample operator()(double u) const {
+        const double c = std::cos(u), s = std::sin(u);
+        return {{b * u * c, b * u * s}, {b * (c - u * s), b * (s + u * c)}};
+    }
+};
+struct SpiralBound {
+    double b;
+    std::pair<double, double> operator()(double ua, double ub) const {
+        const double t = std::max(std::abs(ua), std::abs(ub));
+        return {b * b * (1.0 + t * t), b * std::sqrt(4.0 + t * t)};
+    }
+};
+// Largest step of a spiral march, rad: keeps the curvature bound local (it is taken at the
+// step's far end, where |P'| and |P''| are largest).
+inline constexpr double kSpiralMarchStep = 0.5;
 
 }  // namespace dragon

@@ -18,9 +18,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // of a join are searched with this slack, so a root at a join is never missed by both.
 constexpr double kJoinSlack = 1e-12;
 
-// Largest step of the spiral march, rad: keeps the curvature bound local (it is taken at the
-// step's far end, where |P'| and |P''| are largest).
-constexpr double kMarchStep = 0.5;
 
 }  // namespace
 
@@ -208,28 +205,6 @@ std::optional<Located> TurnaroundPath::behind_on_arc(int piece, const Located& f
     return at({piece, u0 + back * best});
 }
 
-namespace {
-
-// The coil-in spiral P(theta) = b theta (cos theta, sin theta) as a march piece, with the bounds
-// |P'|^2 = b^2 (1 + theta^2) and |P''| = b sqrt(4 + theta^2), both increasing in theta, so their
-// maxima over a step are at its larger end.
-struct CoilPiece {
-    double b;
-    PieceSample operator()(double u) const {
-        const double c = std::cos(u), s = std::sin(u);
-        return {{b * u * c, b * u * s}, {b * (c - u * s), b * (s + u * c)}};
-    }
-};
-struct CoilBound {
-    double b;
-    std::pair<double, double> operator()(double ua, double ub) const {
-        const double t = std::max(std::abs(ua), std::abs(ub));
-        return {b * b * (1.0 + t * t), b * std::sqrt(4.0 + t * t)};
-    }
-};
-
-}  // namespace
-
 std::optional<Located> TurnaroundPath::behind_on_coil_in(const Located& from, double chord) const {
     if (from.place.piece == 0) return coil_in_.behind(from, chord);
     // From a later piece: march outward from A, which never steps over the first root. As on
@@ -238,8 +213,8 @@ std::optional<Located> TurnaroundPath::behind_on_coil_in(const Located& from, do
     const double b = coil_in_.b();
     const double r0 = norm(from.pos);
     const double start = std::max(design_.entry_theta, (chord - r0) / b);
-    const auto u = march_to_chord(CoilPiece{b}, CoilBound{b}, from.pos, chord, start, +1.0,
-                                  std::max(start, (chord + r0) / b + 1.0), kMarchStep);
+    const auto u = march_to_chord(SpiralPiece{b}, SpiralBound{b}, from.pos, chord, start, +1.0,
+                                  std::max(start, (chord + r0) / b + 1.0), kSpiralMarchStep);
     if (!u) return std::nullopt;
     return at({0, *u});
 }
@@ -297,7 +272,7 @@ std::optional<Located> TurnaroundPath::behind_on_coil_out(const Located& from, d
     }
     // No root within the monotone bracket (g < 0 all over it): the march may start at its end.
     const double start = (tha >= 1.0 && hi0 > 0.0) ? th - hi0 : th;
-    const auto u = march_to_chord(CoilPiece{b}, CoilBound{b}, -from.pos, chord, start, -1.0, tha, kMarchStep);
+    const auto u = march_to_chord(SpiralPiece{b}, SpiralBound{b}, -from.pos, chord, start, -1.0, tha, kSpiralMarchStep);
     if (!u) return std::nullopt;
     return at({3, *u});
 }
