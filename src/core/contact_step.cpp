@@ -22,26 +22,16 @@ namespace dragon::contact {
 // changed faster, the caller retreats and retries shorter.
 // `memory` is what the last accepted evaluation saw; this one's goes to `next` (cleared first),
 // for the caller to keep if it accepts the step.
-Approach approach(const Frame& f, double t, double max_step, const Memory& memory, Memory& next, bool check,
-                  Workspace& ws) {
-    Approach a{{INFINITY, 0, 0, {}, {}}, INFINITY, 0.0, false, INFINITY};
-    if (f.benches.size() < 3) return a;
-    // The search's own scratch (a search evaluates hundreds of frames).
-    bench_motions_into(f, ws.motion);
+namespace {
+
+// Stage 1: every broad-phase pair's first-order step. Pairs their radii keep apart for the whole
+// step, farther than a probe looks, are passed over (gap infinite); the others get their
+// projected gap (a lower bound on the distance), and those whose first-order step could set the
+// step go to ws.tight. Returns the index of the pair with the smallest projected gap.
+size_t screen_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pairs, double cap, Workspace& ws) {
     const std::vector<BenchMotion>& motion = ws.motion;
-    std::vector<double>& gaps = ws.gaps;
-    std::vector<double>& half_diagonals = ws.half_diagonals;
-    std::vector<Radial>& radial = ws.radial;
-    half_diagonals.resize(f.benches.size());
-    for (size_t k = 0; k < f.benches.size(); ++k) half_diagonals[k] = half_diagonal(f.benches[k]);
-    radial_extents(f, motion, radial);
-    // Pairs beyond the margin: bounded group by group (far_pairs_step).
-    const double cap = std::min(max_step, far_pairs_step(f, motion, half_diagonals, radial, kMargin));
-    const auto& pairs = ws.broad.candidate_pairs(f, kMargin);
-    using Candidate = Workspace::Candidate;
-    std::vector<Candidate>& tight = ws.tight;
-    tight.clear();
-    gaps.resize(pairs.size());
+    ws.tight.clear();
+    ws.gaps.resize(pairs.size());
     double best_gap = INFINITY;
     size_t seed = 0;
     for (size_t k = 0; k < pairs.size(); ++k) {
@@ -49,38 +39,45 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
         // Benches on neighbouring turns slide past each other: when their radii alone keep them
         // apart for the whole step and farther than a probe would look, they cannot set the step,
         // touch, or be probed, and need no closer look (most pairs, away from the centre).
-        const double radial_first_order = radial_step(radial[i], radial[j]);
-        if (radial_first_order >= cap && radial_gap(radial[i], radial[j]) >= kProbeGap) {
-            gaps[k] = INFINITY;
+        const double radial_first_order = radial_step(ws.radial[i], ws.radial[j]);
+        if (radial_first_order >= cap && radial_gap(ws.radial[i], ws.radial[j]) >= kProbeGap) {
+            ws.gaps[k] = INFINITY;
             continue;
         }
-        const Rect& ra = f.benches[i];
-        const double g = sat_gap(ra, f.benches[j]).gap;  // a lower bound on the distance
-        gaps[k] = g;
-        if (g < best_gap) { best_gap = g; seed = k; }
+        const double g = sat_gap(f.benches[i], f.benches[j]).gap;  // a lower bound on the distance
+        ws.gaps[k] = g;
+        if (g < best_gap) best_gap = g, seed = k;
         // Relative velocity field of b seen from a: affine, so within a's rectangle its norm is
         // at most its value at a's centre plus the turn-rate difference times the half-diagonal.
         const BenchMotion& ma = motion[i];
         const BenchMotion& mb = motion[j];
         const double gap = std::max(g, 0.0);
-        const double bound = norm(mb.at(ma.centre) - ma.v_centre) + std::abs(mb.omega - ma.omega) * half_diagonals[i] +
-                             std::abs(mb.omega) * gap;
+        const double bound = norm(mb.at(ma.centre) - ma.v_centre) +
+                             std::abs(mb.omega - ma.omega) * ws.half_diagonals[i] + std::abs(mb.omega) * gap;
         // First-order step gap / (kSafety bound), divided out only for the pairs that could set it.
         if (gap < cap * kSafety * bound) {
             const double first_order = std::max(gap / (kSafety * bound), radial_first_order);
-            if (first_order < cap) tight.push_back({first_order, bound, k});
+            if (first_order < cap) ws.tight.push_back({first_order, bound, k});
         }
     }
-    // Smallest first-order step first, popped from a heap: usually only a part of the list is
-    // looked at before the first-order steps exceed the step found so far.
+    return seed;
+}
+
+// Stage 2: the pairs of ws.tight, smallest first-order step first (popped from a heap: usually
+// only a part of the list is looked at before the first-order steps exceed the step found so
+// far), each bounded to second order on its eight corner gaps. Returns the step; ws.pair_steps
+// holds each pair looked at with its step, and `skipped` what every other pair allows at least.
+double refine_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pairs, double t, double cap,
+                    const Memory& memory, Memory& next, bool check, Workspace& ws, double& skipped,
+                    bool& bound_broken) {
+    using Candidate = Workspace::Candidate;
+    std::vector<Candidate>& tight = ws.tight;
     const auto later = [](const Candidate& x, const Candidate& y) { return x.first_order > y.first_order; };
     std::make_heap(tight.begin(), tight.end(), later);
     next.clear();
+    ws.pair_steps.clear();
     double step = cap;
-    // Each pair looked at and the step it allows; every other allows at least `skipped`.
-    std::vector<std::pair<std::uint64_t, double>>& pair_steps = ws.pair_steps;
-    pair_steps.clear();
-    double skipped = cap;
+    skipped = cap;
     while (!tight.empty()) {
         std::pop_heap(tight.begin(), tight.end(), later);
         const Candidate c = tight.back();
@@ -90,8 +87,8 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
             break;
         }
         const int ia = pairs[c.k].first - 1, ib = pairs[c.k].second - 1;
-        const BenchMotion& ma = motion[static_cast<size_t>(ia)];
-        const BenchMotion& mb = motion[static_cast<size_t>(ib)];
+        const BenchMotion& ma = ws.motion[static_cast<size_t>(ia)];
+        const BenchMotion& mb = ws.motion[static_cast<size_t>(ib)];
         const auto gaps8 = corner_gaps(f.benches[static_cast<size_t>(ia)], ma, f.benches[static_cast<size_t>(ib)], mb);
         // Rotational floor: the corner-to-edge direction turns at most at |omega_a| + |omega_b|,
         // tilting a relative velocity of size <= bound.
@@ -104,7 +101,7 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
                 const double change = std::abs(gaps8[q].rate - last->rates[q]);
                 observed = std::max(observed, change / dt);
                 // The last step assumed the rates change by at most curvature * dt.
-                if (check && change > last->curvature * dt * (1.0 + 1e-9) + 1e-12) a.bound_broken = true;
+                if (check && change > last->curvature * dt * (1.0 + 1e-9) + 1e-12) bound_broken = true;
             }
         }
         mem.curvature = kSafety * observed;
@@ -115,38 +112,64 @@ Approach approach(const Frame& f, double t, double max_step, const Memory& memor
         }
         next.emplace(key, mem);
         const double pair_step = std::max(c.first_order, h2);
-        pair_steps.push_back({key, pair_step});
+        ws.pair_steps.push_back({key, pair_step});
         step = std::min(step, pair_step);
     }
-    a.safe_step = step;
-    if (pairs.empty()) {
-        a.clear = clearance(f, kMargin, ws.broad);
-        a.others_step = step;
-        return a;
-    }
-    // Exact distances only where the projected gap (a lower bound) could still win.
+    return step;
+}
+
+// Stage 3: the closest pair, by exact distances only where the projected gap (a lower bound)
+// could still win, and the rate at which its separation changes now.
+void closest_pair(const Frame& f, const std::vector<std::pair<int, int>>& pairs, size_t seed, const Workspace& ws,
+                  Approach& a) {
     auto exact = [&](size_t k) {
         const Separation s = separation(f.benches[static_cast<size_t>(pairs[k].first - 1)],
                                         f.benches[static_cast<size_t>(pairs[k].second - 1)]);
         if (s.distance < a.clear.distance) a.clear = {s.distance, pairs[k].first, pairs[k].second, s.axis, s.point};
     };
-    if (gaps[seed] < INFINITY) exact(seed);
+    if (ws.gaps[seed] < INFINITY) exact(seed);
     for (size_t k = 0; k < pairs.size(); ++k)
-        if (k != seed && gaps[k] < a.clear.distance) exact(k);
-    const std::uint64_t closest = a.clear.bench_a > 0 ? key_of(std::min(a.clear.bench_a, a.clear.bench_b) - 1,
-                                                                std::max(a.clear.bench_a, a.clear.bench_b) - 1)
-                                                       : ~std::uint64_t{0};
-    a.others_step = skipped;
-    for (const auto& [key, pair_step] : pair_steps)
-        if (key != closest) a.others_step = std::min(a.others_step, pair_step);
+        if (k != seed && ws.gaps[k] < a.clear.distance) exact(k);
     if (a.clear.bench_a > 0 && a.clear.distance > 0.0) {
         // Separation rate of the closest pair: the witness on b moving away from a along the axis.
-        const BenchMotion& ma = motion[static_cast<size_t>(a.clear.bench_a - 1)];
-        const BenchMotion& mb = motion[static_cast<size_t>(a.clear.bench_b - 1)];
+        const BenchMotion& ma = ws.motion[static_cast<size_t>(a.clear.bench_a - 1)];
+        const BenchMotion& mb = ws.motion[static_cast<size_t>(a.clear.bench_b - 1)];
         const Vec2 q = a.clear.point;
         const Vec2 p = q - a.clear.distance * a.clear.axis;
         a.rate = dot(a.clear.axis, mb.at(q) - ma.at(p));
     }
+}
+
+}  // namespace
+
+Approach approach(const Frame& f, double t, double max_step, const Memory& memory, Memory& next, bool check,
+                  Workspace& ws) {
+    Approach a{{INFINITY, 0, 0, {}, {}}, INFINITY, 0.0, false, INFINITY};
+    if (f.benches.size() < 3) return a;
+    // The search's own scratch (a search evaluates hundreds of frames).
+    bench_motions_into(f, ws.motion);
+    ws.half_diagonals.resize(f.benches.size());
+    for (size_t k = 0; k < f.benches.size(); ++k) ws.half_diagonals[k] = half_diagonal(f.benches[k]);
+    radial_extents(f, ws.motion, ws.radial);
+    // Pairs beyond the margin: bounded group by group (far_pairs_step).
+    const double cap = std::min(max_step, far_pairs_step(f, ws.motion, ws.half_diagonals, ws.radial, kMargin));
+    const auto& pairs = ws.broad.candidate_pairs(f, kMargin);
+    const size_t seed = screen_pairs(f, pairs, cap, ws);
+    double skipped = cap;
+    a.safe_step = refine_pairs(f, pairs, t, cap, memory, next, check, ws, skipped, a.bound_broken);
+    if (pairs.empty()) {
+        a.clear = clearance(f, kMargin, ws.broad);
+        a.others_step = a.safe_step;
+        return a;
+    }
+    closest_pair(f, pairs, seed, ws, a);
+    // No pair but the closest one can touch before others_step.
+    const std::uint64_t closest = a.clear.bench_a > 0 ? key_of(std::min(a.clear.bench_a, a.clear.bench_b) - 1,
+                                                                std::max(a.clear.bench_a, a.clear.bench_b) - 1)
+                                                       : ~std::uint64_t{0};
+    a.others_step = skipped;
+    for (const auto& [key, pair_step] : ws.pair_steps)
+        if (key != closest) a.others_step = std::min(a.others_step, pair_step);
     return a;
 }
 

@@ -13,37 +13,19 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "support/cli_run.hpp"
 #include "support/scratch.hpp"
 
 namespace fs = std::filesystem;
 
+using dragon_test::CliRun;
+using dragon_test::slurp;
+
 namespace {
 
-struct CliRun {
-    int code;
-    std::string out, err;
-};
+CliRun dragon(const std::string& args) { return dragon_test::run_dragon(args); }
 
-std::string slurp(const fs::path& p) {
-    std::ifstream f(p);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
-}
-
-CliRun dragon(const std::string& args) {
-    const fs::path dir = dragon_test::scratch_dir();
-    const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-    const std::string cmd = std::string(DRAGON_EXE) + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-}
-
-int lines(const std::string& s) {
-    int n = 0;
-    for (char c : s) n += c == '\n';
-    return n;
-}
+int lines(const std::string& s) { return dragon_test::count_lines(s); }
 
 bool has(const std::string& text, const std::string& word) { return text.find(word) != std::string::npos; }
 
