@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdio>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -34,7 +35,10 @@ void write_csv(const std::vector<Frame>& frames, const std::string& path, int di
 void print_csv(const std::vector<Frame>& frames, std::FILE* out, int digits = kDefaultDigits);
 // {"times": [...], "handles": N, "frames": [{"t", "x": [...], "y": [...], "speed": [...]}]}
 void write_json(const std::vector<Frame>& frames, const std::string& path, int digits = kDefaultDigits);
-// result1.xlsx / result4.xlsx layout: sheets 位置 and 速度, one column per frame.
+// The most frames one worksheet holds: 16,384 columns, one for the labels.
+inline constexpr std::size_t kMaxWorkbookFrames = 16383;
+// result1.xlsx / result4.xlsx layout: sheets 位置 and 速度, one column per frame (at most
+// kMaxWorkbookFrames; InputError beyond).
 void write_result_xlsx(const std::vector<Frame>& frames, const std::string& path);
 // result2.xlsx layout: Sheet1, one row per handle with x, y and speed.
 void write_result2_xlsx(const Frame& frame, const std::string& path);

@@ -58,9 +58,9 @@ void register_simulate(CLI::App& app, Registry& reg) {
         if (!opt->out.empty()) AtomicFile probe(opt->out);  // an unwritable path fails here, before any work
         const Simulation sim(s);
         const std::vector<Frame> frames = simulate_table(sim, t0, t1, opt->step);
-        if (ext == ".xlsx" && frames.size() > 16383)
-            throw InputError(fmt::format("{} frames do not fit in one worksheet (at most 16383 "
-                                         "columns): use a larger --step or .csv", frames.size()));
+        if (ext == ".xlsx" && frames.size() > kMaxWorkbookFrames)
+            throw InputError(fmt::format("{} frames do not fit in one worksheet (at most {} "
+                                         "columns): use a larger --step or .csv", frames.size(), kMaxWorkbookFrames));
         if (opt->out.empty()) {
             print_csv(frames, stdout, digits);
             return 0;

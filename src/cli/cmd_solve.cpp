@@ -104,7 +104,7 @@ void register_solve(CLI::App& app, Registry& reg) {
         AtomicFile* result2 = target(wanted("q2"), "result2.xlsx");
         AtomicFile* result4 = target(wanted("q4"), "result4.xlsx");
         AtomicFile* summary_json = target(true, "summary.json");
-        std::vector<std::string> summary;
+        Json summary = Json::object();
 
         // Q1: coiling in, 0..300 s (the simulation only if Q1 or Q2 reads it: --only q4 does
         // not read the plain spiral's values, which may not even make one).
@@ -116,7 +116,7 @@ void register_solve(CLI::App& app, Registry& reg) {
             const std::vector<Frame> q1 = simulate_table(sim, 0.0, q1_end, 1.0);
             write_result_xlsx(q1, *result1);
             print_frame_table("Q1: positions (m) and speeds (m/s) while coiling in", pick(q1, 1.0, 60.0));
-            summary.push_back(fmt::format("  \"q1\": {{\"file\": \"result1.xlsx\", \"times\": [0, {}]}}", q1_end));
+            summary["q1"] = {{"file", "result1.xlsx"}, {"times", {0, q1_end}}};
         }
 
         // Q2: the termination time.
@@ -128,12 +128,14 @@ void register_solve(CLI::App& app, Registry& reg) {
                 fmt::print("\nQ2: benches {} and {} touch at t = {} s (head radius {:.6f} m)\n", c->bench_a,
                            c->bench_b, format_resolved(c->time, c->tolerance), c->head_radius);
                 print_single_frame("", c->frame);
-                summary.push_back(fmt::format("  \"q2\": {{\"time\": {}, \"benches\": [{}, {}], \"head_radius\": {}}}",
-                                              json_number(c->time), c->bench_a, c->bench_b, json_number(c->head_radius)));
+                summary["q2"] = {{"file", "result2.xlsx"},
+                                 {"time", c->time},
+                                 {"benches", {c->bench_a, c->bench_b}},
+                                 {"head_radius", c->head_radius}};
             } else {
                 fmt::print("\nQ2: no collision as far as the dragon can follow the spiral (t = {} s)\n",
                            format_time(sim.valid_end()));
-                summary.push_back("  \"q2\": null");
+                summary["q2"] = {{"file", "result2.xlsx"}, {"time", nullptr}, {"jam", jam_json(sim.valid_range().after)}};
                 // The contest's layout with no rows, so no older answer is left looking like this one's.
                 write_result2_xlsx(Frame{}, *result2);
             }
@@ -142,15 +144,22 @@ void register_solve(CLI::App& app, Registry& reg) {
         // Q3: the minimum pitch.
         if (wanted("q3")) {
             const MinPitch m = min_pitch(s, 0.35, 0.55);
-            fmt::print("\nQ3: minimum pitch {:.8f} m to reach radius {} m collision-free\n", m.pitch,
-                       s.path.turn_radius);
-            std::string iv;
+            // Resolved to 1e-9 m: ten decimals.
+            if (std::isnan(m.pitch))
+                fmt::print("\nQ3: no change from collision to collision-free in 0.35..0.55 m (the minimum pitch lies {})\n",
+                           m.below_range ? "at or below 0.35 m" : "above 0.55 m");
+            else
+                fmt::print("\nQ3: minimum pitch {:.10f} m to reach radius {} m collision-free\n", m.pitch,
+                           s.path.turn_radius);
+            Json intervals = Json::array();
             for (const PitchInterval& i : m.intervals) {
-                fmt::print("  [{:.8f}, {:.8f}] m  {}\n", i.lo, i.hi, i.feasible ? "collision-free" : "collides");
-                iv += fmt::format("{}{{\"lo\": {}, \"hi\": {}, \"feasible\": {}}}", iv.empty() ? "" : ", ",
-                                  json_number(i.lo), json_number(i.hi), i.feasible ? "true" : "false");
+                fmt::print("  [{:.10f}, {:.10f}] m  {}\n", i.lo, i.hi, i.feasible ? "collision-free" : "collides");
+                intervals.push_back({{"lo", i.lo}, {"hi", i.hi}, {"feasible", i.feasible}});
             }
-            summary.push_back(fmt::format("  \"q3\": {{\"pitch\": {}, \"intervals\": [{}]}}", json_number(m.pitch), iv));
+            summary["q3"] = {{"pitch", std::isnan(m.pitch) ? Json(nullptr) : Json(m.pitch)},
+                             {"below_range", m.below_range},
+                             {"above_range", m.above_range},
+                             {"intervals", intervals}};
         }
 
         // Q4 and Q5 run on the turnaround path.
@@ -165,8 +174,7 @@ void register_solve(CLI::App& app, Registry& reg) {
             const SCurve sc = design_s_curve(turn);
             fmt::print("\nQ4: S-curve r1 = {:.6f} m, r2 = {:.6f} m, length {:.6f} m\n", sc.r1, sc.r2, sc.length);
             print_frame_table("Q4: positions (m) and speeds (m/s) around the turn", pick(q4, 1.0, 50.0));
-            summary.push_back(fmt::format("  \"q4\": {{\"file\": \"result4.xlsx\", \"r1\": {}, \"r2\": {}, \"length\": {}}}",
-                                          json_number(sc.r1), json_number(sc.r2), json_number(sc.length)));
+            summary["q4"] = {{"file", "result4.xlsx"}, {"r1", sc.r1}, {"r2", sc.r2}, {"length", sc.length}};
         }
 
         // Q5: the speed limit.
@@ -174,10 +182,13 @@ void register_solve(CLI::App& app, Registry& reg) {
             const MaxSpeed v = max_head_speed(turn, 2.0);
             fmt::print("\nQ5: largest head speed {:.6f} m/s (speed ratio {:.6f} at handle {}, t = {:.6f} s)\n",
                        v.max_head_speed, v.ratio, v.handle, v.time);
-            summary.push_back(fmt::format("  \"q5\": {{\"max_head_speed\": {}, \"ratio\": {}, \"handle\": {}, \"time\": {}}}",
-                                          json_number(v.max_head_speed), json_number(v.ratio), v.handle, json_number(v.time)));
+            summary["q5"] = {{"max_head_speed", v.max_head_speed},
+                             {"ratio", v.unbounded ? Json(nullptr) : Json(v.ratio)},
+                             {"handle", v.handle},
+                             {"time", v.time},
+                             {"jam", jam_json(v.jam)}};
         }
-        write_text(*summary_json, "{\n" + fmt::format("{}", fmt::join(summary, ",\n")) + "\n}\n");
+        write_text(*summary_json, summary.dump(2) + "\n");
         std::vector<AtomicFile*> set;
         for (const auto& f : files) set.push_back(f.get());
         require_stdout_written();  // the tables all printed, or no file changes

@@ -97,6 +97,14 @@ void close_workbook(WorkbookPtr wb, const AtomicFile& out) {
     if (out_of_room(sys)) throw out.write_error(std::strerror(sys));
 }
 
+// Every cell write is checked: libxlsxwriter refuses a cell out of the sheet's range (a 16,385th
+// column) or a string it cannot store, and says so only in its return value.
+void put(lxw_error err, const AtomicFile& out, lxw_row_t row, lxw_col_t col) {
+    if (err != LXW_NO_ERROR)
+        throw out.write_error(fmt::format("libxlsxwriter cannot write the cell at row {}, column {}: {}", row + 1, col + 1,
+                                          lxw_strerror(err)));
+}
+
 }  // namespace
 
 void write_result_xlsx(const std::vector<Frame>& frames, const std::string& path) {
@@ -115,6 +123,10 @@ void write_result_xlsx(const std::vector<Frame>& frames, AtomicFile& out) {
     // Streamed row by row (libxlsxwriter's constant-memory mode): each row goes to disk as it
     // is finished, which is what this layout needs anyway, and it is several times faster
     // than keeping the whole table of cells in memory.
+    // A worksheet holds 16,384 columns: the labels' and one per frame.
+    if (frames.size() > kMaxWorkbookFrames)
+        throw InputError("frame count", std::to_string(frames.size()),
+                         fmt::format("a worksheet holds at most {} frames (one column each)", kMaxWorkbookFrames));
     WorkbookPtr wb = new_workbook(out, true);
     lxw_worksheet* pos = add_sheet(wb.get(), "位置");
     lxw_worksheet* vel = add_sheet(wb.get(), "速度");
@@ -122,28 +134,28 @@ void write_result_xlsx(const std::vector<Frame>& frames, AtomicFile& out) {
     for (size_t k = 0; k < frames.size(); ++k) {
         const auto col = static_cast<lxw_col_t>(k + 1);
         const std::string header = time_header(frames[k].time);
-        worksheet_write_string(pos, 0, col, header.c_str(), nullptr);
-        worksheet_write_string(vel, 0, col, header.c_str(), nullptr);
+        put(worksheet_write_string(pos, 0, col, header.c_str(), nullptr), out, 0, col);
+        put(worksheet_write_string(vel, 0, col, header.c_str(), nullptr), out, 0, col);
     }
     for (int i = 0; i < n; ++i) {
         const std::string label = handle_label(i, n);
         const auto x_row = static_cast<lxw_row_t>(1 + 2 * i), y_row = static_cast<lxw_row_t>(2 + 2 * i);
         const auto v_row = static_cast<lxw_row_t>(1 + i);
-        worksheet_write_string(pos, x_row, 0, (label + "x (m)").c_str(), nullptr);
+        put(worksheet_write_string(pos, x_row, 0, (label + "x (m)").c_str(), nullptr), out, x_row, 0);
         for (size_t k = 0; k < frames.size(); ++k)
-            worksheet_write_number(pos, x_row, static_cast<lxw_col_t>(k + 1),
-                                   round6(frames[k].handles[static_cast<size_t>(i)].pos.x), nullptr);
-        worksheet_write_string(pos, y_row, 0, (label + "y (m)").c_str(), nullptr);
+            put(worksheet_write_number(pos, x_row, static_cast<lxw_col_t>(k + 1),
+                                   round6(frames[k].handles[static_cast<size_t>(i)].pos.x), nullptr), out, x_row, static_cast<lxw_col_t>(k + 1));
+        put(worksheet_write_string(pos, y_row, 0, (label + "y (m)").c_str(), nullptr), out, y_row, 0);
         for (size_t k = 0; k < frames.size(); ++k)
-            worksheet_write_number(pos, y_row, static_cast<lxw_col_t>(k + 1),
-                                   round6(frames[k].handles[static_cast<size_t>(i)].pos.y), nullptr);
+            put(worksheet_write_number(pos, y_row, static_cast<lxw_col_t>(k + 1),
+                                   round6(frames[k].handles[static_cast<size_t>(i)].pos.y), nullptr), out, y_row, static_cast<lxw_col_t>(k + 1));
         // The template has two spaces before "(m/s)" for body and tail rows, one for the head
         // and the tail's rear handle.
         const bool one_space = (i == 0 || i == n - 1);
-        worksheet_write_string(vel, v_row, 0, (label + (one_space ? " (m/s)" : "  (m/s)")).c_str(), nullptr);
+        put(worksheet_write_string(vel, v_row, 0, (label + (one_space ? " (m/s)" : "  (m/s)")).c_str(), nullptr), out, v_row, 0);
         for (size_t k = 0; k < frames.size(); ++k)
-            worksheet_write_number(vel, v_row, static_cast<lxw_col_t>(k + 1),
-                                   round6(frames[k].handles[static_cast<size_t>(i)].speed), nullptr);
+            put(worksheet_write_number(vel, v_row, static_cast<lxw_col_t>(k + 1),
+                                   round6(frames[k].handles[static_cast<size_t>(i)].speed), nullptr), out, v_row, static_cast<lxw_col_t>(k + 1));
     }
     close_workbook(std::move(wb), out);
 }
@@ -151,17 +163,17 @@ void write_result_xlsx(const std::vector<Frame>& frames, AtomicFile& out) {
 void write_result2_xlsx(const Frame& frame, AtomicFile& out) {
     WorkbookPtr wb = new_workbook(out);
     lxw_worksheet* ws = add_sheet(wb.get(), "Sheet1");
-    worksheet_write_string(ws, 0, 1, "横坐标x (m)", nullptr);
-    worksheet_write_string(ws, 0, 2, "纵坐标y (m)", nullptr);
-    worksheet_write_string(ws, 0, 3, "速度 (m/s)", nullptr);
+    put(worksheet_write_string(ws, 0, 1, "横坐标x (m)", nullptr), out, 0, 1);
+    put(worksheet_write_string(ws, 0, 2, "纵坐标y (m)", nullptr), out, 0, 2);
+    put(worksheet_write_string(ws, 0, 3, "速度 (m/s)", nullptr), out, 0, 3);
     const int n = static_cast<int>(frame.handles.size());
     for (int i = 0; i < n; ++i) {
         const Handle& h = frame.handles[static_cast<size_t>(i)];
         const auto row = static_cast<lxw_row_t>(1 + i);
-        worksheet_write_string(ws, row, 0, handle_label(i, n).c_str(), nullptr);
-        worksheet_write_number(ws, row, 1, round6(h.pos.x), nullptr);
-        worksheet_write_number(ws, row, 2, round6(h.pos.y), nullptr);
-        worksheet_write_number(ws, row, 3, round6(h.speed), nullptr);
+        put(worksheet_write_string(ws, row, 0, handle_label(i, n).c_str(), nullptr), out, row, 0);
+        put(worksheet_write_number(ws, row, 1, round6(h.pos.x), nullptr), out, row, 1);
+        put(worksheet_write_number(ws, row, 2, round6(h.pos.y), nullptr), out, row, 2);
+        put(worksheet_write_number(ws, row, 3, round6(h.speed), nullptr), out, row, 3);
     }
     close_workbook(std::move(wb), out);
 }

@@ -128,3 +128,18 @@ TEST(Tables, UnwritablePathLeavesNothing) {
     for (const auto& e : fs::directory_iterator(tmp_dir()))
         EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
 }
+
+TEST(Workbooks, TheLibraryRefusesMoreFramesThanASheetHolds) {
+    // One column per frame and one for the labels: 16,383 frames fill a sheet; a library caller
+    // asking for more gets an InputError, not a workbook cut short.
+    std::vector<dragon::Frame> frames(dragon::kMaxWorkbookFrames + 1);
+    const std::string path = (dragon_test::scratch_dir() / "too_wide.xlsx").string();
+    try {
+        dragon::write_result_xlsx(frames, path);
+        ADD_FAILURE() << "a workbook of 16,384 frames was written";
+    } catch (const dragon::InputError& e) {
+        EXPECT_EQ(e.field(), "frame count");
+        EXPECT_EQ(e.value(), "16384");
+    }
+    EXPECT_FALSE(std::filesystem::exists(path));
+}
