@@ -9,7 +9,6 @@
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/errors.hpp"
-#include "dragon/tables.hpp"
 #include "dragon/turnaround.hpp"
 #include "support/scratch.hpp"
 

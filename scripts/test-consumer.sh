@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The package as another program sees it: installs build/ to a prefix, builds examples/ against
+# it with the core component alone and checks with ldd that the program links no Cairo, FFmpeg or
+# libxlsxwriter; then builds all three examples and runs them. CI runs it after the tests.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cmake --install build --prefix "$work/prefix" >/dev/null
+
+cmake -S examples -B "$work/core" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" -DEXAMPLES_CORE_ONLY=ON >/dev/null
+cmake --build "$work/core" >/dev/null
+if ldd "$work/core/frame_handles" | grep -Ei 'cairo|avcodec|avformat|avutil|swscale|xlsxwriter'; then
+  echo "test-consumer: the core example links a library of another component (above)" >&2
+  exit 1
+fi
+"$work/core/frame_handles" | grep -q "handle 101  x  -6.237722  y   3.936008" \
+  || { echo "test-consumer: frame_handles printed a wrong handle 101" >&2; exit 1; }
+
+cmake -S examples -B "$work/all" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
+cmake --build "$work/all" >/dev/null
+(cd "$work" && "$work/all/moment_png" "$work/moment.png" >/dev/null && "$work/all/ten_second_film" "$work/film.mp4" >/dev/null)
+test -s "$work/moment.png" && test -s "$work/film.mp4" \
+  || { echo "test-consumer: an example wrote no file" >&2; exit 1; }
+echo "test-consumer: the installed package builds the examples; the core one links no Cairo, FFmpeg or libxlsxwriter"
