@@ -42,6 +42,20 @@ struct Rect {
 // Centre to corner: the radius of the rectangle's bounding circle.
 inline double half_diagonal(const Rect& r) { return std::sqrt(r.half_length * r.half_length + r.half_width * r.half_width); }
 
+// The distance from p to rectangle r (0 inside it) and the point of r nearest p.
+struct PointToRect {
+    double distance;
+    Vec2 nearest;
+};
+inline PointToRect point_to_rect(Vec2 p, const Rect& r) {
+    const Vec2 n = perp(r.axis);
+    const Vec2 w = p - r.centre;
+    const double x = dot(w, r.axis), y = dot(w, n);
+    const double cx = x < -r.half_length ? -r.half_length : x > r.half_length ? r.half_length : x;
+    const double cy = y < -r.half_width ? -r.half_width : y > r.half_width ? r.half_width : y;
+    return {std::sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy)), r.centre + cx * r.axis + cy * n};
+}
+
 // The four corners, counter-clockwise when axis points right.
 struct Corners {
     Vec2 p[4];

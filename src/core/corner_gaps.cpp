@@ -7,25 +7,12 @@ namespace dragon {
 
 namespace {
 
-// Distance from p to rectangle r and the nearest point of r.
-struct Nearest {
-    double distance;
-    Vec2 point;
-};
-Nearest nearest_on(const Rect& r, Vec2 p) {
-    const Vec2 n = perp(r.axis);
-    const Vec2 w = p - r.centre;
-    const double x = dot(w, r.axis), y = dot(w, n);
-    const double cx = std::clamp(x, -r.half_length, r.half_length);
-    const double cy = std::clamp(y, -r.half_width, r.half_width);
-    return {std::sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy)), r.centre + cx * r.axis + cy * n};
-}
 
 CornerGap gap_of(Vec2 corner, const BenchMotion& own, const Rect& other, const BenchMotion& other_motion) {
-    const Nearest q = nearest_on(other, corner);
+    const PointToRect q = point_to_rect(corner, other);
     if (q.distance <= 0.0) return {0.0, 0.0};
-    const Vec2 dir = (corner - q.point) / q.distance;
-    return {q.distance, dot(own.at(corner) - other_motion.at(q.point), dir)};
+    const Vec2 dir = (corner - q.nearest) / q.distance;
+    return {q.distance, dot(own.at(corner) - other_motion.at(q.nearest), dir)};
 }
 
 }  // namespace

@@ -9,19 +9,6 @@ namespace dragon {
 
 namespace {
 
-// Distance from point p to rectangle r (0 inside), and the nearest point of r.
-struct PointRect {
-    double distance;
-    Vec2 nearest;
-};
-PointRect point_to_rect(Vec2 p, const Rect& r) {
-    const Vec2 n = perp(r.axis);
-    const Vec2 w = p - r.centre;
-    const double x = dot(w, r.axis), y = dot(w, n);
-    const double cx = std::clamp(x, -r.half_length, r.half_length);
-    const double cy = std::clamp(y, -r.half_width, r.half_width);
-    return {std::sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy)), r.centre + cx * r.axis + cy * n};
-}
 
 }  // namespace
 
@@ -39,9 +26,9 @@ Separation separation(const Rect& a, const Rect& b) {
         double dmin = INFINITY;
         Vec2 from{}, to{};
         for (int k = 0; k < 4; ++k) {
-            const PointRect pb = point_to_rect(ca.p[k], b);  // corner of a to b
+            const PointToRect pb = point_to_rect(ca.p[k], b);  // corner of a to b
             if (pb.distance < dmin) { dmin = pb.distance; from = ca.p[k]; to = pb.nearest; }
-            const PointRect pa = point_to_rect(cb.p[k], a);  // corner of b to a
+            const PointToRect pa = point_to_rect(cb.p[k], a);  // corner of b to a
             if (pa.distance < dmin) { dmin = pa.distance; from = pa.nearest; to = cb.p[k]; }
         }
         return {dmin, (to - from) / dmin, to};
