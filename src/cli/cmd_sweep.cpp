@@ -1,6 +1,8 @@
 // dragon sweep: the answers mapped over the design space; dragon sweep merge: a sweep's parts
 // joined. Thin: the grid, rows and runs are the library's (dragon/sweep.hpp), the answers the
 // commands' (cli/answers.hpp).
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
@@ -49,10 +51,13 @@ int run_merge(const SweepOptions& opt) {
         check_plot(whole, opt.merge_plot);
         AtomicFile probe(opt.merge_plot);
     }
-    MapCollector maps(whole);
-    const std::size_t rows = merge_parts(whole, out, parts, [&](const std::string& row) { maps.add(row); });
+    std::optional<MapCollector> maps;
+    if (!opt.merge_plot.empty()) maps.emplace(whole);
+    const std::size_t rows = merge_parts(whole, out, parts, [&](const std::string& row) {
+        if (maps) maps->add(row);
+    });
     status(opt.merge_quiet, "wrote {}: {} rows from {} files", out, rows, parts.size());
-    if (!opt.merge_plot.empty()) write_plot(opt.merge_plot, maps, opt.merge_quiet);
+    if (maps) write_plot(opt.merge_plot, *maps, opt.merge_quiet);
     return 0;
 }
 
@@ -68,12 +73,16 @@ int run(SweepOptions& opt) {
         check_plot(setup, opt.plot);
         AtomicFile probe(opt.plot);
     }
-    MapCollector maps(setup);
-    const SweepTally t = run_rows(setup, opt.output, [&](const std::string& row) { maps.add(row); });
+    // The map's values only when a map is asked for: a row is otherwise never held.
+    std::optional<MapCollector> maps;
+    if (!opt.plot.empty()) maps.emplace(setup);
+    const SweepTally t = run_rows(setup, opt.output, [&](const std::string& row) {
+        if (maps) maps->add(row);
+    });
     if (!opt.output.out.empty())
         status(opt.output.quiet, "wrote {}: {} rows{}", opt.output.out, t.done_before + t.made,
                t.done_before ? fmt::format(" ({} new)", t.made) : "");
-    if (!opt.plot.empty()) write_plot(opt.plot, maps, opt.output.quiet);
+    if (maps) write_plot(opt.plot, *maps, opt.output.quiet);
     if (t.failed > 0)
         throw std::runtime_error(fmt::format("{} of {} scenarios failed (their rows' status says why)", t.failed, t.made));
     return 0;
