@@ -266,10 +266,12 @@ void draw_heat_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
     double widest = 0;
     for (double v : ticks.values) widest = std::max(widest, text_width(cr, th.font, 12 * u, format_tick(v, ticks.decimals)));
     const double bar_room = 16 * u + 7 * u + widest + 30 * u;
-    const double legend_room = has_other_cells(panel) ? 30 * u : 0.0;
+    // The legend under the frame, across the panel.
+    const double legend_x = x + 18 * u, legend_w = w - 36 * u;
+    const double legend_room = cell_legend_height(cr, th, panel, legend_w, u);
     const PlotArea a = draw_plot(cr, p, x, y, w - bar_room, h - legend_room);
     if (s.any) draw_colour_bar(cr, th, panel, s, ticks, levels, a, x + w - bar_room, u);
-    if (legend_room > 0) draw_cell_legend(cr, th, panel, a.x0, y + h - 0.5 * legend_room - 2 * u, u);
+    if (legend_room > 0) draw_cell_legend(cr, th, panel, legend_x, y + h - legend_room, legend_w, u);
 }
 
 }  // namespace dragon::render

@@ -10,20 +10,6 @@
 
 namespace dragon::render {
 
-namespace {
-
-// Markers for the cells without a value: strong enough to see as dots.
-Rgba marker_colour(MapCell cell) {
-    switch (cell) {
-        case MapCell::jam: return {0.84, 0.37, 0.00};
-        case MapCell::refused: return {0.40, 0.40, 0.43};
-        case MapCell::no_value: return {0.35, 0.50, 0.75};
-        default: return {0.6, 0.6, 0.6};
-    }
-}
-
-}  // namespace
-
 void draw_line_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, double x, double y, double w, double h) {
     const Theme& th = map.theme;
     const std::vector<std::size_t> order = sorted_order(map.x.values);
@@ -35,7 +21,8 @@ void draw_line_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
     p.note = map.note;
     p.x_label = axis_label(map.x.quantity, map.x.unit);
     p.y_label = axis_label(panel.quantity, panel.unit);
-    p.legend = Plot::Legend::bottom_right;
+    // The line needs no legend (the axis names it); the markers' legend goes under the plot.
+    p.legend = Plot::Legend::none;
     PlotSeries values{panel.quantity, {}, series_colour(th, 0), 1.8, true, false, true, 3.0};
     double lo = INFINITY, hi = -INFINITY;
     for (std::size_t i : order) {
@@ -50,7 +37,7 @@ void draw_line_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
     const bool others = has_other_cells(panel);
     const double strip = lo - 0.08 * (hi - lo);
     for (MapCell kind : {MapCell::jam, MapCell::refused, MapCell::no_value}) {
-        PlotSeries s{cell_style(th, kind, panel).label, {}, marker_colour(kind), 1.0, false, false, true, 4.0};
+        PlotSeries s{"", {}, cell_style(th, kind, panel).marker, 1.0, false, false, true, 4.0};
         for (std::size_t i : order)
             if (panel.cells[i] == kind) s.points.push_back({map.x.values[i], strip});
         if (!s.points.empty()) p.series.push_back(std::move(s));
@@ -58,7 +45,11 @@ void draw_line_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
     p.y_min = others ? lo - 0.14 * (hi - lo) : lo - 0.05 * (hi - lo);
     p.y_max = hi + 0.08 * (hi - lo);
     if (map.x.mark) p.ref_lines.push_back({true, *map.x.mark, map.mark_label, th.text, true});
-    draw_plot(cr, p, x, y, w, h);
+    const double u = std::max(0.4, std::min(w / 900.0, h / 560.0) * 1.25);  // the plot's own unit
+    const double legend_x = x + 18 * u, legend_w = w - 36 * u;
+    const double legend_room = cell_legend_height(cr, th, panel, legend_w, u);
+    draw_plot(cr, p, x, y, w, h - legend_room);
+    if (legend_room > 0) draw_cell_legend(cr, th, panel, legend_x, y + h - legend_room, legend_w, u, true);
 }
 
 }  // namespace dragon::render

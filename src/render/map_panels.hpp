@@ -12,13 +12,17 @@ struct CellStyle {
     Rgba fill;
     bool hatched = false;
     std::string label;
+    Rgba marker;  // a line plot's dot for such a scenario: strong enough to see as a dot
 };
 CellStyle cell_style(const Theme& theme, MapCell cell, const MapPanel& panel);
 // Diagonal hatching across the current clip, lines `spacing` apart.
 void hatch(cairo_t* cr, double x0, double y0, double x1, double y1, double spacing, double width, Rgba colour);
-// A row of legend entries (a swatch and its text) for the cell kinds other than values that
-// the panel holds, left-aligned at (x, y) (y the middle of the row); returns its height.
-double draw_cell_legend(cairo_t* cr, const Theme& theme, const MapPanel& panel, double x, double y, double u);
+// The legend of the cell kinds other than values that the panel holds (a swatch and its text
+// each), in rows as wide as `width` allows, from (x, top): its height, and the drawing.
+double cell_legend_height(cairo_t* cr, const Theme& theme, const MapPanel& panel, double width, double u);
+// `dots`: each entry's swatch is its marker (line plots), else its cell.
+void draw_cell_legend(cairo_t* cr, const Theme& theme, const MapPanel& panel, double x, double top, double width,
+                      double u, bool dots = false);
 // Whether the panel holds cells of any kind but values.
 bool has_other_cells(const MapPanel& panel);
 

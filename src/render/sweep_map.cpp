@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <numbers>
 #include <numeric>
 
 #include <cairo-svg.h>
@@ -27,13 +28,13 @@ namespace render {
 
 CellStyle cell_style(const Theme& theme, MapCell cell, const MapPanel& panel) {
     switch (cell) {
-        case MapCell::jam: return {{0.88, 0.88, 0.89}, true, panel.jam_label};
-        case MapCell::refused: return {{0.60, 0.60, 0.63}, false, "refused: values not allowed"};
-        case MapCell::no_value: return {{0.78, 0.83, 0.91}, false, "no answer in the range searched"};
-        case MapCell::missing: return {theme.background, false, "no row (another shard's)"};
+        case MapCell::jam: return {{0.88, 0.88, 0.89}, true, panel.jam_label, {0.84, 0.37, 0.00}};
+        case MapCell::refused: return {{0.60, 0.60, 0.63}, false, "refused (the row's status says why)", {0.40, 0.40, 0.43}};
+        case MapCell::no_value: return {{0.78, 0.83, 0.91}, false, "no answer in the range searched", {0.35, 0.50, 0.75}};
+        case MapCell::missing: return {theme.background, false, "no row (another shard's)", {0.6, 0.6, 0.6}};
         case MapCell::value: break;
     }
-    return {theme.background, false, ""};
+    return {theme.background, false, "", theme.text};
 }
 
 void hatch(cairo_t* cr, double x0, double y0, double x1, double y1, double spacing, double width, Rgba colour) {
@@ -51,26 +52,62 @@ bool has_other_cells(const MapPanel& panel) {
     return std::any_of(panel.cells.begin(), panel.cells.end(), [](MapCell c) { return c != MapCell::value; });
 }
 
-double draw_cell_legend(cairo_t* cr, const Theme& theme, const MapPanel& panel, double x, double y, double u) {
-    const double size = 12 * u, swatch = 16 * u;
+namespace {
+
+constexpr double kLegendRow = 22, kLegendText = 12, kSwatch = 16, kSwatchGap = 6, kEntryGap = 22;
+
+// Where each entry of the legend goes: its kind, and its offset from the legend's corner.
+struct Placed {
+    MapCell kind;
+    double dx, dy;
+};
+std::vector<Placed> legend_layout(cairo_t* cr, const Theme& theme, const MapPanel& panel, double width, double u) {
+    std::vector<Placed> out;
+    double dx = 0, dy = 0;
     for (MapCell kind : {MapCell::jam, MapCell::refused, MapCell::no_value, MapCell::missing}) {
         if (std::find(panel.cells.begin(), panel.cells.end(), kind) == panel.cells.end()) continue;
-        const CellStyle st = cell_style(theme, kind, panel);
+        const double w = (kSwatch + kSwatchGap) * u + text_width(cr, theme.font, kLegendText * u, cell_style(theme, kind, panel).label);
+        if (dx > 0 && dx + w > width) dx = 0, dy += kLegendRow * u;  // on to the next row
+        out.push_back({kind, dx, dy});
+        dx += w + kEntryGap * u;
+    }
+    return out;
+}
+
+}  // namespace
+
+double cell_legend_height(cairo_t* cr, const Theme& theme, const MapPanel& panel, double width, double u) {
+    const std::vector<Placed> entries = legend_layout(cr, theme, panel, width, u);
+    return entries.empty() ? 0.0 : entries.back().dy + kLegendRow * u + 8 * u;
+}
+
+void draw_cell_legend(cairo_t* cr, const Theme& theme, const MapPanel& panel, double x, double top, double width,
+                      double u, bool dots) {
+    const double swatch = kSwatch * u;
+    for (const Placed& e : legend_layout(cr, theme, panel, width, u)) {
+        const CellStyle st = cell_style(theme, e.kind, panel);
+        const double sx = x + e.dx, y = top + e.dy + 0.5 * kLegendRow * u;
+        set_colour(cr, theme.text);
+        text(cr, theme.font, kLegendText * u, sx + swatch + kSwatchGap * u, y, st.label, 0.0, 0.5);
+        if (dots) {
+            set_colour(cr, st.marker);
+            cairo_new_sub_path(cr);
+            cairo_arc(cr, sx + 0.5 * swatch, y, 4.0 * u, 0, 2 * std::numbers::pi);
+            cairo_fill(cr);
+            continue;
+        }
         cairo_save(cr);
-        cairo_rectangle(cr, x, y - 0.5 * swatch, swatch, swatch);
+        cairo_rectangle(cr, sx, y - 0.5 * swatch, swatch, swatch);
         cairo_clip_preserve(cr);
         set_colour(cr, st.fill);
         cairo_fill(cr);
-        if (st.hatched) hatch(cr, x, y - 0.5 * swatch, x + swatch, y + 0.5 * swatch, 4 * u, 1 * u, {0.45, 0.45, 0.47});
+        if (st.hatched) hatch(cr, sx, y - 0.5 * swatch, sx + swatch, y + 0.5 * swatch, 4 * u, 1 * u, {0.45, 0.45, 0.47});
         cairo_restore(cr);
         set_colour(cr, theme.text);
         cairo_set_line_width(cr, 0.8 * u);
-        cairo_rectangle(cr, x, y - 0.5 * swatch, swatch, swatch);
+        cairo_rectangle(cr, sx, y - 0.5 * swatch, swatch, swatch);
         cairo_stroke(cr);
-        text(cr, theme.font, size, x + swatch + 6 * u, y, st.label, 0.0, 0.5);
-        x += swatch + 6 * u + text_width(cr, theme.font, size, st.label) + 22 * u;
     }
-    return 30 * u;
 }
 
 std::vector<std::size_t> sorted_order(const std::vector<double>& values) {
