@@ -138,7 +138,7 @@ row sweep --vary width=0.3 --measure collide --plot x.png
 row sweep --vary width=0.3,0.4 --measure collide --plot x.pdf
 row sweep merge out.csv
 row sweep merge out.csv --bogus
-row_last sweep --vary width=0.3,0.6 --bench-count 20 --measure collide
+row_last sweep --vary width=0.3,0.6 --bench-count 20 --measure collide --workers 1
 
 header "dragon video (tests/cli/test_cli_video.cpp)"
 row video -o a.mp4 --size 65x48 --to 1
