@@ -93,7 +93,7 @@ int run(SweepOptions& opt) {
 void register_sweep(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<SweepOptions>();
     CLI::App* sub = app.add_subcommand(
-        "sweep", "Maps the answers over the design space: a row per scenario, a column per answer (see --help)");
+        "sweep", "Maps the answers over the design space: a row per scenario, a column per answer; merge joins its parts");
     sub->add_option("file", opt->request.file, "Sweep file (TOML; see assets/sweeps/); flags override it");
     sub->add_option("--vary", opt->request.vary,
                     "NAME=FROM:TO:COUNT or NAME=V1,V2,...: a scenario value and its values (repeat for more; the first "
