@@ -101,18 +101,22 @@ std::string csv_line(const std::vector<std::string>& fields);  // joined by comm
 // The fields of one line (without its line end); throws InputError for an unclosed quote.
 std::vector<std::string> split_csv(std::string_view line);
 
-// The lines of a rows' file: its first lines (the preamble: what the sweep is and the header)
-// and the rows, each a complete line. A last line without its line end (a kill while it was
-// written) is not a row: `torn` says there was one, and `complete_bytes` where it began.
-struct RowFileText {
+// A rows' file read through: its first lines (the preamble: what the sweep is and the header),
+// and how many rows, each a complete line, follow. A last line without its line end (a kill
+// while it was written) is not a row: `torn` says there was one, `complete_bytes` where it began.
+struct RowFileScan {
     std::vector<std::string> preamble;
-    std::vector<std::string> rows;
+    std::size_t rows = 0;
     bool torn = false;
     std::size_t complete_bytes = 0;
 };
-// Reads a rows' file whose preamble has `preamble_lines` lines; throws InputError naming the
-// file when it cannot be read or is shorter than its preamble.
-RowFileText read_row_file(const std::string& path, std::size_t preamble_lines);
+// Reads a rows' file whose preamble has `preamble_lines` lines a line at a time (a file of
+// millions of rows is never held): on_preamble hears the preamble (and may throw to stop),
+// then on_row each row. Throws InputError naming the file when it cannot be read or is shorter
+// than its preamble.
+RowFileScan scan_row_file(const std::string& path, std::size_t preamble_lines,
+                          const std::function<void(const std::vector<std::string>& preamble)>& on_preamble,
+                          const std::function<void(const std::string& row)>& on_row);
 
 // The file a sweep appends its rows to as they finish. Each row is written whole with one
 // write() and made durable (fdatasync) before append() returns, so a kill at any moment loses at

@@ -25,38 +25,17 @@ std::string describe_scenario(const SweepSetup& setup, std::size_t index) {
     return out;
 }
 
-// The lines of a finished rows' file, one at a time; a last line without its line end is an
-// error (the file of a run that was killed: resume it first).
-class Lines {
-public:
-    explicit Lines(const std::string& path) : path_(path), in_(path, std::ios::binary) {
-        if (!in_ || std::filesystem::is_directory(path)) throw InputError(fmt::format("'{}' cannot be read", path));
-    }
-    bool next(std::string& line) {
-        if (!std::getline(in_, line)) return false;
-        if (in_.eof())
-            throw InputError(fmt::format("'{}' ends in a torn line: it is the rows of an unfinished run (go on with it "
-                                         "with --resume first)", path_));
-        ++number_;
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        return true;
-    }
-    std::size_t number() const { return number_; }
-
-private:
-    std::string path_;
-    std::ifstream in_;
-    std::size_t number_ = 0;
-};
-
 }  // namespace
 
 SweepSetup whole_sweep(const std::vector<std::string>& parts) {
     if (parts.empty()) throw InputError("dragon sweep merge needs the files to merge: dragon sweep merge OUT.csv PART.csv...");
-    Lines first(parts.front());
-    std::string line;
-    if (!first.next(line)) throw InputError(fmt::format("'{}' is empty: it is not the rows of a dragon sweep", parts.front()));
-    return read_spec_line(whole_spec_line(line, parts.front()), parts.front());
+    // The first line is all it takes; merge_parts reads the rest.
+    std::ifstream in(parts.front(), std::ios::binary);
+    std::string spec;
+    std::error_code ec;
+    if (!in || std::filesystem::is_directory(parts.front(), ec) || !std::getline(in, spec))
+        throw InputError(fmt::format("'{}' cannot be read, or is empty", parts.front()));
+    return read_spec_line(whole_spec_line(spec, parts.front()), parts.front());
 }
 
 std::size_t merge_parts(const SweepSetup& whole, const std::string& out, const std::vector<std::string>& parts,
@@ -75,28 +54,36 @@ std::size_t merge_parts(const SweepSetup& whole, const std::string& out, const s
         std::error_code same_error;
         if (std::filesystem::equivalent(path, out, same_error))
             throw InputError(fmt::format("'{}' is both the merged file and a part: give the merged file another name", path));
-        Lines in(path);
-        std::string line;
-        if (!in.next(line) || whole_spec_line(line, path) != spec)
-            throw InputError(fmt::format("'{}' is not a part of the sweep of '{}': its first line (what the sweep is) "
-                                         "differs", path, parts.front()));
-        if (!in.next(line) || line != head)
-            throw InputError(fmt::format("'{}' is not a part of the sweep of '{}': its header differs", path, parts.front()));
-        while (in.next(line)) {
-            const std::vector<std::string> fields = split_csv(line);
-            const std::optional<std::size_t> index =
-                fields.size() < naxes ? std::nullopt
-                                      : whole.grid.index_of(std::vector<std::string>(fields.begin(), fields.begin() + static_cast<long>(naxes)));
-            if (!index)
-                throw InputError(fmt::format("line {} of '{}' is no scenario of this sweep: {:.80}", in.number(), path, line));
-            if (owner[*index] != 0)
-                throw InputError(fmt::format("the scenario {} is there twice: in '{}' and in '{}' (line {})",
-                                             describe_scenario(whole, *index), parts[owner[*index] - 1], path, in.number()));
-            owner[*index] = static_cast<std::uint32_t>(f + 1);
-            fmt::print(sink.get(), "{}\n", line);
-            on_row(line);
-            ++rows;
-        }
+        std::size_t number = 2;  // the line number of the row being read
+        const RowFileScan scan = scan_row_file(
+            path, 2,
+            [&](const std::vector<std::string>& preamble) {
+                if (whole_spec_line(preamble[0], path) != spec)
+                    throw InputError(fmt::format("'{}' is not a part of the sweep of '{}': its first line (what the "
+                                                 "sweep is) differs", path, parts.front()));
+                if (preamble[1] != head)
+                    throw InputError(fmt::format("'{}' is not a part of the sweep of '{}': its header differs", path,
+                                                 parts.front()));
+            },
+            [&](const std::string& line) {
+                ++number;
+                const std::vector<std::string> fields = split_csv(line);
+                const std::optional<std::size_t> index =
+                    fields.size() < naxes ? std::nullopt
+                                          : whole.grid.index_of(std::vector<std::string>(fields.begin(), fields.begin() + static_cast<long>(naxes)));
+                if (!index)
+                    throw InputError(fmt::format("line {} of '{}' is no scenario of this sweep: {:.80}", number, path, line));
+                if (owner[*index] != 0)
+                    throw InputError(fmt::format("the scenario {} is there twice: in '{}' and in '{}' (line {})",
+                                                 describe_scenario(whole, *index), parts[owner[*index] - 1], path, number));
+                owner[*index] = static_cast<std::uint32_t>(f + 1);
+                fmt::print(sink.get(), "{}\n", line);
+                on_row(line);
+                ++rows;
+            });
+        if (scan.torn)
+            throw InputError(fmt::format("'{}' ends in a torn line: it is the rows of an unfinished run (go on with it "
+                                         "with --resume first)", path));
     }
     std::size_t missing = 0, first = 0;
     for (std::size_t i = owner.size(); i-- > 0;)

@@ -36,27 +36,33 @@ namespace {
 std::size_t take_existing(const SweepSetup& setup, const std::string& path, const std::vector<std::string>& preamble,
                           std::vector<bool>& done, SweepTally& tally,
                           const std::function<void(const std::string&)>& on_row) {
-    const RowFileText text = read_row_file(path, preamble.size());
-    if (text.preamble != preamble)
-        throw InputError(fmt::format("--resume is not allowed: '{}' holds the rows of another sweep (its first lines "
-                                     "differ from this one's); run the same sweep, or remove it", path));
     const std::size_t naxes = setup.grid.axes().size();
-    for (std::size_t k = 0; k < text.rows.size(); ++k) {
-        const std::vector<std::string> fields = split_csv(text.rows[k]);
-        const std::optional<std::size_t> index =
-            fields.size() < naxes ? std::nullopt
-                                  : setup.grid.index_of(std::vector<std::string>(fields.begin(), fields.begin() + static_cast<long>(naxes)));
-        if (!index || !setup.shard.holds(*index))
-            throw InputError(fmt::format("--resume is not allowed: row {} of '{}' is no scenario of this sweep's part: {}",
-                                         k + 1, path, text.rows[k].substr(0, 80)));
-        if (done[*index])
-            throw InputError(fmt::format("--resume is not allowed: '{}' holds the scenario {} twice", path,
-                                         csv_line(setup.grid.cells(*index))));
-        done[*index] = true;
-        ++tally.done_before;
-        on_row(text.rows[k]);
-    }
-    return text.complete_bytes;
+    std::size_t number = 0;
+    const RowFileScan scan = scan_row_file(
+        path, preamble.size(),
+        [&](const std::vector<std::string>& found) {
+            if (found != preamble)
+                throw InputError(fmt::format("--resume is not allowed: '{}' holds the rows of another sweep (its "
+                                             "first lines differ from this one's); run the same sweep, or remove it",
+                                             path));
+        },
+        [&](const std::string& row) {
+            ++number;
+            const std::vector<std::string> fields = split_csv(row);
+            const std::optional<std::size_t> index =
+                fields.size() < naxes ? std::nullopt
+                                      : setup.grid.index_of(std::vector<std::string>(fields.begin(), fields.begin() + static_cast<long>(naxes)));
+            if (!index || !setup.shard.holds(*index))
+                throw InputError(fmt::format("--resume is not allowed: row {} of '{}' is no scenario of this sweep's "
+                                             "part: {:.80}", number, path, row));
+            if (done[*index])
+                throw InputError(fmt::format("--resume is not allowed: '{}' holds the scenario {} twice", path,
+                                             csv_line(setup.grid.cells(*index))));
+            done[*index] = true;
+            ++tally.done_before;
+            on_row(row);
+        });
+    return scan.complete_bytes;
 }
 
 }  // namespace

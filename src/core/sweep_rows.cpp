@@ -8,7 +8,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -56,30 +55,34 @@ std::vector<std::string> split_csv(std::string_view line) {
     return out;
 }
 
-RowFileText read_row_file(const std::string& path, std::size_t preamble_lines) {
+RowFileScan scan_row_file(const std::string& path, std::size_t preamble_lines,
+                          const std::function<void(const std::vector<std::string>&)>& on_preamble,
+                          const std::function<void(const std::string&)>& on_row) {
     std::ifstream in(path, std::ios::binary);
-    if (!in || std::filesystem::is_directory(path)) throw InputError(fmt::format("'{}' cannot be read", path));
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    const std::string text = buffer.str();
-    RowFileText out;
-    std::size_t from = 0;
-    while (from < text.size()) {
-        const std::size_t end = text.find('\n', from);
-        if (end == std::string::npos) {
+    std::error_code ec;
+    if (!in || std::filesystem::is_directory(path, ec)) throw InputError(fmt::format("'{}' cannot be read", path));
+    RowFileScan out;
+    bool heard = false;
+    for (std::string line; std::getline(in, line);) {
+        if (in.eof()) {
             out.torn = true;  // written up to a kill: not a row
             break;
         }
-        std::string line = text.substr(from, end - from);
+        out.complete_bytes += line.size() + 1;
         if (!line.empty() && line.back() == '\r') line.pop_back();
-        (out.preamble.size() < preamble_lines ? out.preamble : out.rows).push_back(std::move(line));
-        from = end + 1;
+        if (out.preamble.size() < preamble_lines) {
+            out.preamble.push_back(std::move(line));
+            continue;
+        }
+        if (!heard) on_preamble(out.preamble), heard = true;
+        ++out.rows;
+        on_row(line);
     }
-    out.complete_bytes = from;
     if (out.preamble.size() < preamble_lines)
         throw InputError(fmt::format("'{}' is not a sweep's rows: it has {} complete line{}, and a sweep's file "
                                      "starts with {}", path, out.preamble.size(), out.preamble.size() == 1 ? "" : "s",
                                      preamble_lines));
+    if (!heard) on_preamble(out.preamble);
     return out;
 }
 

@@ -152,6 +152,14 @@ TEST(CliSweepShards, MergedEqualTheWholeAndMustHoldEachScenarioOnce) {
     EXPECT_TRUE(contains(r.err, "twice")) << r.err;
     EXPECT_TRUE(contains(r.err, "part2.csv")) << r.err;
     EXPECT_FALSE(fs::exists(merged));
+    // A part whose run was killed (its last row torn): resume it before merging.
+    fs::copy_file(dir / "part2.csv", dir / "torn.csv");
+    std::ofstream(dir / "torn.csv", std::ios::app | std::ios::binary) << "40,2,1.2";
+    r = run_dragon("sweep merge " + merged.string() + " " + (dir / "part1.csv").string() + " " +
+                   (dir / "torn.csv").string() + " " + (dir / "part3.csv").string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_TRUE(contains(r.err, "torn")) << r.err;
+    EXPECT_FALSE(fs::exists(merged));
     // A part of another sweep.
     run_whole(dir / "other.csv", "--vary bench-count=20:40:6 --vary arc-ratio=1.5,2 --measure max-speed --limit 1.9 -q");
     r = run_dragon("sweep merge " + merged.string() + parts + " " + (dir / "other.csv").string());

@@ -36,9 +36,21 @@ TEST(SweepRows, TornLastLineIsDroppedAndCutOffBeforeTheNextRow) {
         std::ofstream torn(file, std::ios::app | std::ios::binary);
         torn << "3,par";  // what a kill in the middle of a write leaves
     }
-    RowFileText text = read_row_file(file.string(), 2);
-    EXPECT_EQ(text.preamble, (std::vector<std::string>{"# spec", "a,b"}));
-    EXPECT_EQ(text.rows, (std::vector<std::string>{"1,x", "2,\"y, z\""}));
+    std::vector<std::string> preamble, rows;
+    const auto scan = [&](const fs::path& p, std::size_t lines) {
+        preamble.clear(), rows.clear();
+        return scan_row_file(
+            p.string(), lines, [&](const std::vector<std::string>& pre) { preamble = pre; },
+            [&](const std::string& row) {
+                EXPECT_EQ(preamble.size(), lines);  // the preamble is heard first
+                rows.push_back(row);
+            });
+    };
+    RowFileScan text = scan(file, 2);
+    EXPECT_EQ(preamble, (std::vector<std::string>{"# spec", "a,b"}));
+    EXPECT_EQ(text.preamble, preamble);
+    EXPECT_EQ(rows, (std::vector<std::string>{"1,x", "2,\"y, z\""}));
+    EXPECT_EQ(text.rows, 2u);
     EXPECT_TRUE(text.torn);
     {
         auto log = RowLog::reopen(file.string(), text.complete_bytes);
@@ -46,11 +58,16 @@ TEST(SweepRows, TornLastLineIsDroppedAndCutOffBeforeTheNextRow) {
         log->finish((dragon_test::scratch_dir() / "rows.csv").string());
     }
     EXPECT_FALSE(fs::exists(file));
-    text = read_row_file((dragon_test::scratch_dir() / "rows.csv").string(), 2);
-    EXPECT_EQ(text.rows, (std::vector<std::string>{"1,x", "2,\"y, z\"", "3,again"}));
+    text = scan(dragon_test::scratch_dir() / "rows.csv", 2);
+    EXPECT_EQ(rows, (std::vector<std::string>{"1,x", "2,\"y, z\"", "3,again"}));
     EXPECT_FALSE(text.torn);
-    EXPECT_THROW(read_row_file(file.string(), 2), InputError);                                   // gone
-    EXPECT_THROW(read_row_file((dragon_test::scratch_dir() / "rows.csv").string(), 9), InputError);  // too short
+    EXPECT_THROW(scan(file, 2), InputError);                                   // gone
+    EXPECT_THROW(scan(dragon_test::scratch_dir() / "rows.csv", 9), InputError);  // too short
+    // A preamble alone (a sweep killed before its first row) is heard too.
+    { auto log = RowLog::create(file.string(), {"# spec", "a,b"}); }
+    text = scan(file, 2);
+    EXPECT_EQ(preamble.size(), 2u);
+    EXPECT_EQ(text.rows, 0u);
 }
 
 TEST(SweepRun, EachScenarioNotDoneIsMadeOnceAndEmittedOneAtATime) {
