@@ -41,24 +41,68 @@ void leaves(const Json& v, const std::string& prefix, std::vector<std::string>& 
     for (const auto& [k, item] : v.items()) leaves(item, prefix.empty() ? k : prefix + "." + k, out);
 }
 
+// Each measure as its command runs it, on the calling thread: the sweep spreads the scenarios
+// over the cores, and work nested inside one would only queue behind them. `jam` is set to
+// where the end of the valid motion cut the analysis short.
+Json collide_measure(const Scenario& s, const MeasureOptions&, std::string& jam) {
+    InlineExecutor here;
+    const CollideSearch search = search_collision(Simulation(s), 0.0, std::nullopt, &here);
+    if (search.jam) jam = "no contact before the end of the valid motion: " + jam_sentence(*search.jam);
+    return collide_answer(search, false);
+}
+
+Json min_pitch_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
+    InlineExecutor here;
+    dragon::MinPitchOptions o;
+    o.grid = options.grid;
+    o.executor = &here;
+    const MinPitch mp = min_pitch(s, options.lo.at(s), options.hi.at(s), o);
+    if (mp.jam)
+        jam = fmt::format("at pitch {} m the dragon cannot follow the spiral to radius {} m: {}", mp.jam->pitch,
+                          s.path.turn_radius, jam_sentence(mp.jam->jam));
+    return min_pitch_answer(mp, s.path.turn_radius);
+}
+
+// The command's design, followability and clearance check; its length study (two dozen other
+// S-curves) is the command's to print, not a value of this scenario.
+Json turnaround_measure(const Scenario& s, const MeasureOptions&, std::string& jam) {
+    InlineExecutor here;
+    const SCurve design = design_s_curve(s);
+    std::vector<TurnStudyRow> own = length_vs_ratio(s.path.turn_pitch, s.path.turn_radius, {s.path.arc_ratio});
+    followability(own, s.path.turn_pitch, s.bench, s.head_speed);
+    const RunClearance clear = min_clearance(s, -100.0, 100.0, {}, &here);
+    const std::optional<Jam>& j = clear.jam ? clear.jam : own.front().jam;
+    if (j) jam = jam_sentence(*j, j->time > 0.0);
+    return turnaround_answer(design, own.front().jam, clear, nullptr);
+}
+
+Json max_speed_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
+    const MaxSpeed v = max_head_speed(s, options.limit);
+    if (v.jam)
+        jam = v.unbounded ? fmt::format("no head speed keeps every handle at or under {} m/s: {}", options.limit,
+                                        jam_sentence(*v.jam))
+                          : "searched only as far as " + jam_sentence(*v.jam);
+    return max_speed_answer(v, options.limit);
+}
+
 }  // namespace
 
 const std::vector<MeasureInfo>& sweep_measures() {
     static const std::vector<MeasureInfo> all = {
-        {"collide", values_read(PathKind::spiral),
+        {"collide", PathKind::spiral, values_read(PathKind::spiral), collide_measure,
          with_jam({"time", "benches", "head_radius", "point", "tolerance", "evaluations", "from", "to"}), "time",
          "first contact", "s", true},
-        {"min-pitch", ScenarioUse::pitch_search().all(),
+        {"min-pitch", PathKind::spiral, ScenarioUse::pitch_search().all(), min_pitch_measure,
          with_jam({"pitch", "below_range", "above_range", "turn_radius", "search", "grid", "intervals"}, {"guarantee"},
                   {"jam.pitch"}),
          "pitch", "minimum pitch", "m", false},
-        {"turnaround", ScenarioUse::turnaround_only().all(),
+        {"turnaround", PathKind::turnaround, ScenarioUse::turnaround_only().all(), turnaround_measure,
          with_jam({"r1", "r2", "length", "ratio", "pitch", "entry_radius", "entry", "exit", "c1", "c2", "joint", "angle1",
                    "angle2", "length1", "length2", "max_radius", "followable", "clearance.distance",
                    "clearance.at_least", "clearance.time", "clearance.benches", "clearance.collision_free",
                    "clearance.from", "clearance.to"}),
          "clearance.distance", "smallest clearance", "m", true},
-        {"max-speed", ScenarioUse::turnaround_only().all(),
+        {"max-speed", PathKind::turnaround, ScenarioUse::turnaround_only().all(), max_speed_measure,
          with_jam({"max_head_speed", "ratio", "unbounded", "handle", "time", "tied", "head_arc", "limit", "from", "to"},
                   {"scan_step", "candidates", "evaluations"}),
          "max_head_speed", "largest head speed", "m/s", true},
@@ -93,55 +137,19 @@ PitchBound parse_pitch_bound(const std::string& flag, const std::string& text) {
 
 MeasureResult run_measure(const MeasureInfo& m, const Scenario& scenario, const MeasureOptions& options) {
     using State = MeasureResult::State;
-    const std::string name = m.name;
     MeasureResult out;
-    // Each scenario's analysis runs on this worker alone: the sweep spreads the scenarios over
-    // the cores, and work nested inside one would only queue behind them.
-    InlineExecutor here;
-    const auto jam_note = [&](const std::string& what) {
-        out.state = State::jam;
-        out.note = fmt::format("jam ({}): {}", name, what);
-    };
     try {
         Scenario s = scenario;
-        s.path.kind = name == "collide" || name == "min-pitch" ? PathKind::spiral : PathKind::turnaround;
+        s.path.kind = m.path;
         validate(s, m.reads);
-        if (name == "collide") {
-            const CollideSearch search = search_collision(Simulation(s), 0.0, std::nullopt, &here);
-            out.answer = collide_answer(search, false);
-            if (search.jam) jam_note("no contact before the end of the valid motion: " + jam_sentence(*search.jam));
-        } else if (name == "min-pitch") {
-            dragon::MinPitchOptions o;
-            o.grid = options.grid;
-            o.executor = &here;
-            const MinPitch mp = min_pitch(s, options.lo.at(s), options.hi.at(s), o);
-            out.answer = min_pitch_answer(mp, s.path.turn_radius);
-            if (mp.jam)
-                jam_note(fmt::format("at pitch {} m the dragon cannot follow the spiral to radius {} m: {}", mp.jam->pitch,
-                                     s.path.turn_radius, jam_sentence(mp.jam->jam)));
-        } else if (name == "turnaround") {
-            // The command's design, followability and clearance check; its length study (two
-            // dozen other S-curves) is the command's to print, not a value of this scenario.
-            const SCurve design = design_s_curve(s);
-            std::vector<TurnStudyRow> own = length_vs_ratio(s.path.turn_pitch, s.path.turn_radius, {s.path.arc_ratio});
-            followability(own, s.path.turn_pitch, s.bench, s.head_speed);
-            const RunClearance clear = min_clearance(s, -100.0, 100.0, {}, &here);
-            out.answer = turnaround_answer(design, own.front().jam, clear, nullptr);
-            const std::optional<Jam>& j = clear.jam ? clear.jam : own.front().jam;
-            if (j) jam_note(jam_sentence(*j, j->time > 0.0));
-        } else {
-            const MaxSpeed v = max_head_speed(s, options.limit);
-            out.answer = max_speed_answer(v, options.limit);
-            if (v.jam)
-                jam_note(v.unbounded ? fmt::format("no head speed keeps every handle at or under {} m/s: {}",
-                                                   options.limit, jam_sentence(*v.jam))
-                                     : "searched only as far as " + jam_sentence(*v.jam));
-        }
+        std::string jam;
+        out.answer = m.answer(s, options, jam);
+        if (!jam.empty()) out.state = State::jam, out.note = fmt::format("jam ({}): {}", m.name, jam);
     } catch (const InputError& e) {
-        out = {State::refused, std::nullopt, fmt::format("refused ({}): {}", name, e.what())};
+        out = {State::refused, std::nullopt, fmt::format("refused ({}): {}", m.name, e.what())};
     } catch (const std::exception& e) {
         // Not the scenario's fault: the row says so and the sweep goes on (the run fails at its end).
-        out = {State::failed, std::nullopt, fmt::format("failed ({}): {}", name, e.what())};
+        out = {State::failed, std::nullopt, fmt::format("failed ({}): {}", m.name, e.what())};
     }
     return out;
 }

@@ -12,9 +12,15 @@
 
 namespace dragon::cli {
 
+struct MeasureOptions;
+
 struct MeasureInfo {
     const char* name;        // as in --measure: "collide", "min-pitch", "turnaround", "max-speed"
+    PathKind path;           // the path its command runs on
     ScenarioValues reads;    // the scenario values its command reads
+    // The command's analysis and --json answer for a scenario of those values (checked), on the
+    // calling thread; sets `jam` to a sentence where the end of the valid motion cut it short.
+    Json (*answer)(const Scenario& s, const MeasureOptions& options, std::string& jam);
     // The answer's keys, flattened: a nested object's keys joined with dots ("jam.time"); arrays
     // and the values of the keys listed stay whole (a cell holds them as compact JSON).
     std::vector<std::string> columns;
