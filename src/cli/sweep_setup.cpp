@@ -199,8 +199,11 @@ SweepRow make_row(const SweepSetup& setup, std::size_t index) {
     SweepRow row;
     row.json = Json::object();
     const std::vector<std::size_t> pos = setup.grid.position(index);
-    for (std::size_t k = 0; k < setup.grid.axes().size(); ++k)
-        row.json[setup.grid.axes()[k].parameter->name] = setup.grid.axes()[k].values[pos[k]];
+    for (std::size_t k = 0; k < setup.grid.axes().size(); ++k) {
+        const Axis& a = setup.grid.axes()[k];
+        const double v = a.values[pos[k]];
+        row.json[a.parameter->name] = a.parameter->whole ? Json(static_cast<long long>(v)) : Json(v);
+    }
     std::vector<std::string> notes;
     for (const MeasureInfo* m : setup.measures) {
         const MeasureResult r = run_measure(*m, s, setup.options);
