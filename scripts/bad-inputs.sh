@@ -117,6 +117,29 @@ row turnaround --no-clearance --to 5
 row figures --list --scale 2
 row max-speed --quiet
 
+header "dragon sweep (tests/cli/test_cli_sweep.cpp, tests/cli/test_cli_sweep_resume.cpp)"
+row sweep --vary width=0.2:0.4 --measure collide -o out.csv
+row sweep --vary width=0.2:0.4:two --measure collide -o out.csv
+row sweep --vary colour=1,2 --measure collide -o out.csv
+row sweep --vary width=0.3,0.3 --measure collide -o out.csv
+row sweep --vary bench-count=10:11:3 --measure collide -o out.csv
+row sweep --vary pitch=0.5,0.6 --measure min-pitch -o out.csv
+row sweep --vary width=0.3,0.4 --measure bogus -o out.csv
+row sweep --vary width=0.3,0.4 -o out.csv
+row sweep --measure collide -o out.csv
+row sweep --vary width=0.3,0.4 --measure collide --width 0.3 -o out.csv
+row sweep --vary width=0.3,0.4 --measure max-speed --pitch 0.6 -o out.csv
+row sweep --vary width=0.3,0.4 --measure collide --limit 3 -o out.csv
+row sweep --vary width=0.3,0.4 --measure min-pitch --lo width-0.1 -o out.csv
+row sweep --vary width=0.3,0.4 --measure collide --shard 0/2 -o out.csv
+row sweep --vary width=0.3,0.4 --measure collide -o out.txt
+row sweep --vary width=0.3,0.4 --measure collide --resume
+row sweep --vary width=0.3 --measure collide --plot x.png
+row sweep --vary width=0.3,0.4 --measure collide --plot x.pdf
+row sweep merge out.csv
+row sweep merge out.csv --bogus
+row_last sweep --vary width=0.3,0.6 --bench-count 20 --measure collide --workers 1
+
 header "dragon video (tests/cli/test_cli_video.cpp)"
 row video -o a.mp4 --size 65x48 --to 1
 row video -o a.webm --size 64x47 --to 1

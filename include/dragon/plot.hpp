@@ -2,6 +2,7 @@
 // reference lines and text in data coordinates. Enough for the figures of a paper, no more.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,6 +45,15 @@ struct PlotRefLine {
     bool dashed = true;
 };
 
+// Where a plot's data area landed: its box in the surface's units (y0 at the top) and the data
+// range it shows, to draw more in data coordinates.
+struct PlotArea {
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    double x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;
+    double px(double x) const { return x0 + (x - x_lo) / (x_hi - x_lo) * (x1 - x0); }
+    double py(double y) const { return y1 - (y - y_lo) / (y_hi - y_lo) * (y1 - y0); }
+};
+
 struct Plot {
     Theme theme;
     std::string title, note, x_label, y_label;  // note: a smaller line under the title
@@ -54,14 +64,18 @@ struct Plot {
     bool equal_aspect = false;  // one metre the same length on both axes (geometry)
     enum class Legend { none, top_left, top_right, bottom_left, bottom_right };
     Legend legend = Legend::top_right;
+    // Drawn first in the data area (clipped to it), under the reference lines and the series: a
+    // heat map's cells, say. `u` is the plot's unit of line widths and text sizes, px.
+    std::function<void(cairo_t* cr, const PlotArea& area, double u)> underlay;
 };
 
 // A qualitative colour for series i (colour-blind-safe order, Okabe-Ito), darker or lighter to
 // suit the theme's background.
 Rgba series_colour(const Theme& theme, int i);
 
-// Draws the plot inside the box (x, y, w, h) of cr's current user space, background included.
-void draw_plot(cairo_t* cr, const Plot& plot, double x, double y, double w, double h);
+// Draws the plot inside the box (x, y, w, h) of cr's current user space, background included;
+// returns where its data area is.
+PlotArea draw_plot(cairo_t* cr, const Plot& plot, double x, double y, double w, double h);
 // All-or-nothing PNG of one plot.
 void render_plot_png(const Plot& plot, int width_px, int height_px, const std::string& path);
 

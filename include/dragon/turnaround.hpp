@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "dragon/executor.hpp"
 #include "dragon/geometry.hpp"
 #include "dragon/path.hpp"
 #include "dragon/progress.hpp"
@@ -141,9 +142,10 @@ struct RunClearance {
     std::optional<Jam> jam;
 };
 // Over [t0, t1] cut to the valid motion (Simulation::clip_to_valid). `progress` hears of the
-// coarse scan's samples (most of the time taken).
+// coarse scan's samples (most of the time taken). The exact search, where the scan cannot
+// certify the run, runs on `executor` (null: default_executor()).
 RunClearance min_clearance(const Scenario& s, double t0 = -100.0, double t1 = 100.0,
-                           const WorkProgress& progress = {});
+                           const WorkProgress& progress = {}, Executor* executor = nullptr);
 
 // Q5: the largest head speed with every handle at or under `limit`. The speed ratio
 // (largest handle speed over the head's) does not depend on the head speed, so it is maximised

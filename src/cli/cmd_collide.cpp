@@ -1,10 +1,8 @@
 // dragon collide (Q2): the first moment two benches touch.
-#include <cmath>
-
 #include <fmt/format.h>
 
+#include "cli/answers.hpp"
 #include "cli/commands.hpp"
-#include "cli/contact_search.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
@@ -54,47 +52,23 @@ void register_collide(CLI::App& app, Registry& reg) {
                                          *opt->digits, opt->out.empty() ? "without -o" : "with " + ext));
         const int digits = checked_digits(opt->digits);
         const Scenario s = opt->scenario.resolve();
-        if (!std::isfinite(opt->from))
-            throw InputError(fmt::format("--from {} is not allowed: give a finite time in seconds", opt->from));
-        if (opt->to && !std::isfinite(*opt->to))
-            throw InputError(fmt::format("--to {} is not allowed: give a finite time in seconds, or leave --to out "
-                                         "to search as far as the dragon can follow its path", *opt->to));
-        if (opt->to && !(*opt->to > opt->from))
-            throw InputError(fmt::format("--to {} is not allowed: it must be after --from {}", *opt->to, opt->from));
+        check_collide_range(opt->from, opt->to);
         if (!opt->out.empty()) {
             if (ext != ".csv" && ext != ".json" && ext != ".xlsx")
                 throw InputError(fmt::format("--out {} has extension '{}': use .csv, .json or .xlsx", opt->out, ext));
             AtomicFile probe(opt->out);  // fail on an unwritable path before any work
         }
         const Simulation sim(s);
-        double to = 0.0;
-        std::optional<Jam> jam;  // the end of the valid motion, if it cuts the search short
-        if (opt->to) {
-            const Simulation::Span span = sim.clip_to_valid(opt->from, *opt->to, "time range start", "time range end");
-            to = span.to;
-            jam = span.jam;
-        } else {
-            const ValidRange valid = sim.valid_range();
-            if (!std::isfinite(valid.to))
-                throw InputError("--to is needed here: on the turnaround path the dragon's motion never ends");
-            sim.require_valid(opt->from, "time range start");
-            to = valid.to;
-            jam = valid.after;
-            if (!(to > opt->from))
-                throw InputError(fmt::format("--from {} is not allowed: the search would be empty, {}", opt->from,
-                                             jam ? jam_sentence(*jam) : "the head reaches the spiral's centre then"));
-        }
-        const std::optional<Contact> c = first_contact_after(sim, opt->from, to);
-        if (c) jam.reset();  // the contact comes first: the range was not cut short before it
+        const CollideSearch search = search_collision(sim, opt->from, opt->to);
+        const std::optional<Contact>& c = search.contact;
         if (!c) {
             if (!opt->out.empty()) write_no_contact(opt->out);
             if (opt->json) {
-                print_json({{"time", nullptr}, {"benches", nullptr}, {"head_radius", nullptr}, {"from", opt->from},
-                            {"to", to}, {"jam", jam_json(jam)}});
+                print_json(collide_answer(search, true));
             } else {
-                fmt::print("no collision between t = {} s and t = {} s\n", format_time(opt->from),
-                           jam ? format_resolved(to, jam->tolerance) : format_time(to));
-                if (jam) fmt::print("the search ends there: {}\n", jam_sentence(*jam));
+                fmt::print("no collision between t = {} s and t = {} s\n", format_time(search.from),
+                           search.jam ? format_resolved(search.to, search.jam->tolerance) : format_time(search.to));
+                if (search.jam) fmt::print("the search ends there: {}\n", jam_sentence(*search.jam));
             }
             if (!opt->out.empty()) status(opt->quiet, "no contact: wrote {} with the table's header and no rows", opt->out);
             return 0;
@@ -105,17 +79,7 @@ void register_collide(CLI::App& app, Registry& reg) {
             status(opt->quiet, "wrote {}", opt->out);
         }
         if (opt->json) {
-            Json handles = Json::array();
-            for (const Handle& h : c->frame.handles)
-                handles.push_back({{"x", round6(h.pos.x)}, {"y", round6(h.pos.y)}, {"speed", round6(h.speed)}});
-            print_json({{"time", c->time},
-                        {"benches", {c->bench_a, c->bench_b}},
-                        {"head_radius", c->head_radius},
-                        {"point", {c->point.x, c->point.y}},
-                        {"tolerance", c->tolerance},
-                        {"evaluations", c->steps},
-                        {"jam", nullptr},
-                        {"handles", handles}});
+            print_json(collide_answer(search, true));
         } else {
             fmt::print("first contact at t = {} s: bench {} touches bench {}; head radius {:.6f} m\n",
                        format_resolved(c->time, c->tolerance), c->bench_a, c->bench_b, c->head_radius);

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "cli/answers.hpp"
 #include "cli/commands.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
@@ -37,20 +38,7 @@ void register_max_speed(CLI::App& app, Registry& reg) {
         s.path.kind = PathKind::turnaround;
         const MaxSpeed m = max_head_speed(s, opt->limit, opt->from, opt->to);
         if (opt->json) {
-            print_json({{"max_head_speed", m.max_head_speed},
-                        {"ratio", m.unbounded ? Json(nullptr) : Json(m.ratio)},
-                        {"unbounded", m.unbounded},
-                        {"handle", m.handle},
-                        {"time", m.time},
-                        {"tied", m.tied},
-                        {"head_arc", m.head_arc},
-                        {"limit", opt->limit},
-                        {"from", m.from},
-                        {"to", m.to},
-                        {"jam", jam_json(m.jam)},
-                        {"scan_step", m.unbounded ? Json(nullptr) : Json(m.scan_step)},
-                        {"candidates", m.candidates},
-                        {"evaluations", m.evaluations}});
+            print_json(max_speed_answer(m, opt->limit));
             return 0;
         }
         if (m.unbounded) {

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/answers.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "cli/report.hpp"
@@ -44,20 +45,7 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
             return min_pitch(s, opt->lo, opt->hi, options);
         }();
         if (opt->json) {
-            Json intervals = Json::array();
-            for (const PitchInterval& i : m.intervals)
-                intervals.push_back({{"lo", i.lo}, {"hi", i.hi}, {"feasible", i.feasible}});
-            Json jam = jam_json(m.jam ? std::optional<Jam>(m.jam->jam) : std::nullopt);
-            if (m.jam) jam["pitch"] = m.jam->pitch;
-            print_json({{"pitch", std::isnan(m.pitch) ? Json(nullptr) : Json(m.pitch)},
-                        {"below_range", m.below_range},
-                        {"above_range", m.above_range},
-                        {"turn_radius", s.path.turn_radius},
-                        {"search", {m.search_lo, m.search_hi}},
-                        {"grid", m.grid},
-                        {"intervals", intervals},
-                        {"jam", jam},
-                        {"guarantee", min_pitch_guarantee(m)}});
+            print_json(min_pitch_answer(m, s.path.turn_radius));
             return 0;
         }
         // The pitch is resolved to tol::pitch (1e-9 m): ten decimals show it.

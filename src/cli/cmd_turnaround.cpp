@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/answers.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "cli/report.hpp"
@@ -30,63 +31,6 @@ struct TurnaroundOptions {
     std::string out;
     bool quiet = false;
 };
-
-Json point(Vec2 p) { return {p.x, p.y}; }
-
-Json rows_json(const std::vector<TurnStudyRow>& rows) {
-    Json out = Json::array();
-    for (const TurnStudyRow& r : rows)
-        out.push_back({{"ratio", r.ratio},
-                       {"entry_radius", r.entry_radius},
-                       {"r1", r.r1},
-                       {"r2", r.r2},
-                       {"angle", r.angle},
-                       {"s_curve_length", r.s_curve_length},
-                       {"inside_length", r.inside_length},
-                       {"max_radius", r.max_radius},
-                       {"followable", r.followable()},
-                       {"jam", jam_json(r.jam)}});
-    return out;
-}
-
-void print_answer_json(const TurnaroundStudy& st, const std::optional<RunClearance>& clear) {
-    const SCurve& d = st.design;
-    Json answer = {{"r1", d.r1},
-                   {"r2", d.r2},
-                   {"length", d.length},
-                   {"ratio", d.ratio},
-                   {"pitch", d.pitch},
-                   {"entry_radius", d.entry_radius},
-                   {"entry", point(d.entry)},
-                   {"exit", point(d.exit)},
-                   {"c1", point(d.c1)},
-                   {"c2", point(d.c2)},
-                   {"joint", point(d.joint)},
-                   {"angle1", d.angle1},
-                   {"angle2", d.angle2},
-                   {"length1", d.length1},
-                   {"length2", d.length2},
-                   {"max_radius", d.max_radius},
-                   {"followable", !st.design_jam},
-                   {"length_vs_ratio", rows_json(st.by_ratio)},
-                   {"length_vs_entry_radius", rows_json(st.by_entry)},
-                   {"ratio_spread", st.ratio_spread},
-                   {"conclusion", turnaround_conclusion(st)}};
-    if (clear) {
-        // No pair within the scan's cutoff: the distance is only a lower bound, with no pair or time.
-        const bool near = clear->bench_a > 0;
-        answer["clearance"] = {{"distance", clear->distance},
-                               {"at_least", !near},
-                               {"time", near ? Json(clear->time) : Json(nullptr)},
-                               {"benches", near ? Json({clear->bench_a, clear->bench_b}) : Json(nullptr)},
-                               {"collision_free", clear->collision_free},
-                               {"from", clear->from},
-                               {"to", clear->to}};
-    }
-    // The end of the valid motion where it cuts the clearance run short, else on the design.
-    answer["jam"] = jam_json(clear && clear->jam ? clear->jam : st.design_jam);
-    print_json(answer);
-}
 
 // "yes", or "no: handle 1 jumps at t = 15.147713 s".
 std::string followable(const TurnStudyRow& r) {
@@ -166,7 +110,7 @@ void register_turnaround(CLI::App& app, Registry& reg) {
                                   [&progress](std::int64_t done, std::int64_t total) { progress.update(done, total); });
         }
         if (!opt->out.empty()) write_study_csv(st, opt->out);
-        if (opt->json) print_answer_json(st, clear);
+        if (opt->json) print_json(turnaround_answer(st.design, st.design_jam, clear, &st));
         else print_text(st, clear);
         if (!opt->out.empty()) status(opt->quiet, "wrote {}", opt->out);
         return 0;

@@ -6,8 +6,9 @@
 
 namespace dragon::cli {
 
-std::optional<Contact> first_contact_after(const Simulation& sim, double from, double to) {
-    std::optional<Contact> c = first_contact(sim, from, to);
+std::optional<Contact> first_contact_after(const Simulation& sim, double from, double to,
+                                           const ContactSearchOptions& options) {
+    std::optional<Contact> c = first_contact(sim, from, to, options);
     // Touching exactly at `from` is a contact at `from`; overlapping there is not.
     if (c && c->time <= from) {
         const Clearance now = clearance(c->frame);

@@ -9,8 +9,9 @@
 
 namespace dragon::cli {
 
-// first_contact(sim, from, to), but throws InputError (one line: which benches, by how much)
-// when two benches already overlap at `from`.
-std::optional<Contact> first_contact_after(const Simulation& sim, double from, double to);
+// first_contact(sim, from, to, options), but throws InputError (one line: which benches, by how
+// much) when two benches already overlap at `from`.
+std::optional<Contact> first_contact_after(const Simulation& sim, double from, double to,
+                                           const ContactSearchOptions& options = {});
 
 }  // namespace dragon::cli

@@ -25,6 +25,8 @@ const std::map<std::string, std::string>& flag_of_field() {
         {"pitch search range end", "--hi"},
         {"speed limit", "--limit"},
         {"decimals", "--digits"},
+        {"sweep axis", "--vary"},
+        {"shard", "--shard"},
     };
     return flags;
 }

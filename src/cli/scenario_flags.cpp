@@ -1,6 +1,8 @@
 #include "cli/scenario_flags.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <iterator>
 #include <map>
 
@@ -70,25 +72,25 @@ void ScenarioFlags::add_to(CLI::App* sub, ScenarioUse use) {
     reasons()[sub] = use.why_not;
     sub->add_option("--scenario", file_, "Scenario TOML file (see assets/cumcm2024.toml); flags override it");
     if (use.path_choice) sub->add_option("--path", path_kind_, "Path: spiral (Q1-Q3, default) or turnaround (Q4-Q5)");
-    // Where each value's flag is stored (the bench count is a whole number of its own).
-    const auto slot = [this](ScenarioValues v) -> std::optional<double>* {
-        if (v == value::pitch) return &pitch_;
-        if (v == value::head_speed) return &speed_;
-        if (v == value::head_length) return &head_length_;
-        if (v == value::body_length) return &body_length_;
-        if (v == value::width) return &width_;
-        if (v == value::hole_offset) return &hole_offset_;
-        if (v == value::start_turn) return &start_turn_;
-        if (v == value::turn_radius) return &turn_radius_;
-        if (v == value::turn_pitch) return &turn_pitch_;
-        if (v == value::arc_ratio) return &arc_ratio_;
-        return nullptr;
-    };
     for (const FlagInfo& f : kFlags) {
         if (!(use.all() & f.value)) continue;
         if (f.value == value::bench_count) sub->add_option(f.name, bench_count_, f.help);
         else sub->add_option(f.name, *slot(f.value), f.help);
     }
+}
+
+std::optional<double>* ScenarioFlags::slot(ScenarioValues v) {
+    if (v == value::pitch) return &pitch_;
+    if (v == value::head_speed) return &speed_;
+    if (v == value::head_length) return &head_length_;
+    if (v == value::body_length) return &body_length_;
+    if (v == value::width) return &width_;
+    if (v == value::hole_offset) return &hole_offset_;
+    if (v == value::start_turn) return &start_turn_;
+    if (v == value::turn_radius) return &turn_radius_;
+    if (v == value::turn_pitch) return &turn_pitch_;
+    if (v == value::arc_ratio) return &arc_ratio_;
+    return nullptr;  // the bench count is a whole number, stored on its own
 }
 
 std::string ScenarioFlags::not_taken(const CLI::App& sub, const std::string& flag) {
@@ -99,6 +101,36 @@ std::string ScenarioFlags::not_taken(const CLI::App& sub, const std::string& fla
         return fmt::format("dragon {} does not take {}{}{}", sub.get_name(), flag, why.empty() ? "" : ": ", why);
     }
     return "";
+}
+
+ScenarioValues ScenarioFlags::given() const {
+    ScenarioValues v = bench_count_ ? value::bench_count : 0;
+    for (const FlagInfo& f : kFlags)
+        if (f.value != value::bench_count && slot(f.value)->has_value()) v |= f.value;
+    return v;
+}
+
+void ScenarioFlags::fill(const std::string& scenario_file,
+                         const std::vector<std::pair<std::string, std::string>>& values, const std::string& source) {
+    if (file_.empty()) file_ = scenario_file;
+    for (const auto& [name, text] : values) {
+        const auto f = std::find_if(std::begin(kFlags), std::end(kFlags),
+                                    [&](const FlagInfo& i) { return "--" + name == i.name; });
+        if (f == std::end(kFlags))
+            throw InputError(fmt::format("{}: {} is not a scenario flag (use the flags' names without their dashes: "
+                                         "width, body-length, ...)", source, name));
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (text.empty() || end != text.c_str() + text.size())
+            throw InputError(fmt::format("{}: {} = {} is not allowed: give a number", source, name, text));
+        if (f->value == value::bench_count) {
+            if (v != std::floor(v) || !(std::abs(v) <= 1e9))
+                throw InputError(fmt::format("{}: bench-count = {} is not allowed: give a whole number", source, text));
+            if (!bench_count_) bench_count_ = static_cast<long long>(v);
+            continue;
+        }
+        if (std::optional<double>* s = slot(f->value); !*s) *s = v;
+    }
 }
 
 Scenario ScenarioFlags::resolve() const { return resolve(value::all, ""); }

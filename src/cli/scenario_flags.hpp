@@ -4,6 +4,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -47,11 +49,22 @@ public:
     // it are not checked, and a flag for one is refused with "<flag> is not used: <why>".
     Scenario resolve(ScenarioValues reads, const std::string& why) const;
 
+    // The scenario flags given on the command line, one bit per value.
+    ScenarioValues given() const;
+    // Values from elsewhere (a sweep file) under the command line: `scenario_file` if --scenario
+    // was not given, and each (flag name without dashes, value) whose flag was not. Throws
+    // InputError naming `source` for a name that is no scenario flag or a value that is no number.
+    void fill(const std::string& scenario_file, const std::vector<std::pair<std::string, std::string>>& values,
+              const std::string& source);
+
     // For an option a subcommand does not take: if it is a scenario flag, one sentence saying
     // so and why (for the command line's error); else "".
     static std::string not_taken(const CLI::App& sub, const std::string& flag);
 
 private:
+    std::optional<double>* slot(ScenarioValues v);  // where a value's flag is stored
+    const std::optional<double>* slot(ScenarioValues v) const { return const_cast<ScenarioFlags*>(this)->slot(v); }
+
     ScenarioUse use_;
     std::string file_;
     std::string path_kind_;

@@ -45,7 +45,8 @@ double fastest_point(const Frame& f) {
 
 }  // namespace
 
-RunClearance min_clearance(const Scenario& scenario, double t0, double t1, const WorkProgress& progress) {
+RunClearance min_clearance(const Scenario& scenario, double t0, double t1, const WorkProgress& progress,
+                           Executor* executor) {
     if (!std::isfinite(t0) || !std::isfinite(t1) || t1 <= t0)
         throw InputError("time range", fmt::format("{}..{} s", t0, t1), "it must be finite and non-empty");
     Scenario s = scenario;
@@ -109,7 +110,9 @@ RunClearance min_clearance(const Scenario& scenario, double t0, double t1, const
     }
     if (out.distance == std::numeric_limits<double>::infinity()) out.distance = kCutoff;
     // Not certified by the scan (benches come close, or touch): the exact search decides.
-    out.collision_free = certified || !first_contact(sim, t0, t1).has_value();
+    ContactSearchOptions options;
+    options.executor = executor;
+    out.collision_free = certified || !first_contact(sim, t0, t1, options).has_value();
     return out;
 }
 

@@ -159,7 +159,7 @@ void draw_legend(cairo_t* cr, const Plot& p, const Frame2& f, double u) {
 
 }  // namespace
 
-void draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, double h) {
+PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, double h) {
     const double u = std::max(0.4, std::min(w / 900.0, h / 560.0) * 1.25);
     const Theme& th = p.theme;
     cairo_save(cr);
@@ -199,9 +199,15 @@ void draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, double 
     for (double v : yt.values) cairo_move_to(cr, f.x0, f.py(v)), cairo_line_to(cr, f.x1, f.py(v));
     cairo_stroke(cr);
 
+    const PlotArea area{f.x0, f.y0, f.x1, f.y1, f.xr.lo, f.xr.hi, f.yr.lo, f.yr.hi};
     cairo_save(cr);
     cairo_rectangle(cr, f.x0, f.y0, f.x1 - f.x0, f.y1 - f.y0);
     cairo_clip(cr);
+    if (p.underlay) {
+        cairo_save(cr);
+        p.underlay(cr, area, u);
+        cairo_restore(cr);
+    }
     for (const auto& r : p.ref_lines) {
         set_colour(cr, r.colour);
         cairo_set_line_width(cr, 1.3 * u);
@@ -270,6 +276,7 @@ void draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, double 
     for (std::size_t i = 0; i < note.lines.size(); ++i) render::text(cr, th.font, note.size, x0, note_y[i], note.lines[i]);
     draw_legend(cr, p, f, u);
     cairo_restore(cr);
+    return area;
 }
 
 void render_plot_png(const Plot& plot, int w, int h, const std::string& path) {

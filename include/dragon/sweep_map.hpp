@@ -1,0 +1,64 @@
+// Maps of a sweep's answers (dragon sweep --plot): over one varied value a line plot per
+// measure, over two a heat map per measure with contour lines, a colour bar with its unit and
+// the contest's dragon marked. Scenarios without an answer are shown as such: cut short by the
+// end of the dragon's valid motion (hatched), refused (grey), no answer in the range searched.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <cairo.h>
+
+#include "dragon/render.hpp"
+
+namespace dragon {
+
+enum class MapCell : unsigned char {
+    value,     // the answer
+    jam,       // cut short: the dragon cannot follow its path far enough
+    refused,   // the scenario's values are not allowed (or the analysis failed)
+    no_value,  // the analysis ran, and found no answer in its range
+    missing,   // no row for it (a shard's map)
+};
+
+struct MapAxis {
+    std::string quantity;         // "bench width"
+    std::string unit;             // "m", or "" for none
+    std::vector<double> values;   // in any order; each once
+    std::optional<double> mark;   // where the contest's dragon lies on this axis, when it is marked
+};
+
+struct MapPanel {
+    std::string quantity;  // "minimum pitch"
+    std::string unit;      // "m"
+    // One per scenario: index ix * (y ? y->values.size() : 1) + iy, as the axes list their
+    // values; NaN where the cell is not a value.
+    std::vector<double> values;
+    std::vector<MapCell> cells;
+    std::string jam_label = "cut short: the dragon cannot follow its path";
+};
+
+struct SweepMap {
+    Theme theme;
+    MapAxis x;
+    std::optional<MapAxis> y;  // none: line plots
+    std::vector<MapPanel> panels;
+    std::string note;          // under each panel's title: what was held fixed
+    std::string mark_label = "the contest's dragon";
+};
+
+// "bench width (m)", or "benches" without a unit.
+std::string axis_label(const std::string& quantity, const std::string& unit);
+
+// The picture's size at scale 1: a panel of 1000 x 640 px (heat maps) or 1000 x 520 (lines) each.
+std::pair<int, int> sweep_map_size(const SweepMap& map);
+// Draws the panels one under the other inside (0, 0, w, h), background included.
+void draw_sweep_map(cairo_t* cr, const SweepMap& map, double w, double h);
+// Throws InputError unless `path` names a format a map can be written in: .png or .svg (not .pdf:
+// this build's renderer writes none).
+void require_map_format(const std::string& path);
+// All-or-nothing .png or .svg of sweep_map_size(map).
+void write_sweep_map(const SweepMap& map, const std::string& path);
+
+}  // namespace dragon

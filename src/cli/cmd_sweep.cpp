@@ -1,0 +1,132 @@
+// dragon sweep: the answers mapped over the design space; dragon sweep merge: a sweep's parts
+// joined. Thin: the grid, rows and runs are the library's (dragon/sweep.hpp), the answers the
+// commands' (cli/answers.hpp).
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "cli/scenario_flags.hpp"
+#include "cli/status.hpp"
+#include "cli/sweep_merge.hpp"
+#include "cli/sweep_plot.hpp"
+#include "cli/sweep_run.hpp"
+#include "dragon/atomic_file.hpp"
+
+namespace dragon::cli {
+
+namespace {
+
+struct SweepOptions {
+    ScenarioFlags scenario;
+    SweepRequest request;
+    SweepOutput output;
+    std::string plot;
+    std::optional<int> workers;
+    // dragon sweep merge
+    CLI::App* merge = nullptr;
+    std::vector<std::string> merge_files;  // OUT.csv, then the parts
+    std::string merge_plot;
+    bool merge_quiet = false;
+};
+
+void write_plot(const std::string& path, const MapCollector& maps, bool quiet) {
+    write_sweep_map(maps.map(), path);
+    status(quiet, "wrote {}", path);
+}
+
+int run_merge(const SweepOptions& opt) {
+    for (const std::string& extra : opt.merge->remaining())
+        throw InputError(fmt::format("dragon sweep merge has no option {} (see dragon sweep merge --help)", extra));
+    for (const std::string& f : opt.merge_files)
+        if (f.empty()) throw InputError("dragon sweep merge '' is not allowed: give a file name");
+    if (opt.merge_files.size() < 2)
+        throw InputError("dragon sweep merge needs OUT.csv and the files to merge: dragon sweep merge OUT.csv PART.csv...");
+    const std::string out = opt.merge_files.front();
+    if (extension_of(out) != ".csv")
+        throw InputError(fmt::format("{} has extension '{}': the merged sweep is written as .csv", out, extension_of(out)));
+    const std::vector<std::string> parts(opt.merge_files.begin() + 1, opt.merge_files.end());
+    const SweepSetup whole = whole_sweep(parts);
+    if (!opt.merge_plot.empty()) {
+        check_plot(whole, opt.merge_plot);
+        AtomicFile probe(opt.merge_plot);
+    }
+    std::optional<MapCollector> maps;
+    if (!opt.merge_plot.empty()) maps.emplace(whole);
+    const std::size_t rows = merge_parts(whole, out, parts, [&](const std::string& row) {
+        if (maps) maps->add(row);
+    });
+    status(opt.merge_quiet, "wrote {}: {} rows from {} files", out, rows, parts.size());
+    if (maps) write_plot(opt.merge_plot, *maps, opt.merge_quiet);
+    return 0;
+}
+
+int run(SweepOptions& opt) {
+    if (opt.merge->parsed()) return run_merge(opt);
+    if (opt.workers) {
+        if (*opt.workers < 1) throw InputError(fmt::format("--workers {} is not allowed: at least 1", *opt.workers));
+        set_default_workers(*opt.workers);
+    }
+    const SweepSetup setup = make_setup(opt.request, opt.scenario);
+    check_output(opt.output);
+    if (!opt.plot.empty()) {
+        check_plot(setup, opt.plot);
+        AtomicFile probe(opt.plot);
+    }
+    // The map's values only when a map is asked for: a row is otherwise never held.
+    std::optional<MapCollector> maps;
+    if (!opt.plot.empty()) maps.emplace(setup);
+    const SweepTally t = run_rows(setup, opt.output, [&](const std::string& row) {
+        if (maps) maps->add(row);
+    });
+    if (!opt.output.out.empty())
+        status(opt.output.quiet, "wrote {}: {} rows{}", opt.output.out, t.done_before + t.made,
+               t.done_before ? fmt::format(" ({} new)", t.made) : "");
+    if (maps) write_plot(opt.plot, *maps, opt.output.quiet);
+    if (t.failed > 0)
+        throw std::runtime_error(fmt::format("{} of {} scenarios failed (their rows' status says why)", t.failed, t.made));
+    return 0;
+}
+
+}  // namespace
+
+void register_sweep(CLI::App& app, Registry& reg) {
+    auto opt = std::make_shared<SweepOptions>();
+    CLI::App* sub = app.add_subcommand(
+        "sweep", "Maps the answers over the design space: a row per scenario, a column per answer; merge joins its parts");
+    sub->add_option("file", opt->request.file, "Sweep file (TOML; see assets/sweeps/); flags override it");
+    sub->add_option("--vary", opt->request.vary,
+                    "NAME=FROM:TO:COUNT or NAME=V1,V2,...: a scenario value and its values (repeat for more; the first "
+                    "varies slowest). NAME is a scenario flag: pitch, speed, bench-count, head-length, body-length, "
+                    "width, hole-offset, start-turn, turn-radius, turn-pitch, arc-ratio")
+        ->allow_extra_args(false);  // one spec per --vary: a sweep file after it is not a second one
+    sub->add_option("--measure", opt->request.measures,
+                    "What to answer per scenario: collide, min-pitch, turnaround, max-speed (a comma list)")
+        ->delimiter(',')
+        ->allow_extra_args(false);
+    opt->scenario.add_to(sub, ScenarioUse::both_paths("no measure of this sweep reads it"));
+    sub->add_option("--lo", opt->request.lo, "min-pitch: smallest pitch searched, m, or width+X (default 0.35)");
+    sub->add_option("--hi", opt->request.hi, "min-pitch: largest pitch searched, m, or width+X (default 0.55)");
+    sub->add_option("--grid", opt->request.grid, "min-pitch: pitch spacing of the first scan, m (default 0.0025)");
+    sub->add_option("--limit", opt->request.limit, "max-speed: handle speed limit, m/s (default 2)");
+    sub->add_option("-o,--out", opt->output.out,
+                    "Rows to this .csv, each made durable as it finishes (into OUT.csv.partial, renamed when all are "
+                    "there); without it, onto stdout");
+    sub->add_flag("--resume", opt->output.resume, "Go on with the rows -o already holds; compute only the rest");
+    sub->add_flag("--json", opt->output.json, "Each row as one JSON object on stdout, one a line, as it finishes");
+    sub->add_option("--shard", opt->request.shard, "K/N: run only the K-th of N disjoint parts (merge them after)");
+    sub->add_option("--plot", opt->plot, "Also draw the map (.png or .svg): line plots over one varied value, heat "
+                                         "maps over two");
+    sub->add_option("--workers", opt->workers, "Scenarios run at once (default: one per core)");
+    add_quiet_flag(sub, opt->output.quiet);
+
+    opt->merge = sub->add_subcommand("merge", "Joins a sweep's parts (its shards) into one file, checking every scenario "
+                                              "is there once: dragon sweep merge OUT.csv PART.csv...");
+    opt->merge->add_option("files", opt->merge_files, "OUT.csv, then the parts");
+    opt->merge->allow_extras();  // named by run_merge, as the command line names a command's leftovers
+    opt->merge->add_option("--plot", opt->merge_plot, "Also draw the map (.png or .svg)");
+    add_quiet_flag(opt->merge, opt->merge_quiet);
+    reg["sweep"] = [opt]() { return run(*opt); };
+}
+
+}  // namespace dragon::cli

@@ -1,0 +1,179 @@
+#include "cli/sweep_measures.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "cli/answers.hpp"
+#include "cli/scenario_flags.hpp"
+#include "dragon/turnaround.hpp"
+
+namespace dragon::cli {
+
+namespace {
+
+const std::vector<std::string> kJamKeys = {"jam.time", "jam.handle", "jam.kind", "jam.point", "jam.tolerance"};
+
+std::vector<std::string> with_jam(std::vector<std::string> keys, std::vector<std::string> after = {},
+                                  std::vector<std::string> jam_extra = {}) {
+    keys.insert(keys.end(), kJamKeys.begin(), kJamKeys.end());
+    keys.insert(keys.end(), jam_extra.begin(), jam_extra.end());
+    keys.insert(keys.end(), after.begin(), after.end());
+    return keys;
+}
+
+std::string cell(const Json& v) {
+    if (v.is_null()) return "";
+    if (v.is_string()) return v.get<std::string>();
+    if (v.is_number_float() && !std::isfinite(v.get<double>())) return "";
+    return v.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+// Every leaf key of `v` under `prefix`: objects are walked, anything else (a null object too)
+// is a leaf.
+void leaves(const Json& v, const std::string& prefix, std::vector<std::string>& out) {
+    if (!v.is_object()) {
+        out.push_back(prefix);
+        return;
+    }
+    for (const auto& [k, item] : v.items()) leaves(item, prefix.empty() ? k : prefix + "." + k, out);
+}
+
+// Each measure as its command runs it, on the calling thread: the sweep spreads the scenarios
+// over the cores, and work nested inside one would only queue behind them. `jam` is set to
+// where the end of the valid motion cut the analysis short.
+Json collide_measure(const Scenario& s, const MeasureOptions&, std::string& jam) {
+    InlineExecutor here;
+    const CollideSearch search = search_collision(Simulation(s), 0.0, std::nullopt, &here);
+    if (search.jam) jam = "no contact before the end of the valid motion: " + jam_sentence(*search.jam);
+    return collide_answer(search, false);
+}
+
+Json min_pitch_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
+    InlineExecutor here;
+    dragon::MinPitchOptions o;
+    o.grid = options.grid;
+    o.executor = &here;
+    const MinPitch mp = min_pitch(s, options.lo.at(s), options.hi.at(s), o);
+    if (mp.jam)
+        jam = fmt::format("at pitch {} m the dragon cannot follow the spiral to radius {} m: {}", mp.jam->pitch,
+                          s.path.turn_radius, jam_sentence(mp.jam->jam));
+    return min_pitch_answer(mp, s.path.turn_radius);
+}
+
+// The command's design, followability and clearance check; its length study (two dozen other
+// S-curves) is the command's to print, not a value of this scenario.
+Json turnaround_measure(const Scenario& s, const MeasureOptions&, std::string& jam) {
+    InlineExecutor here;
+    const SCurve design = design_s_curve(s);
+    std::vector<TurnStudyRow> own = length_vs_ratio(s.path.turn_pitch, s.path.turn_radius, {s.path.arc_ratio});
+    followability(own, s.path.turn_pitch, s.bench, s.head_speed);
+    const RunClearance clear = min_clearance(s, -100.0, 100.0, {}, &here);
+    const std::optional<Jam>& j = clear.jam ? clear.jam : own.front().jam;
+    if (j) jam = jam_sentence(*j, j->time > 0.0);
+    return turnaround_answer(design, own.front().jam, clear, nullptr);
+}
+
+Json max_speed_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
+    const MaxSpeed v = max_head_speed(s, options.limit);
+    if (v.jam)
+        jam = v.unbounded ? fmt::format("no head speed keeps every handle at or under {} m/s: {}", options.limit,
+                                        jam_sentence(*v.jam))
+                          : "searched only as far as " + jam_sentence(*v.jam);
+    return max_speed_answer(v, options.limit);
+}
+
+}  // namespace
+
+const std::vector<MeasureInfo>& sweep_measures() {
+    static const std::vector<MeasureInfo> all = {
+        {"collide", PathKind::spiral, values_read(PathKind::spiral), collide_measure,
+         with_jam({"time", "benches", "head_radius", "point", "tolerance", "evaluations", "from", "to"}), "time",
+         "first contact", "s", true},
+        {"min-pitch", PathKind::spiral, ScenarioUse::pitch_search().all(), min_pitch_measure,
+         with_jam({"pitch", "below_range", "above_range", "turn_radius", "search", "grid", "intervals"}, {"guarantee"},
+                  {"jam.pitch"}),
+         "pitch", "minimum pitch", "m", false},
+        {"turnaround", PathKind::turnaround, ScenarioUse::turnaround_only().all(), turnaround_measure,
+         with_jam({"r1", "r2", "length", "ratio", "pitch", "entry_radius", "entry", "exit", "c1", "c2", "joint", "angle1",
+                   "angle2", "length1", "length2", "max_radius", "followable", "clearance.distance",
+                   "clearance.at_least", "clearance.time", "clearance.benches", "clearance.collision_free",
+                   "clearance.from", "clearance.to"}),
+         "clearance.distance", "smallest clearance", "m", true},
+        {"max-speed", PathKind::turnaround, ScenarioUse::turnaround_only().all(), max_speed_measure,
+         with_jam({"max_head_speed", "ratio", "unbounded", "handle", "time", "tied", "head_arc", "limit", "from", "to"},
+                  {"scan_step", "candidates", "evaluations"}),
+         "max_head_speed", "largest head speed", "m/s", true},
+    };
+    return all;
+}
+
+const MeasureInfo& find_measure(const std::string& name) {
+    for (const MeasureInfo& m : sweep_measures())
+        if (name == m.name) return m;
+    throw InputError(fmt::format("--measure {} is not allowed: use collide, min-pitch, turnaround or max-speed",
+                                 name.empty() ? "''" : name));
+}
+
+double PitchBound::at(const Scenario& s) const {
+    if (!above_width) return offset;
+    return std::strtod(fmt::format("{:.12g}", s.bench.width + offset).c_str(), nullptr);
+}
+
+std::string PitchBound::text() const { return above_width ? fmt::format("width+{}", offset) : fmt::format("{}", offset); }
+
+PitchBound parse_pitch_bound(const std::string& flag, const std::string& text) {
+    const bool relative = text.rfind("width+", 0) == 0;
+    const std::string number = relative ? text.substr(6) : text;
+    char* end = nullptr;
+    const double v = std::strtod(number.c_str(), &end);
+    if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(v) || (relative && v < 0.0))
+        throw InputError(fmt::format("{} {} is not allowed: give a pitch in m (0.35), or the bench width plus one "
+                                     "(width+0.05) when the sweep varies the width", flag, text));
+    return {v, relative};
+}
+
+MeasureResult run_measure(const MeasureInfo& m, const Scenario& scenario, const MeasureOptions& options) {
+    using State = MeasureResult::State;
+    MeasureResult out;
+    try {
+        Scenario s = scenario;
+        s.path.kind = m.path;
+        validate(s, m.reads);
+        std::string jam;
+        out.answer = m.answer(s, options, jam);
+        if (!jam.empty()) out.state = State::jam, out.note = fmt::format("jam ({}): {}", m.name, jam);
+    } catch (const InputError& e) {
+        out = {State::refused, std::nullopt, fmt::format("refused ({}): {}", m.name, e.what())};
+    } catch (const std::exception& e) {
+        // Not the scenario's fault: the row says so and the sweep goes on (the run fails at its end).
+        out = {State::failed, std::nullopt, fmt::format("failed ({}): {}", m.name, e.what())};
+    }
+    return out;
+}
+
+std::vector<std::string> flatten(const Json& answer, const std::vector<std::string>& columns) {
+    std::vector<std::string> keys;
+    leaves(answer, "", keys);
+    for (const std::string& k : keys) {
+        bool known = false;
+        for (const std::string& c : columns) known = known || c == k || c.rfind(k + ".", 0) == 0;
+        if (!known) throw std::logic_error("the answer's key '" + k + "' has no column in the sweep's rows");
+    }
+    std::vector<std::string> cells;
+    for (const std::string& c : columns) {
+        const Json* v = &answer;
+        for (std::size_t from = 0; v && from <= c.size();) {
+            const std::size_t dot = std::min(c.find('.', from), c.size());
+            const std::string part = c.substr(from, dot - from);
+            v = v->is_object() && v->contains(part) ? &(*v)[part] : nullptr;
+            from = dot + 1;
+        }
+        cells.push_back(v ? cell(*v) : "");
+    }
+    return cells;
+}
+
+}  // namespace dragon::cli

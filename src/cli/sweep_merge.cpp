@@ -1,0 +1,100 @@
+#include "cli/sweep_merge.hpp"
+
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "dragon/atomic_file.hpp"
+
+namespace dragon::cli {
+
+namespace {
+
+// "width=0.2 body-length=1.6"
+std::string describe_scenario(const SweepSetup& setup, std::size_t index) {
+    const std::vector<std::string> cells = setup.grid.cells(index);
+    std::string out;
+    for (std::size_t k = 0; k < cells.size(); ++k)
+        out += fmt::format("{}{}={}", k ? " " : "", setup.grid.axes()[k].parameter->name, cells[k]);
+    return out;
+}
+
+}  // namespace
+
+SweepSetup whole_sweep(const std::vector<std::string>& parts) {
+    if (parts.empty()) throw InputError("dragon sweep merge needs the files to merge: dragon sweep merge OUT.csv PART.csv...");
+    // The first line is all it takes; merge_parts reads the rest.
+    std::ifstream in(parts.front(), std::ios::binary);
+    std::string spec;
+    std::error_code ec;
+    if (!in || std::filesystem::is_directory(parts.front(), ec) || !std::getline(in, spec))
+        throw InputError(fmt::format("'{}' cannot be read, or is empty", parts.front()));
+    return read_spec_line(whole_spec_line(spec, parts.front()), parts.front());
+}
+
+std::size_t merge_parts(const SweepSetup& whole, const std::string& out, const std::vector<std::string>& parts,
+                        const std::function<void(const std::string&)>& on_row) {
+    const std::string spec = spec_line(whole), head = csv_line(header(whole));
+    const std::size_t naxes = whole.grid.axes().size();
+    // Which file holds each scenario (0: none yet): 4 bytes a scenario, the rows never held.
+    std::vector<std::uint32_t> owner(whole.grid.size(), 0);
+    AtomicFile file(out);
+    std::unique_ptr<FILE, int (*)(FILE*)> sink(std::fopen(file.temp_path().c_str(), "wb"), &std::fclose);
+    if (!sink) throw file.write_error(std::strerror(errno));
+    fmt::print(sink.get(), "{}\n{}\n", spec, head);
+    std::size_t rows = 0;
+    for (std::size_t f = 0; f < parts.size(); ++f) {
+        const std::string& path = parts[f];
+        std::error_code same_error;
+        if (std::filesystem::equivalent(path, out, same_error))
+            throw InputError(fmt::format("'{}' is both the merged file and a part: give the merged file another name", path));
+        std::size_t number = 2;  // the line number of the row being read
+        const RowFileScan scan = scan_row_file(
+            path, 2,
+            [&](const std::vector<std::string>& preamble) {
+                if (whole_spec_line(preamble[0], path) != spec)
+                    throw InputError(fmt::format("'{}' is not a part of the sweep of '{}': its first line (what the "
+                                                 "sweep is) differs", path, parts.front()));
+                if (preamble[1] != head)
+                    throw InputError(fmt::format("'{}' is not a part of the sweep of '{}': its header differs", path,
+                                                 parts.front()));
+            },
+            [&](const std::string& line) {
+                ++number;
+                const std::vector<std::string> fields = split_csv(line);
+                const std::optional<std::size_t> index =
+                    fields.size() < naxes ? std::nullopt
+                                          : whole.grid.index_of(std::vector<std::string>(fields.begin(), fields.begin() + static_cast<long>(naxes)));
+                if (!index)
+                    throw InputError(fmt::format("line {} of '{}' is no scenario of this sweep: {:.80}", number, path, line));
+                if (owner[*index] != 0)
+                    throw InputError(fmt::format("the scenario {} is there twice: in '{}' and in '{}' (line {})",
+                                                 describe_scenario(whole, *index), parts[owner[*index] - 1], path, number));
+                owner[*index] = static_cast<std::uint32_t>(f + 1);
+                fmt::print(sink.get(), "{}\n", line);
+                on_row(line);
+                ++rows;
+            });
+        if (scan.torn)
+            throw InputError(fmt::format("'{}' ends in a torn line: it is the rows of an unfinished run (go on with it "
+                                         "with --resume first)", path));
+    }
+    std::size_t missing = 0, first = 0;
+    for (std::size_t i = owner.size(); i-- > 0;)
+        if (owner[i] == 0) ++missing, first = i;
+    if (missing > 0)
+        throw InputError(fmt::format("{} of the sweep's {} scenarios {} missing, the first: {}; merge every part of the "
+                                     "sweep", missing, whole.grid.size(), missing == 1 ? "is" : "are",
+                                     describe_scenario(whole, first)));
+    if (std::ferror(sink.get()) || std::fclose(sink.release()) != 0) throw file.write_error(std::strerror(errno));
+    file.commit();
+    return rows;
+}
+
+}  // namespace dragon::cli

@@ -1,0 +1,128 @@
+#include "cli/sweep_plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+namespace dragon::cli {
+
+namespace {
+
+std::vector<std::size_t> plotted_axes(const SweepSetup& setup) {
+    std::vector<std::size_t> out;
+    for (std::size_t k = 0; k < setup.grid.axes().size(); ++k)
+        if (setup.grid.axes()[k].values.size() > 1) out.push_back(k);
+    return out;
+}
+
+// Which of a measure's jams mean its value is not the whole answer, in words for the legend.
+std::string jam_meaning(const MeasureInfo& m) {
+    if (std::string(m.name) == "collide") return "no contact before the dragon's motion ends";
+    return "cut short: the dragon cannot follow the S-curve";
+}
+
+// The fixed values that are not the contest's, for the map's note.
+std::string fixed_note(const SweepSetup& setup, const std::vector<std::size_t>& plotted) {
+    const Scenario contest;
+    std::vector<std::string> differ;
+    for (const SweepParameter& p : sweep_parameters()) {
+        if (!(setup.fixed & p.value) || get_parameter(setup.base, p) == get_parameter(contest, p)) continue;
+        differ.push_back(fmt::format("{} {}{}", p.name, get_parameter(setup.base, p), *p.unit ? std::string(" ") + p.unit : ""));
+    }
+    for (std::size_t k = 0; k < setup.grid.axes().size(); ++k) {
+        const Axis& a = setup.grid.axes()[k];
+        if (std::find(plotted.begin(), plotted.end(), k) == plotted.end())
+            differ.push_back(fmt::format("{} {}{}", a.parameter->name, a.cells[0], *a.parameter->unit ? std::string(" ") + a.parameter->unit : ""));
+    }
+    const std::string fixed = differ.empty() ? "Everything else as in the contest"
+                                             : fmt::format("Fixed: {}; the rest as in the contest", fmt::join(differ, ", "));
+    return fmt::format("{}. {} scenarios.", fixed, setup.grid.size());
+}
+
+}  // namespace
+
+void check_plot(const SweepSetup& setup, const std::string& path) {
+    require_map_format(path);
+    const std::size_t n = plotted_axes(setup).size();
+    if (n == 0 || n > 2)
+        throw InputError(fmt::format("--plot {} is not allowed: a map shows one varied value (line plots) or two (heat "
+                                     "maps), and this sweep varies {} (a value given one value is fixed)", path,
+                                     n == 0 ? "none" : fmt::format("{}", n)));
+}
+
+MapCollector::MapCollector(const SweepSetup& setup) : setup_(setup), plotted_(plotted_axes(setup)), header_(header(setup)) {
+    std::size_t cells = 1;
+    for (std::size_t k : plotted_) cells *= setup.grid.axes()[k].values.size();
+    values_.assign(setup.measures.size(), std::vector<double>(cells, NAN));
+    cells_.assign(setup.measures.size(), std::vector<MapCell>(cells, MapCell::missing));
+}
+
+void MapCollector::add(const std::string& csv_row) {
+    const std::vector<std::string> fields = split_csv(csv_row);
+    if (fields.size() != header_.size()) return;  // not a row of this sweep: the readers refuse it first
+    const std::size_t naxes = setup_.grid.axes().size();
+    const std::optional<std::size_t> index =
+        setup_.grid.index_of(std::vector<std::string>(fields.begin(), fields.begin() + static_cast<long>(naxes)));
+    if (!index) return;
+    const std::vector<std::size_t> pos = setup_.grid.position(*index);
+    std::size_t cell = 0;
+    for (std::size_t k : plotted_) cell = cell * setup_.grid.axes()[k].values.size() + pos[k];
+    std::size_t column = naxes;
+    for (std::size_t m = 0; m < setup_.measures.size(); ++m) {
+        const MeasureInfo& info = *setup_.measures[m];
+        const auto at = [&](const std::string& key) -> const std::string& {
+            const auto it = std::find(info.columns.begin(), info.columns.end(), key);
+            return fields[column + static_cast<std::size_t>(it - info.columns.begin())];
+        };
+        const bool answered = std::any_of(fields.begin() + static_cast<long>(column),
+                                          fields.begin() + static_cast<long>(column + info.columns.size()),
+                                          [](const std::string& f) { return !f.empty(); });
+        const std::string& value = at(info.key);
+        MapCell state = MapCell::value;
+        if (!answered) state = MapCell::refused;
+        else if (info.jam_cuts_answer && !at("jam.time").empty()) state = MapCell::jam;
+        else if (value.empty()) state = MapCell::no_value;
+        cells_[m][cell] = state;
+        values_[m][cell] = state == MapCell::value ? std::strtod(value.c_str(), nullptr) : NAN;
+        column += info.columns.size();
+    }
+}
+
+SweepMap MapCollector::map() const {
+    SweepMap map;
+    const Scenario contest;
+    // The contest's dragon is marked where every value the measures read but the plotted ones is
+    // the contest's.
+    ScenarioValues plotted_values = 0;
+    for (std::size_t k : plotted_) plotted_values |= setup_.grid.axes()[k].parameter->value;
+    bool contest_map = true;
+    for (const SweepParameter& p : sweep_parameters()) {
+        if (plotted_values & p.value) continue;
+        if (setup_.fixed & p.value) contest_map = contest_map && get_parameter(setup_.base, p) == get_parameter(contest, p);
+    }
+    for (std::size_t k = 0; k < setup_.grid.axes().size(); ++k) {
+        const Axis& a = setup_.grid.axes()[k];
+        if (std::find(plotted_.begin(), plotted_.end(), k) == plotted_.end())
+            contest_map = contest_map && a.values[0] == get_parameter(contest, *a.parameter);
+    }
+    const auto axis = [&](std::size_t k) {
+        const Axis& a = setup_.grid.axes()[k];
+        MapAxis m{a.parameter->quantity, a.parameter->unit, a.values, std::nullopt};
+        if (contest_map) m.mark = get_parameter(contest, *a.parameter);
+        return m;
+    };
+    map.x = axis(plotted_.at(0));
+    if (plotted_.size() > 1) map.y = axis(plotted_[1]);
+    map.note = fixed_note(setup_, plotted_);
+    for (std::size_t m = 0; m < setup_.measures.size(); ++m) {
+        const MeasureInfo& info = *setup_.measures[m];
+        MapPanel panel{info.quantity, info.unit, values_[m], cells_[m], jam_meaning(info)};
+        map.panels.push_back(std::move(panel));
+    }
+    return map;
+}
+
+}  // namespace dragon::cli

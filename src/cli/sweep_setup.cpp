@@ -1,0 +1,225 @@
+#include "cli/sweep_setup.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+namespace dragon::cli {
+
+namespace {
+
+constexpr const char* kSpecPrefix = "# dragon sweep ";
+constexpr int kFormat = 1;  // of the spec line and the rows; a later change of either raises it
+
+std::string measure_names(const std::vector<const MeasureInfo*>& measures) {
+    std::vector<std::string> names;
+    for (const MeasureInfo* m : measures) names.emplace_back(m->name);
+    return fmt::format("{}", fmt::join(names, ", "));
+}
+
+bool has_measure(const std::vector<const MeasureInfo*>& measures, const char* name) {
+    return std::any_of(measures.begin(), measures.end(), [&](const MeasureInfo* m) { return std::string(m->name) == name; });
+}
+
+// The file's [measure] options under the flags: a flag given wins.
+void take_file_options(const SweepFile& f, const std::string& path, SweepRequest& req) {
+    for (const SweepFile::Option& o : f.options) {
+        const std::string where = fmt::format("sweep file '{}': [{}] {}", path, o.measure, o.key);
+        const auto number = [&] {
+            char* end = nullptr;
+            const double v = std::strtod(o.value.c_str(), &end);
+            if (o.value.empty() || end != o.value.c_str() + o.value.size())
+                throw InputError(fmt::format("{} = {} is not allowed: give a number", where, o.value));
+            return v;
+        };
+        if (o.measure == "min-pitch" && o.key == "lo") req.lo = req.lo.value_or(o.value);
+        else if (o.measure == "min-pitch" && o.key == "hi") req.hi = req.hi.value_or(o.value);
+        else if (o.measure == "min-pitch" && o.key == "grid") req.grid = req.grid.value_or(number());
+        else if (o.measure == "max-speed" && o.key == "limit") req.limit = req.limit.value_or(number());
+        else
+            throw InputError(fmt::format("{} is not an option a sweep takes ([min-pitch] lo, hi, grid; [max-speed] "
+                                         "limit)", where));
+    }
+}
+
+}  // namespace
+
+SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags) {
+    SweepRequest req = request;
+    if (!req.file.empty()) {
+        const SweepFile f = read_sweep_file(req.file);
+        // An axis of the command line replaces the file's of the same name; the others follow it.
+        std::vector<std::string> vary;
+        for (const std::string& v : f.vary) {
+            const std::string name = v.substr(0, v.find('='));
+            if (std::none_of(req.vary.begin(), req.vary.end(), [&](const std::string& c) { return c.substr(0, c.find('=')) == name; }))
+                vary.push_back(v);
+        }
+        vary.insert(vary.end(), req.vary.begin(), req.vary.end());
+        req.vary = vary;
+        if (req.measures.empty()) req.measures = f.measures;
+        take_file_options(f, req.file, req);
+        flags.fill(f.scenario, f.fixed, fmt::format("sweep file '{}': [fixed]", req.file));
+    }
+    std::vector<Axis> axes;
+    if (req.vary.empty()) throw InputError("a sweep needs at least one --vary NAME=VALUES");
+    for (const std::string& v : req.vary) axes.push_back(parse_axis(v));
+    SweepGrid grid(std::move(axes));
+    if (req.measures.empty())
+        throw InputError("a sweep needs --measure: one or more of collide, min-pitch, turnaround, max-speed");
+    std::vector<const MeasureInfo*> measures;
+    for (const std::string& name : req.measures) {
+        const MeasureInfo& m = find_measure(name);
+        if (has_measure(measures, m.name))
+            throw InputError(fmt::format("--measure {} is given twice: measure each once", name));
+        measures.push_back(&m);
+    }
+    ScenarioValues reads = 0;
+    for (const MeasureInfo* m : measures) {
+        reads |= m->reads;
+        for (const Axis& a : grid.axes())
+            if (!(m->reads & a.parameter->value))
+                throw InputError(fmt::format("--vary {} is not allowed with --measure {}: {} does not read the {} (every "
+                                             "row would repeat one answer); measure it in a sweep of its own",
+                                             a.parameter->name, m->name, m->name, a.parameter->quantity));
+    }
+    const auto only_for = [&](const std::optional<std::string>& given, const char* flag, const char* measure) {
+        if (given && !has_measure(measures, measure))
+            throw InputError(fmt::format("{} {} is not allowed: it is an option of {}, which this sweep does not measure",
+                                         flag, *given, measure));
+    };
+    only_for(req.lo, "--lo", "min-pitch");
+    only_for(req.hi, "--hi", "min-pitch");
+    only_for(req.grid ? std::optional<std::string>(fmt::format("{}", *req.grid)) : std::nullopt, "--grid", "min-pitch");
+    only_for(req.limit ? std::optional<std::string>(fmt::format("{}", *req.limit)) : std::nullopt, "--limit", "max-speed");
+    for (const Axis& a : grid.axes())
+        if (flags.given() & a.parameter->value)
+            throw InputError(fmt::format("--{} is not allowed: the sweep varies it (--vary {}=...); give it one way",
+                                         a.parameter->name, a.parameter->name));
+    const ScenarioValues fixed = reads & ~grid.varied();
+    Scenario base = flags.resolve(fixed, fmt::format("no measure of this sweep ({}) reads it", measure_names(measures)));
+    base.path.kind = PathKind::spiral;
+    MeasureOptions options;
+    if (req.lo) options.lo = parse_pitch_bound("--lo", *req.lo);
+    if (req.hi) options.hi = parse_pitch_bound("--hi", *req.hi);
+    if (req.grid) options.grid = *req.grid;
+    if (req.limit) options.limit = *req.limit;
+    return {std::move(grid), std::move(measures), base, fixed, options, parse_shard(req.shard.empty() ? "1/1" : req.shard)};
+}
+
+std::string spec_line(const SweepSetup& setup) {
+    Json vary = Json::object();
+    for (const Axis& a : setup.grid.axes()) vary[a.parameter->name] = a.cells;
+    Json fixed = Json::object();
+    for (const SweepParameter& p : sweep_parameters())
+        if (setup.fixed & p.value)
+            fixed[p.name] = p.whole ? Json(static_cast<long long>(get_parameter(setup.base, p))) : Json(get_parameter(setup.base, p));
+    Json options = Json::object();
+    if (has_measure(setup.measures, "min-pitch"))
+        options["min-pitch"] = {{"lo", setup.options.lo.text()}, {"hi", setup.options.hi.text()}, {"grid", setup.options.grid}};
+    if (has_measure(setup.measures, "max-speed")) options["max-speed"] = {{"limit", setup.options.limit}};
+    Json measures = Json::array();
+    for (const MeasureInfo* m : setup.measures) measures.push_back(m->name);
+    const Json spec = {{"format", kFormat},
+                       {"measure", measures},
+                       {"vary", vary},
+                       {"fixed", fixed},
+                       {"options", options},
+                       {"shard", fmt::format("{}/{}", setup.shard.index, setup.shard.count)}};
+    return kSpecPrefix + spec.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+namespace {
+
+Json parse_spec(const std::string& line, const std::string& file) {
+    const auto bad = [&](const std::string& why) {
+        return InputError(fmt::format("'{}' is not the rows of a dragon sweep: {}", file, why));
+    };
+    if (line.rfind(kSpecPrefix, 0) != 0) throw bad("its first line does not start with '# dragon sweep'");
+    Json spec = Json::parse(line.substr(std::string(kSpecPrefix).size()), nullptr, false);
+    if (spec.is_discarded() || !spec.is_object()) throw bad("its first line holds no sweep");
+    if (spec.value("format", 0) != kFormat)
+        throw bad(fmt::format("it was written in format {}, and this dragon reads format {}", spec.value("format", 0),
+                              kFormat));
+    return spec;
+}
+
+}  // namespace
+
+SweepSetup read_spec_line(const std::string& line, const std::string& file) {
+    const Json spec = parse_spec(line, file);
+    try {
+        std::vector<Axis> axes;
+        for (const auto& [name, cells] : spec.at("vary").items()) axes.push_back(axis_from_cells(name, cells));
+        std::vector<const MeasureInfo*> measures;
+        for (const Json& m : spec.at("measure")) measures.push_back(&find_measure(m.get<std::string>()));
+        Scenario base;
+        ScenarioValues fixed = 0;
+        for (const auto& [name, v] : spec.at("fixed").items()) {
+            const SweepParameter* p = find_sweep_parameter(name);
+            if (!p) throw InputError(fmt::format("unknown fixed value {}", name));
+            set_parameter(base, *p, v.get<double>());
+            fixed |= p->value;
+        }
+        MeasureOptions options;
+        const Json& o = spec.at("options");
+        if (o.contains("min-pitch")) {
+            options.lo = parse_pitch_bound("lo", o["min-pitch"].at("lo").get<std::string>());
+            options.hi = parse_pitch_bound("hi", o["min-pitch"].at("hi").get<std::string>());
+            options.grid = o["min-pitch"].at("grid").get<double>();
+        }
+        if (o.contains("max-speed")) options.limit = o["max-speed"].at("limit").get<double>();
+        return {SweepGrid(std::move(axes)), std::move(measures), base, fixed, options,
+                parse_shard(spec.at("shard").get<std::string>())};
+    } catch (const InputError& e) {
+        throw InputError(fmt::format("'{}' is not the rows of a dragon sweep: its first line: {}", file, e.what()));
+    } catch (const Json::exception& e) {
+        throw InputError(fmt::format("'{}' is not the rows of a dragon sweep: its first line: {}", file, e.what()));
+    }
+}
+
+std::string whole_spec_line(const std::string& line, const std::string& file) {
+    Json spec = parse_spec(line, file);
+    spec["shard"] = "1/1";
+    return kSpecPrefix + spec.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+std::vector<std::string> header(const SweepSetup& setup) {
+    std::vector<std::string> h;
+    for (const Axis& a : setup.grid.axes()) h.emplace_back(a.parameter->name);
+    for (const MeasureInfo* m : setup.measures)
+        for (const std::string& c : m->columns) h.push_back(std::string(m->name) + "." + c);
+    h.emplace_back("status");
+    return h;
+}
+
+SweepRow make_row(const SweepSetup& setup, std::size_t index) {
+    const Scenario s = setup.grid.scenario(setup.base, index);
+    std::vector<std::string> cells = setup.grid.cells(index);
+    SweepRow row;
+    row.json = Json::object();
+    const std::vector<std::size_t> pos = setup.grid.position(index);
+    for (std::size_t k = 0; k < setup.grid.axes().size(); ++k) {
+        const Axis& a = setup.grid.axes()[k];
+        const double v = a.values[pos[k]];
+        row.json[a.parameter->name] = a.parameter->whole ? Json(static_cast<long long>(v)) : Json(v);
+    }
+    std::vector<std::string> notes;
+    for (const MeasureInfo* m : setup.measures) {
+        const MeasureResult r = run_measure(*m, s, setup.options);
+        const std::vector<std::string> answer = r.answer ? flatten(*r.answer, m->columns)
+                                                         : std::vector<std::string>(m->columns.size());
+        cells.insert(cells.end(), answer.begin(), answer.end());
+        row.json[m->name] = r.answer ? *r.answer : Json(nullptr);
+        if (!r.note.empty()) notes.push_back(r.note);
+        row.failed = row.failed || r.state == MeasureResult::State::failed;
+    }
+    const std::string status = notes.empty() ? "ok" : fmt::format("{}", fmt::join(notes, "; "));
+    cells.push_back(status);
+    row.json["status"] = status;
+    row.csv = csv_line(cells);
+    return row;
+}
+
+}  // namespace dragon::cli

@@ -1,0 +1,55 @@
+// A line plot panel: one measure against one varied value, scenarios without a value marked
+// along the bottom as what they are, and the contest's dragon as a reference line.
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "dragon/plot.hpp"
+#include "render/map_panels.hpp"
+
+namespace dragon::render {
+
+void draw_line_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, double x, double y, double w, double h) {
+    const Theme& th = map.theme;
+    const std::vector<std::size_t> order = sorted_order(map.x.values);
+    Plot p;
+    p.theme = th;
+    std::string title = panel.quantity + " against " + map.x.quantity;
+    if (!title.empty() && title[0] >= 'a' && title[0] <= 'z') title[0] = static_cast<char>(title[0] - 'a' + 'A');
+    p.title = title;
+    p.note = map.note;
+    p.x_label = axis_label(map.x.quantity, map.x.unit);
+    p.y_label = axis_label(panel.quantity, panel.unit);
+    // The line needs no legend (the axis names it); the markers' legend goes under the plot.
+    p.legend = Plot::Legend::none;
+    PlotSeries values{panel.quantity, {}, series_colour(th, 0), 1.8, true, false, true, 3.0};
+    double lo = INFINITY, hi = -INFINITY;
+    for (std::size_t i : order) {
+        const bool ok = panel.cells[i] == MapCell::value && std::isfinite(panel.values[i]);
+        values.points.push_back({map.x.values[i], ok ? panel.values[i] : NAN});  // NaN: the line breaks
+        if (ok) lo = std::min(lo, panel.values[i]), hi = std::max(hi, panel.values[i]);
+    }
+    if (!(hi >= lo)) lo = 0.0, hi = 1.0;
+    if (hi - lo < 1e-12 * std::max(1.0, std::abs(lo))) lo -= 0.5, hi += 0.5;
+    p.series.push_back(values);
+    // Cells without a value: a row of markers just above the bottom of the frame, one series each.
+    const bool others = has_other_cells(panel);
+    const double strip = lo - 0.08 * (hi - lo);
+    for (MapCell kind : {MapCell::jam, MapCell::refused, MapCell::no_value}) {
+        PlotSeries s{"", {}, cell_style(th, kind, panel).marker, 1.0, false, false, true, 4.0};
+        for (std::size_t i : order)
+            if (panel.cells[i] == kind) s.points.push_back({map.x.values[i], strip});
+        if (!s.points.empty()) p.series.push_back(std::move(s));
+    }
+    p.y_min = others ? lo - 0.14 * (hi - lo) : lo - 0.05 * (hi - lo);
+    p.y_max = hi + 0.08 * (hi - lo);
+    if (map.x.mark) p.ref_lines.push_back({true, *map.x.mark, map.mark_label, th.text, true});
+    const double u = std::max(0.4, std::min(w / 900.0, h / 560.0) * 1.25);  // the plot's own unit
+    const double legend_x = x + 18 * u, legend_w = w - 36 * u;
+    const double legend_room = cell_legend_height(cr, th, panel, legend_w, u);
+    draw_plot(cr, p, x, y, w, h - legend_room);
+    if (legend_room > 0) draw_cell_legend(cr, th, panel, legend_x, y + h - legend_room, legend_w, u, true);
+}
+
+}  // namespace dragon::render

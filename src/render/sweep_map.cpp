@@ -1,0 +1,180 @@
+// A sweep's map: its panels one under the other, the styles of cells without a value, and the
+// output files.
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <numbers>
+#include <numeric>
+
+#include <cairo-svg.h>
+#include <fmt/format.h>
+
+#include "dragon/atomic_file.hpp"
+#include "dragon/cairo_handles.hpp"
+#include "dragon/scenario.hpp"
+#include "render/map_panels.hpp"
+#include "render/paint.hpp"
+
+namespace dragon {
+
+using namespace render;
+
+std::string axis_label(const std::string& quantity, const std::string& unit) {
+    return unit.empty() ? quantity : fmt::format("{} ({})", quantity, unit);
+}
+
+namespace render {
+
+CellStyle cell_style(const Theme& theme, MapCell cell, const MapPanel& panel) {
+    switch (cell) {
+        case MapCell::jam: return {{0.88, 0.88, 0.89}, true, panel.jam_label, {0.84, 0.37, 0.00}};
+        case MapCell::refused: return {{0.60, 0.60, 0.63}, false, "refused (the row's status says why)", {0.40, 0.40, 0.43}};
+        case MapCell::no_value: return {{0.78, 0.83, 0.91}, false, "no answer in the range searched", {0.35, 0.50, 0.75}};
+        case MapCell::missing: return {theme.background, false, "no row (another shard's)", {0.6, 0.6, 0.6}};
+        case MapCell::value: break;
+    }
+    return {theme.background, false, "", theme.text};
+}
+
+void hatch(cairo_t* cr, double x0, double y0, double x1, double y1, double spacing, double width, Rgba colour) {
+    set_colour(cr, colour);
+    cairo_set_line_width(cr, width);
+    // Lines at 45 degrees: x - y constant, stepping across the whole box.
+    for (double c = x0 - (y1 - y0); c < x1; c += spacing) {
+        cairo_move_to(cr, c, y1);
+        cairo_line_to(cr, c + (y1 - y0), y0);
+    }
+    cairo_stroke(cr);
+}
+
+bool has_other_cells(const MapPanel& panel) {
+    return std::any_of(panel.cells.begin(), panel.cells.end(), [](MapCell c) { return c != MapCell::value; });
+}
+
+namespace {
+
+constexpr double kLegendRow = 22, kLegendText = 12, kSwatch = 16, kSwatchGap = 6, kEntryGap = 22;
+
+// Where each entry of the legend goes: its kind, and its offset from the legend's corner.
+struct Placed {
+    MapCell kind;
+    double dx, dy;
+};
+std::vector<Placed> legend_layout(cairo_t* cr, const Theme& theme, const MapPanel& panel, double width, double u) {
+    std::vector<Placed> out;
+    double dx = 0, dy = 0;
+    for (MapCell kind : {MapCell::jam, MapCell::refused, MapCell::no_value, MapCell::missing}) {
+        if (std::find(panel.cells.begin(), panel.cells.end(), kind) == panel.cells.end()) continue;
+        const double w = (kSwatch + kSwatchGap) * u + text_width(cr, theme.font, kLegendText * u, cell_style(theme, kind, panel).label);
+        if (dx > 0 && dx + w > width) dx = 0, dy += kLegendRow * u;  // on to the next row
+        out.push_back({kind, dx, dy});
+        dx += w + kEntryGap * u;
+    }
+    return out;
+}
+
+}  // namespace
+
+double cell_legend_height(cairo_t* cr, const Theme& theme, const MapPanel& panel, double width, double u) {
+    const std::vector<Placed> entries = legend_layout(cr, theme, panel, width, u);
+    return entries.empty() ? 0.0 : entries.back().dy + kLegendRow * u + 8 * u;
+}
+
+void draw_cell_legend(cairo_t* cr, const Theme& theme, const MapPanel& panel, double x, double top, double width,
+                      double u, bool dots) {
+    const double swatch = kSwatch * u;
+    for (const Placed& e : legend_layout(cr, theme, panel, width, u)) {
+        const CellStyle st = cell_style(theme, e.kind, panel);
+        const double sx = x + e.dx, y = top + e.dy + 0.5 * kLegendRow * u;
+        set_colour(cr, theme.text);
+        text(cr, theme.font, kLegendText * u, sx + swatch + kSwatchGap * u, y, st.label, 0.0, 0.5);
+        if (dots) {
+            set_colour(cr, st.marker);
+            cairo_new_sub_path(cr);
+            cairo_arc(cr, sx + 0.5 * swatch, y, 4.0 * u, 0, 2 * std::numbers::pi);
+            cairo_fill(cr);
+            continue;
+        }
+        cairo_save(cr);
+        cairo_rectangle(cr, sx, y - 0.5 * swatch, swatch, swatch);
+        cairo_clip_preserve(cr);
+        set_colour(cr, st.fill);
+        cairo_fill(cr);
+        if (st.hatched) hatch(cr, sx, y - 0.5 * swatch, sx + swatch, y + 0.5 * swatch, 4 * u, 1 * u, {0.45, 0.45, 0.47});
+        cairo_restore(cr);
+        set_colour(cr, theme.text);
+        cairo_set_line_width(cr, 0.8 * u);
+        cairo_rectangle(cr, sx, y - 0.5 * swatch, swatch, swatch);
+        cairo_stroke(cr);
+    }
+}
+
+std::vector<std::size_t> sorted_order(const std::vector<double>& values) {
+    std::vector<std::size_t> order(values.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
+    return order;
+}
+
+}  // namespace render
+
+std::pair<int, int> sweep_map_size(const SweepMap& map) {
+    const int panel = map.y ? 640 : 520;
+    return {1000, panel * static_cast<int>(std::max<std::size_t>(1, map.panels.size()))};
+}
+
+void draw_sweep_map(cairo_t* cr, const SweepMap& map, double w, double h) {
+    set_colour(cr, {map.theme.background.r, map.theme.background.g, map.theme.background.b, 1});
+    cairo_paint(cr);
+    const double ph = h / static_cast<double>(std::max<std::size_t>(1, map.panels.size()));
+    for (std::size_t k = 0; k < map.panels.size(); ++k) {
+        if (map.y) draw_heat_panel(cr, map, map.panels[k], 0, k * ph, w, ph);
+        else draw_line_panel(cr, map, map.panels[k], 0, k * ph, w, ph);
+    }
+}
+
+void require_map_format(const std::string& path) {
+    const std::string ext = extension_of(path);
+    if (ext == ".pdf")
+        throw InputError(fmt::format("--plot {} is not allowed: this build draws maps as .png or .svg (its renderer "
+                                     "writes no PDF yet)", path));
+    if (ext != ".png" && ext != ".svg")
+        throw InputError(fmt::format("--plot {} has extension '{}': use .png or .svg", path, ext));
+}
+
+void write_sweep_map(const SweepMap& map, const std::string& path) {
+    require_map_format(path);
+    const auto [w, h] = sweep_map_size(map);
+    AtomicFile out(path);
+    const auto check = [&](cairo_status_t st, const char* what) {
+        if (st != CAIRO_STATUS_SUCCESS) throw std::runtime_error(fmt::format("{}: {}", what, cairo_status_to_string(st)));
+    };
+    if (extension_of(path) == ".png") {
+        cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
+        check(cairo_surface_status(surface.get()), "creating the image surface");
+        {
+            cairo::Context cr = cairo::make_context(surface.get());
+            draw_sweep_map(cr.get(), map, w, h);
+            check(cairo_status(cr.get()), "drawing the map");
+        }
+        errno = 0;
+        if (const cairo_status_t st = cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()))
+            throw out.write_error(errno != 0 ? std::strerror(errno) : cairo_status_to_string(st));
+    } else {
+        cairo::Surface surface(cairo_svg_surface_create(out.temp_path().c_str(), w, h));
+        check(cairo_surface_status(surface.get()), "creating the SVG surface");
+        {
+            cairo::Context cr = cairo::make_context(surface.get());
+            draw_sweep_map(cr.get(), map, w, h);
+            check(cairo_status(cr.get()), "drawing the map");
+        }
+        errno = 0;
+        cairo_surface_finish(surface.get());
+        if (const cairo_status_t st = cairo_surface_status(surface.get()))
+            throw out.write_error(errno != 0 ? std::strerror(errno) : cairo_status_to_string(st));
+    }
+    out.commit();
+}
+
+}  // namespace dragon

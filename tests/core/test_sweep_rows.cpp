@@ -1,0 +1,128 @@
+// The rows' file of a sweep: rows appended whole and durable, a torn last line (a kill while it
+// was written) dropped on reading and cut off on reopening, so the next row starts on its own
+// line; and run_sweep, which makes every scenario not yet done exactly once and hands the rows
+// over one at a time.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "dragon/sweep.hpp"
+#include "support/scratch.hpp"
+
+using namespace dragon;
+namespace fs = std::filesystem;
+
+namespace {
+std::string slurp(const fs::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+}  // namespace
+
+TEST(SweepRows, TornLastLineIsDroppedAndCutOffBeforeTheNextRow) {
+    const fs::path file = dragon_test::scratch_dir() / "rows.csv.partial";
+    {
+        auto log = RowLog::create(file.string(), {"# spec", "a,b"});
+        log->append("1,x");
+        log->append("2,\"y, z\"");
+    }
+    EXPECT_EQ(slurp(file), "# spec\na,b\n1,x\n2,\"y, z\"\n");
+    {
+        std::ofstream torn(file, std::ios::app | std::ios::binary);
+        torn << "3,par";  // what a kill in the middle of a write leaves
+    }
+    std::vector<std::string> preamble, rows;
+    const auto scan = [&](const fs::path& p, std::size_t lines) {
+        preamble.clear(), rows.clear();
+        return scan_row_file(
+            p.string(), lines, [&](const std::vector<std::string>& pre) { preamble = pre; },
+            [&](const std::string& row) {
+                EXPECT_EQ(preamble.size(), lines);  // the preamble is heard first
+                rows.push_back(row);
+            });
+    };
+    RowFileScan text = scan(file, 2);
+    EXPECT_EQ(preamble, (std::vector<std::string>{"# spec", "a,b"}));
+    EXPECT_EQ(text.preamble, preamble);
+    EXPECT_EQ(rows, (std::vector<std::string>{"1,x", "2,\"y, z\""}));
+    EXPECT_EQ(text.rows, 2u);
+    EXPECT_TRUE(text.torn);
+    {
+        auto log = RowLog::reopen(file.string(), text.complete_bytes);
+        log->append("3,again");
+        log->finish((dragon_test::scratch_dir() / "rows.csv").string());
+    }
+    EXPECT_FALSE(fs::exists(file));
+    text = scan(dragon_test::scratch_dir() / "rows.csv", 2);
+    EXPECT_EQ(rows, (std::vector<std::string>{"1,x", "2,\"y, z\"", "3,again"}));
+    EXPECT_FALSE(text.torn);
+    EXPECT_THROW(scan(file, 2), InputError);                                   // gone
+    EXPECT_THROW(scan(dragon_test::scratch_dir() / "rows.csv", 9), InputError);  // too short
+    // A preamble alone (a sweep killed before its first row) is heard too.
+    { auto log = RowLog::create(file.string(), {"# spec", "a,b"}); }
+    text = scan(file, 2);
+    EXPECT_EQ(preamble.size(), 2u);
+    EXPECT_EQ(text.rows, 0u);
+}
+
+TEST(SweepRun, EachScenarioNotDoneIsMadeOnceAndEmittedOneAtATime) {
+    const SweepGrid grid({parse_axis("width=0.1:0.5:9"), parse_axis("speed=1,2,3")});
+    std::vector<bool> done(grid.size(), false);
+    for (std::size_t i = 0; i < grid.size(); i += 4) done[i] = true;
+    ThreadPool pool(3);
+    for (const Shard shard : {Shard{1, 1}, Shard{2, 5}}) {
+        std::vector<std::atomic<int>> made(grid.size());
+        std::atomic<int> inside{0};
+        std::set<std::size_t> emitted;
+        std::int64_t last_progress = 0, total = 0;
+        run_sweep<std::string>(
+            grid, shard, done, pool,
+            [&](std::size_t i, int) {
+                ++made[i];
+                return csv_line(grid.cells(i));
+            },
+            [&](std::size_t i, std::string&& row) {
+                EXPECT_EQ(inside++, 0);  // never two at once
+                EXPECT_EQ(row, csv_line(grid.cells(i)));
+                EXPECT_TRUE(emitted.insert(i).second);
+                --inside;
+            },
+            [&](std::int64_t d, std::int64_t t) { last_progress = d, total = t; });
+        std::size_t expected = 0;
+        for (std::size_t i = 0; i < grid.size(); ++i) {
+            const bool wanted = shard.holds(i) && !done[i];
+            EXPECT_EQ(made[i].load(), wanted ? 1 : 0) << i;
+            EXPECT_EQ(emitted.count(i), wanted ? 1u : 0u) << i;
+            expected += wanted;
+        }
+        EXPECT_EQ(static_cast<std::size_t>(total), expected);
+        EXPECT_EQ(last_progress, total);
+    }
+}
+
+TEST(SweepFile, ReadsTheCommandLinesKeys) {
+    const fs::path file = dragon_test::scratch_dir() / "map.toml";
+    std::ofstream(file) << "measure = [\"min-pitch\", \"max-speed\"]\n"
+                           "vary = [\"width=0.2:0.4:3\", \"body-length=1.6,2.2\"]\n"
+                           "scenario = \"base.toml\"\n"
+                           "[fixed]\nbench-count = 100\nspeed = 1.5\n"
+                           "[min-pitch]\nlo = \"width+0.05\"\ngrid = 0.005\n";
+    const SweepFile f = read_sweep_file(file.string());
+    EXPECT_EQ(f.measures, (std::vector<std::string>{"min-pitch", "max-speed"}));
+    EXPECT_EQ(f.vary, (std::vector<std::string>{"width=0.2:0.4:3", "body-length=1.6,2.2"}));
+    EXPECT_EQ(f.scenario, (dragon_test::scratch_dir() / "base.toml").string());  // beside the sweep file
+    ASSERT_EQ(f.fixed.size(), 2u);
+    EXPECT_EQ(f.fixed[0], (std::pair<std::string, std::string>{"bench-count", "100"}));
+    EXPECT_EQ(f.fixed[1], (std::pair<std::string, std::string>{"speed", "1.5"}));
+    ASSERT_EQ(f.options.size(), 2u);
+    EXPECT_EQ(f.options[1].value, "width+0.05");
+    for (const char* bad : {"vary = 3\n", "measure = [1]\n", "colour = \"red\"\n", "[fixed]\nwidth = true\n", "vary = [\n"}) {
+        std::ofstream(file) << bad;
+        EXPECT_THROW(read_sweep_file(file.string()), InputError) << bad;
+    }
+}
