@@ -25,23 +25,36 @@ enum class VideoFormat {
 VideoFormat video_format_for(const std::string& path);
 const char* to_string(VideoFormat f);
 
+// The quality each codec gets when VideoOptions::crf is unset.
+struct DefaultCrf {
+    int h264, vp9;
+};
+inline constexpr DefaultCrf kDefaultCrf{23, 35};
+
 struct VideoOptions {
     int width = 1280;   // pixels; even for mp4 and webm (yuv420p halves the chroma planes)
     int height = 720;
     double fps = 30.0;  // frames per second of the video, 0.01 to 240
     // Quality: constant rate factor; lower is better and larger. None: the codec's default here
-    // (H.264: 20, sharper than x264's 23 on thin lines at little cost in size; VP9: 32).
-    // GIF has none.
+    // (H.264: 23, VP9: 35; see kDefaultCrf). GIF has none.
     std::optional<int> crf;
-    // libx264 preset (ultrafast .. veryslow). Encoding costs as much as drawing here, and only
-    // "ultrafast" (~6 ms of CPU per 720p frame against ~15 for "veryfast") leaves two cores
-    // room for 100 frames/s at 720p and 50 at 1080p. It is sharp at crf 20 (no deblocking
-    // blur) but its files are ~3x larger: "veryfast" for a film to keep.
-    std::string preset = "ultrafast";
+    // libx264 preset (ultrafast .. veryslow) and tune (animation, film, stillimage, ...; "none"
+    // for x264's own). The defaults suit line art on two cores, as measured by
+    // scripts/bench-video.sh on the README's coil-in film (720p, 651 frames): "faster" with
+    // tune "animation" (twice the reference frames, more B-frames, less psychovisual noise) at
+    // crf 23 makes 3.4 Mbit/s at 40.6 dB against a lossless encode, where "ultrafast" at crf 20
+    // made 15.8 Mbit/s; it costs ~24 ms of CPU a frame, room for 60+ frames/s on two cores.
+    std::string preset = "faster";
+    std::string tune = "animation";
+    // Seconds between key frames (H.264, VP9): a player can seek to one in at most this long.
+    // Flat drawings that change a little per frame cost a large key frame each; 10 s keeps them
+    // a small share of a film's bits.
+    double keyframe_seconds = 10.0;
     int threads = 0;    // encoder threads, 0 = the codec decides
-    // GIF palette size, 2..256. Fewer colours make much smaller files of flat drawings; the
-    // palette keeps small distinct patches (head, tail) down to ~32.
-    int colours = 256;
+    // GIF palette size, 2..256. Fewer colours make much smaller files of flat drawings (64
+    // instead of 256: a fifth smaller, 0.1 dB lower); the palette keeps small distinct patches
+    // (head, tail) down to ~32. Speed colours need more for a smooth ramp (the CLI asks 256).
+    int colours = 64;
 };
 // Throws InputError for a size or rate the format cannot take (odd size for yuv420p, fps out
 // of range, an unknown preset, a crf or palette size out of range, a crf for GIF).
