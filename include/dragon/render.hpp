@@ -112,6 +112,17 @@ struct SceneOptions {
     // Top-left annotation. Unset: "t = 300.000 s   pitch = 0.55 m" from the frame and scenario;
     // an empty string: none.
     std::optional<std::string> annotation;
+    // The annotation gets a band of its own and the view fits below it (figures: a title must
+    // hide nothing); otherwise it lies over the drawing (films: the view stays put).
+    bool title_band = false;
+    // A key to the colours: head, body, tail, touching benches, the path and the turning space
+    // (the colour bar carries the speeds and their unit).
+    bool show_legend = false;
+    // A small picture of the whole dragon in a corner, the view marked on it: for a camera that
+    // follows the head or shows a fixed window (none on fit_dragon: it would repeat the picture).
+    bool show_inset = false;
+    // The inset's view; unset: the frame's whole dragon (a film fixes one for the clip).
+    std::optional<Camera> inset_camera;
     std::optional<CollisionMark> collision;
     std::vector<int> highlight_benches;  // drawn in the theme's highlight colour
 };
@@ -175,11 +186,30 @@ struct Scene {
     double speed_min = 0.0, speed_max = 1.0;
     bool show_handles = true, show_scale_bar = true, show_colour_bar = true, show_text = true;
     std::string annotation;
+    bool title_band = false;  // SceneOptions::title_band
+
+    // Screen furniture (films mostly). Text is set at a size that follows the picture's height
+    // but never below kMinTextPx, so it reads on a 400 x 300 GIF as on a 4K frame.
+    bool legend = false;
+    bool legend_touching = false;  // the legend has an entry for touching benches
+    std::string clock;             // top right, e.g. "t = 412.474 s"
+    std::string rate;              // under the clock, e.g. "×20": simulated seconds per second of film
+    struct Caption {
+        std::string text;
+        double opacity = 1.0;  // captions fade in and out
+    };
+    std::vector<Caption> captions;  // bottom centre, one box each, the last lowest
+    // The whole dragon, drawn small in the bottom right corner with the main view's box on it.
+    std::shared_ptr<const Scene> inset;
 
     std::vector<Polyline> polylines;
     std::vector<Marker> markers;
     std::vector<Label> labels;
 };
+
+// The smallest text any picture sets, px: the size a 13 px label has at 800 px keeps to at
+// least this on smaller pictures.
+inline constexpr double kMinTextPx = 11.0;
 
 // Throws InputError for a fixed or followed camera whose extent is outside kMinViewExtent ..
 // kMaxViewExtent or whose centre is not finite or beyond kMaxViewCentre.

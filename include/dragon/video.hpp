@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <cairo.h>
 
@@ -141,6 +142,32 @@ struct Clip {
     double hold = 0.0;     // seconds of video the last moment stays on screen, 0..3600 (drawn once)
 };
 
+// A moment a film says in words: a caption from `time` on.
+struct FilmEvent {
+    double time = 0.0;  // simulated s
+    std::string caption;
+};
+
+// What a film shows besides the dragon. Text follows the frame's height and never drops below
+// kMinTextPx, so a 400 x 300 GIF reads as well as a 1080p film.
+struct FilmLook {
+    bool clock = true;   // "t = 412.474 s" top right, the playback rate ("\u00d720") under it
+    bool legend = true;  // what the colours mean, top left
+    bool inset = true;   // the whole dragon small, when the camera follows the head or is zoomed in
+    std::vector<FilmEvent> events;  // each captioned from its moment on
+    // How long a caption stays, s of film; one whose event is the clip's last moment stays to
+    // the end (a held frame).
+    double caption_seconds = 3.0;
+};
+
+// The captions a film of [from, to] should carry: the head reaching the turning space (on
+// the plain spiral, when that lies inside), two benches touching at `to` (`contact`), and the
+// end of the valid motion when `to` is it.
+std::vector<FilmEvent> clip_events(const Simulation& sim, double from, double to,
+                                   const std::optional<CollisionMark>& contact);
+// The caption of a first contact: "first contact: bench 1 touches bench 9, t = 412.473838 s".
+std::string contact_caption(const CollisionMark& mark, double time);
+
 // A clip made drawable: the moment and the scene of every frame. Frames are at from,
 // from + speedup / fps, ... and the last exactly at `to` (so a collision is the final picture),
 // then `hold` seconds more of `to`.
@@ -153,8 +180,10 @@ public:
     // speed colours and no range given, the range is fixed likewise from those moments.
     // `end_mark`: two benches that touch at `to`, drawn marked on the frames of that moment.
     // Keeps a reference to `sim`, which must outlive the animation.
+    // `look`: the clock, legend, inset and captions (with the clock on and no annotation
+    // given, the annotation names the scenario instead of the time).
     Animation(const Simulation& sim, Clip clip, double fps, SceneOptions scene,
-              std::optional<CollisionMark> end_mark = {});
+              std::optional<CollisionMark> end_mark = {}, FilmLook look = {});
 
     int frame_count() const { return frame_count_; }
     // Frames that differ: from this one on, the held last moment repeats frame distinct_frames() - 1.
@@ -167,11 +196,14 @@ public:
     void paint(int index, cairo_t* cr, int width, int height) const;
 
 private:
+    int frame_of(double t) const;  // the first frame at or after simulated time t
+
     const Simulation* sim_;
     Clip clip_;
     double fps_;
     SceneOptions scene_;
     std::optional<CollisionMark> end_mark_;
+    FilmLook look_;
     int moving_frames_ = 0;
     int frame_count_ = 0;
 };

@@ -43,7 +43,7 @@ struct VideoCliOptions {
     std::optional<double> zoom;
     std::string theme = "light";
     bool colour_by_speed = false;
-    bool no_guides = false, no_text = false;
+    bool no_guides = false, no_text = false, no_legend = false, no_inset = false;
     bool quiet = false;
 };
 
@@ -66,16 +66,6 @@ std::pair<int, int> parse_size(const std::string& s) {
     if (w < 0 || h < 0)
         throw InputError(fmt::format("--size {} is not allowed: use WIDTHxHEIGHT in pixels, e.g. 1280x720", s));
     return {w, h};
-}
-
-// When the head front handle reaches the turning-space boundary: on the spiral, radius
-// turn_radius; on the turnaround path the turn begins there at t = 0 by definition.
-double boundary_time(const Simulation& sim) {
-    const Scenario& s = sim.scenario();
-    if (s.path.kind == PathKind::turnaround) return 0.0;
-    const auto& spiral = static_cast<const Spiral&>(sim.path());
-    const double theta = s.path.turn_radius / spiral.b();
-    return (-spiral.length_to(theta) - sim.start_arc()) / s.head_speed;
 }
 
 struct End {
@@ -158,7 +148,9 @@ void register_video(CLI::App& app, Registry& reg) {
     sub->add_option("--theme", opt->theme, "Colour theme: light, dark or a .toml file (default light)");
     sub->add_flag("--speed-colours", opt->colour_by_speed, "Colour each bench by its speed, with a colour bar");
     sub->add_flag("--no-guides", opt->no_guides, "Leave out the path and the turning-space circle");
-    sub->add_flag("--no-text", opt->no_text, "Leave out all text");
+    sub->add_flag("--no-text", opt->no_text, "Leave out all text (clock, captions, legend, labels)");
+    sub->add_flag("--no-legend", opt->no_legend, "Leave out the key to the colours");
+    sub->add_flag("--no-inset", opt->no_inset, "Leave out the small whole-dragon picture of a followed or zoomed view");
     add_quiet_flag(sub, opt->quiet);
 
     reg["video"] = [opt, sub]() {
@@ -200,7 +192,11 @@ void register_video(CLI::App& app, Registry& reg) {
         const double from = opt->from.value_or(turn ? -100.0 : 0.0);
         const End end = resolve_to(opt->to, sim, from);
         Clip clip{from, end.time, opt->speedup, opt->hold.value_or(end.mark ? 1.0 : 0.0)};
-        const Animation anim(sim, clip, vo.fps, scene, end.mark);
+        FilmLook look;
+        look.legend = !opt->no_legend;
+        look.inset = !opt->no_inset;
+        look.events = clip_events(sim, clip.from, clip.to, end.mark);
+        const Animation anim(sim, clip, vo.fps, scene, end.mark, look);
         // A followed head is furthest from the origin at an end of the clip.
         if (opt->zoom)
             for (int index : {0, anim.distinct_frames() - 1})

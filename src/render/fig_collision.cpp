@@ -29,13 +29,6 @@ Polyline segment(Vec2 a, Vec2 b, Rgba colour, double width, bool dashed = false)
     return p;
 }
 
-// The time the head front handle reaches the turning-space boundary on a plain spiral.
-double boundary_time(const Simulation& sim) {
-    const auto& spiral = static_cast<const Spiral&>(sim.path());
-    const double theta_end = sim.scenario().path.turn_radius / spiral.b();
-    return (-spiral.length_to(theta_end) - sim.start_arc()) / sim.scenario().head_speed;
-}
-
 // The last moment the coil-in figures show: the first contact, or with none the end of the run.
 double last_moment(const Context& c, const Simulation& sim) {
     return shown_span(sim, 0.0, sim.end_time(), c.answers->contact()).to;

@@ -62,8 +62,8 @@ void fix_speed_range(const Simulation& sim, const Clip& clip, SceneOptions& scen
 }  // namespace
 
 Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions scene,
-                     std::optional<CollisionMark> end_mark)
-    : sim_(&sim), clip_(clip), fps_(fps), scene_(std::move(scene)), end_mark_(end_mark) {
+                     std::optional<CollisionMark> end_mark, FilmLook look)
+    : sim_(&sim), clip_(clip), fps_(fps), scene_(std::move(scene)), end_mark_(end_mark), look_(std::move(look)) {
     if (!std::isfinite(clip.from) || !std::isfinite(clip.to))
         throw InputError(fmt::format("time range {} .. {} is not allowed: both ends must be finite seconds",
                                      clip.from, clip.to));
@@ -93,8 +93,27 @@ Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions 
     // Both ends on the path (throws InputError otherwise), before any file is touched.
     sim.frame(clip.from);
     sim.frame(clip.to);
+    // An inset for a close view only, showing the whole clip's dragon in one view, as the
+    // fitted camera does (which it becomes just below, hence the order).
+    if (scene_.camera.mode != Camera::Mode::fit_dragon) {
+        scene_.show_inset = scene_.show_inset || look_.inset;
+        if (scene_.show_inset && !scene_.inset_camera) scene_.inset_camera = fixed_camera(sim, clip, Camera{}.margin);
+    }
     if (scene_.camera.mode == Camera::Mode::fit_dragon) scene_.camera = fixed_camera(sim, clip, scene_.camera.margin);
     if (scene_.colour_by_speed) fix_speed_range(sim, clip, scene_);
+    scene_.show_legend = scene_.show_legend || look_.legend;
+    // The clock tells the time: the annotation names what is shown instead.
+    if (look_.clock && !scene_.annotation) {
+        const Scenario& sc = sim.scenario();
+        scene_.annotation = fmt::format("{}: pitch {:g} m, head {:g} m/s",
+                                        sc.path.kind == PathKind::spiral ? "Coiling in" : "Turnaround",
+                                        sc.coil_pitch(), sc.head_speed);
+    }
+}
+
+int Animation::frame_of(double t) const {
+    const double steps = (t - clip_.from) * fps_ / clip_.speedup;
+    return std::clamp(static_cast<int>(std::ceil(steps - 1e-9)), 0, moving_frames_ - 1);
 }
 
 double Animation::time_at(int index) const {
@@ -106,7 +125,25 @@ Scene Animation::scene_at(int index) const {
     const double t = time_at(index);
     SceneOptions opt = scene_;
     if (end_mark_ && t == clip_.to) opt.collision = end_mark_;
-    return make_scene(*sim_, sim_->frame(t), opt);
+    Scene s = make_scene(*sim_, sim_->frame(t), opt);
+    if (end_mark_) s.legend_touching = true;  // the legend keeps one set of entries for the clip
+    if (look_.clock) {
+        s.clock = fmt::format("t = {:.3f} s", t);
+        s.rate = index >= moving_frames_ ? "held" : fmt::format("\u00d7{:g}", clip_.speedup);
+    }
+    // One caption at a time: the latest event's (a later one takes the place of an earlier).
+    for (auto it = look_.events.rbegin(); it != look_.events.rend() && s.captions.empty(); ++it) {
+        const FilmEvent& e = *it;
+        if (e.time < clip_.from || e.time > clip_.to) continue;
+        const int at = frame_of(e.time);
+        const double since = (index - at) / fps_;  // s of film since the caption came up
+        const bool last = at == moving_frames_ - 1;
+        if (since < 0 || (!last && since >= look_.caption_seconds)) continue;
+        // Half a second to fade out, unless it stays to the end.
+        const double out = last ? 1.0 : std::clamp((look_.caption_seconds - since) / 0.5, 0.0, 1.0);
+        s.captions.push_back({e.caption, out});
+    }
+    return s;
 }
 
 void Animation::paint(int index, cairo_t* cr, int width, int height) const {
