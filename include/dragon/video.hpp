@@ -167,6 +167,18 @@ std::vector<FilmEvent> clip_events(const Simulation& sim, double from, double to
                                    const std::optional<CollisionMark>& contact);
 // The caption of a first contact: "first contact: bench 1 touches bench 9, t = 412.473838 s".
 std::string contact_caption(const CollisionMark& mark, double time);
+// What a film of `s` shows, in words, for its annotation: "Coiling in: pitch 0.55 m, head 1 m/s".
+std::string scenario_line(const Scenario& s);
+
+// One view for a stretch of motion, so the picture does not zoom as the dragon coils: it fits
+// the dragon at nine moments spread over [from, to] (it coils in or out monotonically, so a
+// few spread samples bound it; `margin`, a fraction of the box on every side, covers the rest).
+Camera fit_over(const Simulation& sim, double from, double to, double margin = Camera{}.margin);
+// One speed range for a stretch, from the same nine moments, so a colour means one speed.
+struct SpeedRange {
+    double lo, hi;
+};
+SpeedRange speed_range_over(const Simulation& sim, double from, double to);
 
 // A clip made drawable: the moment and the scene of every frame. Frames are at from,
 // from + speedup / fps, ... and the last exactly at `to` (so a collision is the final picture),

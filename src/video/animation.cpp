@@ -17,8 +17,7 @@ constexpr int max_frames = 1'000'000;
 // A held last moment is drawn once, but every second of it is still encoded (about 700 frames/s
 // of a still 720p picture here): an hour is the longest still a film can sensibly end on.
 constexpr double max_hold = 3600.0;  // s
-// Moments the fixed view is fitted to: the dragon coils in or out monotonically, so a few
-// spread samples bound it; the margin covers the motion in between.
+// Moments the fixed view and the speed range are fitted to.
 constexpr int camera_samples = 9;
 
 struct Box {
@@ -32,34 +31,35 @@ struct Box {
     }
 };
 
-// One view for the whole clip, so the picture does not zoom as the dragon coils.
-Camera fixed_camera(const Simulation& sim, const Clip& clip, double margin) {
+double sample_time(double from, double to, int i) { return from + (to - from) * i / (camera_samples - 1); }
+
+}  // namespace
+
+Camera fit_over(const Simulation& sim, double from, double to, double margin) {
     Box box;
-    for (int i = 0; i < camera_samples; ++i) {
-        const double t = clip.from + (clip.to - clip.from) * i / (camera_samples - 1);
-        for (const Rect& r : sim.frame(t).benches)
+    for (int i = 0; i < camera_samples; ++i)
+        for (const Rect& r : sim.frame(sample_time(from, to, i)).benches)
             for (Vec2 p : corners(r).p) box.add(p);
-    }
+    if (!std::isfinite(box.lo_x)) return Camera::at({0, 0}, 2.0);  // no benches
     const double w = box.hi_x - box.lo_x, h = box.hi_y - box.lo_y;
     const double extent = std::max(w, h) * (1.0 + 2.0 * margin);
     return Camera::at({0.5 * (box.lo_x + box.hi_x), 0.5 * (box.lo_y + box.hi_y)}, extent);
 }
 
-// One speed range for the whole clip, so a bench's colour means the same speed in every frame.
-void fix_speed_range(const Simulation& sim, const Clip& clip, SceneOptions& scene) {
+SpeedRange speed_range_over(const Simulation& sim, double from, double to) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (int i = 0; i < camera_samples; ++i) {
-        const double t = clip.from + (clip.to - clip.from) * i / (camera_samples - 1);
-        for (const Handle& h : sim.frame(t).handles) {
+    for (int i = 0; i < camera_samples; ++i)
+        for (const Handle& h : sim.frame(sample_time(from, to, i)).handles) {
             lo = std::min(lo, h.speed);
             hi = std::max(hi, h.speed);
         }
-    }
-    if (!scene.speed_min) scene.speed_min = lo;
-    if (!scene.speed_max) scene.speed_max = std::max(hi, lo + 1e-9);
+    return {lo, std::max(hi, lo + 1e-9)};
 }
 
-}  // namespace
+std::string scenario_line(const Scenario& s) {
+    return fmt::format("{}: pitch {:g} m, head {:g} m/s", s.path.kind == PathKind::spiral ? "Coiling in" : "Turnaround",
+                       s.coil_pitch(), s.head_speed);
+}
 
 Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions scene,
                      std::optional<CollisionMark> end_mark, FilmLook look)
@@ -97,18 +97,18 @@ Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions 
     // fitted camera does (which it becomes just below, hence the order).
     if (scene_.camera.mode != Camera::Mode::fit_dragon) {
         scene_.show_inset = scene_.show_inset || look_.inset;
-        if (scene_.show_inset && !scene_.inset_camera) scene_.inset_camera = fixed_camera(sim, clip, Camera{}.margin);
+        if (scene_.show_inset && !scene_.inset_camera) scene_.inset_camera = fit_over(sim, clip.from, clip.to);
     }
-    if (scene_.camera.mode == Camera::Mode::fit_dragon) scene_.camera = fixed_camera(sim, clip, scene_.camera.margin);
-    if (scene_.colour_by_speed) fix_speed_range(sim, clip, scene_);
+    if (scene_.camera.mode == Camera::Mode::fit_dragon)
+        scene_.camera = fit_over(sim, clip.from, clip.to, scene_.camera.margin);
+    if (scene_.colour_by_speed) {
+        const SpeedRange r = speed_range_over(sim, clip.from, clip.to);
+        if (!scene_.speed_min) scene_.speed_min = r.lo;
+        if (!scene_.speed_max) scene_.speed_max = r.hi;
+    }
     scene_.show_legend = scene_.show_legend || look_.legend;
     // The clock tells the time: the annotation names what is shown instead.
-    if (look_.clock && !scene_.annotation) {
-        const Scenario& sc = sim.scenario();
-        scene_.annotation = fmt::format("{}: pitch {:g} m, head {:g} m/s",
-                                        sc.path.kind == PathKind::spiral ? "Coiling in" : "Turnaround",
-                                        sc.coil_pitch(), sc.head_speed);
-    }
+    if (look_.clock && !scene_.annotation) scene_.annotation = scenario_line(sim.scenario());
 }
 
 int Animation::frame_of(double t) const {
