@@ -143,12 +143,19 @@ struct Marker {
     double radius_px = 4.0;
     bool ring = false;  // an open circle instead of a dot
 };
+// A label names a point. draw() places it by one rule rather than by its offset alone: the
+// place nearest the preferred one (the text's baseline starting (dx, dy) pixels from `pos`)
+// where it lies inside the picture, clear of the other labels, of the screen furniture, of
+// the lines drawn and of every bench but the one it names; a label set away from its point
+// gets a leader line to it.
 struct Label {
-    Vec2 pos;  // the text's left end of the baseline, offset by (dx, dy) pixels
+    Vec2 pos;
     std::string text;
     Rgba colour;
     double size_px = 13.0;
     double dx_px = 4.0, dy_px = -4.0;
+    int bench = 0;    // the first bench (1..N) the label names, which it may cover; 0: none
+    int benches = 1;  // how many benches from `bench` on it names (a handle's number: the two it joins)
 };
 
 // A display list: everything draw() needs, already resolved (no solver calls while drawing;
@@ -226,6 +233,9 @@ void require_drawable(const Scene& scene, int width_px, int height_px);
 // Whole files, written all-or-nothing (AtomicFile). Throw InputError for a bad size or path or
 // a view require_drawable refuses, std::runtime_error if Cairo fails.
 void render_png(const Scene& scene, int width_px, int height_px, const std::string& path);
+// SVG in px as asked; PDF in points at 96 px to the inch (1600 px: 1200 pt), fonts embedded
+// and text selectable.
 void render_svg(const Scene& scene, int width_px, int height_px, const std::string& path);
+void render_pdf(const Scene& scene, int width_px, int height_px, const std::string& path);
 
 }  // namespace dragon

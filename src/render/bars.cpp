@@ -13,8 +13,8 @@ double colour_bar_room(const Scene& s, const Units& un) {
     return (s.colour_by_speed && s.show_colour_bar) ? 110.0 * (s.show_text ? un.ut : un.u) : 0.0;
 }
 
-double draw_scale_bar(cairo_t* cr, const Scene& s, const Units& un, double px_per_m) {
-    if (!s.show_scale_bar) return 0.0;
+Box draw_scale_bar(cairo_t* cr, const Scene& s, const Units& un, double px_per_m) {
+    if (!s.show_scale_bar) return {{0, un.h}, {0, un.h}};
     const double u = un.u;
     const double metres = nice_floor(0.2 * s.view_width);
     const double len = metres * px_per_m;
@@ -33,7 +33,7 @@ double draw_scale_bar(cairo_t* cr, const Scene& s, const Units& un, double px_pe
     cairo_stroke(cr);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
     if (s.show_text) text(cr, s.theme.font, size, x0 + 0.5 * len, y0 - 4 * u - 4 * un.ut, scale_label(metres), 0.5);
-    return x0 - 6 * u + box_w;
+    return {{x0 - 6 * u, y0 + 6 * u - box_h}, {x0 - 6 * u + box_w, y0 + 6 * u}};
 }
 
 void draw_colour_bar(cairo_t* cr, const Scene& s, const Units& un, double room, double top) {
@@ -70,8 +70,8 @@ void draw_colour_bar(cairo_t* cr, const Scene& s, const Units& un, double room, 
     text(cr, s.theme.font, 12 * ut, un.w - 0.5 * room - 3 * ut, y0 - 14 * ut, "speed (m/s)", 0.5);
 }
 
-Corner draw_inset(cairo_t* cr, const Scene& s, const Units& un, double right, Vec2 lo, Vec2 hi) {
-    if (!s.inset) return {right, un.h};
+Box draw_inset(cairo_t* cr, const Scene& s, const Units& un, double right, Vec2 lo, Vec2 hi) {
+    if (!s.inset) return {{right, un.h}, {right, un.h}};
     Scene inset = *s.inset;
     inset.show_text = false;
     const double side = std::round(0.3 * std::min(un.w, un.h));
@@ -90,7 +90,7 @@ Corner draw_inset(cairo_t* cr, const Scene& s, const Units& un, double right, Ve
     cairo_set_line_width(cr, 1.5 * un.u);
     cairo_rectangle(cr, x - 0.75 * un.u, y - 0.75 * un.u, side + 1.5 * un.u, side + 1.5 * un.u);
     cairo_stroke(cr);
-    return {x - 0.75 * un.u, y - 0.75 * un.u};
+    return {{x - 0.75 * un.u, y - 0.75 * un.u}, {x + side + 0.75 * un.u, y + side + 0.75 * un.u}};
 }
 
 }  // namespace dragon::render

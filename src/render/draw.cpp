@@ -13,6 +13,7 @@
 #include "dragon/render.hpp"
 #include "render/furniture.hpp"
 #include "render/guide.hpp"
+#include "render/labels.hpp"
 #include "render/paint.hpp"
 
 namespace dragon {
@@ -307,7 +308,7 @@ void draw_collision(cairo_t* cr, const Scene& s, const View& v, double u) {
     draw_marker(cr, v, {s.collision->point, s.theme.contact, 2.2, false}, p, u);
 }
 
-void draw_overlays(cairo_t* cr, const Scene& s, const View& v, double u, double ut) {
+void draw_overlays(cairo_t* cr, const Scene& s, const View& v, double u) {
     for (const auto& pl : s.polylines) {
         if (pl.points.empty()) continue;
         const std::size_t last = pl.points.size() - 1;
@@ -351,14 +352,6 @@ void draw_overlays(cairo_t* cr, const Scene& s, const View& v, double u, double 
     }
     set_dash(cr, false, u);
     for (const auto& m : s.markers) draw_marker(cr, v, m, v.px(m.pos), u);
-    if (!s.show_text) return;
-    // Labels get a halo of the background colour so they read over benches and lines.
-    for (const auto& l : s.labels) {
-        const Vec2 p = v.px(l.pos);
-        if (!v.tame.holds(p)) continue;  // far outside the picture: none of it could show
-        render::halo_text(cr, s.theme.font, l.size_px * ut, p.x + l.dx_px * u, p.y + l.dy_px * u, l.text,
-                          l.colour, s.theme.background, 3.0 * ut);
-    }
 }
 
 }  // namespace
@@ -391,19 +384,23 @@ void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
     draw_benches(cr, s, v, u, vector_surface, w - right, h);
     draw_handles(cr, s, v, u);
     draw_collision(cr, s, v, u);
-    draw_overlays(cr, s, v, u, un.ut);
+    draw_overlays(cr, s, v, u);
     cairo_restore(cr);
 
-    const double scale_right = render::draw_scale_bar(cr, s, un, v.scale);
-    const render::Corner clock = render::draw_clock(cr, s, un, w - right);
-    render::draw_colour_bar(cr, s, un, right, std::max(clock.top, top));
+    // The furniture, each piece keeping clear of the ones before; labels then keep clear of all.
+    const render::Box bar = render::draw_scale_bar(cr, s, un, v.scale);
+    const render::Box clock = render::draw_clock(cr, s, un, w - right);
+    render::draw_colour_bar(cr, s, un, right, std::max(clock.hi.y, top));
     const render::Box shown = world_box(v, w - right, h, 0.0);
-    const render::Corner inset = render::draw_inset(cr, s, un, w - right, shown.lo, shown.hi);
+    const render::Box inset = render::draw_inset(cr, s, un, w - right, shown.lo, shown.hi);
     // A title band spans the picture; an annotation over the drawing keeps clear of the clock.
-    const double note_bottom = render::draw_annotation(cr, s, un, s.title_band ? w : clock.left);
-    render::draw_legend(cr, s, un, std::max(note_bottom, 2 * u));
+    const render::Box note = render::draw_annotation(cr, s, un, s.title_band ? w : clock.lo.x);
+    const render::Box legend = render::draw_legend(cr, s, un, std::max(note.hi.y, 2 * u));
+    const render::Box strip{{w - right, 0}, {w, h}};
+    render::draw_labels(cr, s, un, [&v](Vec2 p) { return v.px(p); }, {bar, clock, inset, note, legend, strip},
+                        {{0, top}, {w, h}});
     const double scale_top = s.show_scale_bar ? h - 48 * un.ut : h;
-    render::draw_captions(cr, s, un, scale_right, inset.left, std::min(scale_top, inset.top));
+    render::draw_captions(cr, s, un, bar.hi.x, inset.lo.x, std::min(scale_top, inset.lo.y));
     cairo_restore(cr);
 }
 

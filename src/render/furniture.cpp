@@ -53,8 +53,8 @@ double annotation_height(cairo_t* cr, const Scene& s, const Units& un, double ri
     return 8 * un.u + th + 14 * un.ut;
 }
 
-double draw_annotation(cairo_t* cr, const Scene& s, const Units& un, double right) {
-    if (!s.show_text || s.annotation.empty()) return 0.0;
+Box draw_annotation(cairo_t* cr, const Scene& s, const Units& un, double right) {
+    if (!s.show_text || s.annotation.empty()) return {{0, 0}, {0, 0}};
     const std::vector<FittedText> blocks = annotation_blocks(cr, s, un, right);
     double tw = 0;
     for (const auto& b : blocks)
@@ -68,7 +68,7 @@ double draw_annotation(cairo_t* cr, const Scene& s, const Units& un, double righ
             text(cr, s.theme.font, b.size, 8 * un.u + 8 * un.ut, y + 0.5 * b.size, line, 0.0, 0.5);
             y += b.size + gap(un);
         }
-    return bottom;
+    return {{8 * un.u, 8 * un.u}, {8 * un.u + tw + 16 * un.ut, bottom}};
 }
 
 namespace {
@@ -148,8 +148,8 @@ void draw_swatch(cairo_t* cr, const Scene& s, const Entry& e, double x, double y
 
 }  // namespace
 
-double draw_legend(cairo_t* cr, const Scene& s, const Units& un, double top) {
-    if (!s.legend || !s.show_text) return top;
+Box draw_legend(cairo_t* cr, const Scene& s, const Units& un, double top) {
+    if (!s.legend || !s.show_text) return {{0, top}, {0, top}};
     const std::vector<Entry> entries = legend_entries(s);
     const double size = 12 * un.ut, row = 1.5 * size, sw = 1.6 * size, sh = 0.6 * size, pad = 8 * un.ut;
     double tw = 0;
@@ -164,11 +164,11 @@ double draw_legend(cairo_t* cr, const Scene& s, const Units& un, double top) {
         text(cr, s.theme.font, size, x + pad + sw + 0.6 * size, cy, e.label, 0.0, 0.5);
         cy += row;
     }
-    return y + bh;
+    return {{x, y}, {x + bw, y + bh}};
 }
 
-Corner draw_clock(cairo_t* cr, const Scene& s, const Units& un, double right) {
-    if (!s.show_text || (s.clock.empty() && s.rate.empty())) return {right, 0.0};
+Box draw_clock(cairo_t* cr, const Scene& s, const Units& un, double right) {
+    if (!s.show_text || (s.clock.empty() && s.rate.empty())) return {{right, 0}, {right, 0}};
     const double big = 17 * un.ut, small = 13 * un.ut, pad = 8 * un.ut;
     // The clock's width is that of its widest reading ("t = 888.888 s"): digits of DejaVu Sans
     // share one advance, so the box keeps still while the time runs.
@@ -183,7 +183,7 @@ Corner draw_clock(cairo_t* cr, const Scene& s, const Units& un, double right) {
     text(cr, s.theme.font, big, x1 - pad - tw, y0 + pad + 0.5 * big, s.clock, 0.0, 0.5, true);
     if (!s.rate.empty())
         text(cr, s.theme.font, small, x1 - pad, y0 + pad + big + 0.5 * small + 0.5 * small, s.rate, 1.0, 0.5);
-    return {x1 - tw - 2 * pad, y0 + bh};
+    return {{x1 - tw - 2 * pad, y0}, {x1, y0 + bh}};
 }
 
 void draw_captions(cairo_t* cr, const Scene& s, const Units& un, double left, double right, double lift) {

@@ -6,6 +6,7 @@
 #include <cairo.h>
 
 #include "dragon/render.hpp"
+#include "render/clip.hpp"
 
 namespace dragon::render {
 
@@ -16,31 +17,27 @@ struct Units {
     static Units of(double w, double h);
 };
 
-// Where a piece of furniture ended: its left edge and its bottom, px.
-struct Corner {
-    double left, top;
-};
-
 // Width kept free on the right for the colour bar, px (0 without one).
 double colour_bar_room(const Scene& s, const Units& un);
 // Height of the annotation's box set within `right` px of the left edge, px: a title band
 // that tall keeps the view clear of it.
 double annotation_height(cairo_t* cr, const Scene& s, const Units& un, double right);
 
-// The clock, top right, its right edge at `right`; returns its left edge and bottom.
-Corner draw_clock(cairo_t* cr, const Scene& s, const Units& un, double right);
-// The annotation top left, wrapped short of `right` (the clock); returns its bottom, px.
-double draw_annotation(cairo_t* cr, const Scene& s, const Units& un, double right);
-// The legend below `top`; returns its bottom, px.
-double draw_legend(cairo_t* cr, const Scene& s, const Units& un, double top);
+// Each returns the box it covers, px (an empty box at its corner when it drew nothing).
+// The clock, top right, its right edge at `right`.
+Box draw_clock(cairo_t* cr, const Scene& s, const Units& un, double right);
+// The annotation top left, wrapped short of `right` (the clock).
+Box draw_annotation(cairo_t* cr, const Scene& s, const Units& un, double right);
+// The legend below `top`.
+Box draw_legend(cairo_t* cr, const Scene& s, const Units& un, double top);
 
-// The scale bar: its length in metres read at `px_per_m`; returns its right end, px.
-double draw_scale_bar(cairo_t* cr, const Scene& s, const Units& un, double px_per_m);
+// The scale bar, bottom left: its length in metres read at `px_per_m`.
+Box draw_scale_bar(cairo_t* cr, const Scene& s, const Units& un, double px_per_m);
 // The colour bar in the strip `room` px wide on the right, below `top`.
 void draw_colour_bar(cairo_t* cr, const Scene& s, const Units& un, double room, double top);
 // The inset in the bottom right corner, left of `right`, with the world box the main picture
-// shows (lo, hi: metres) marked on it; returns its left edge and top, px.
-Corner draw_inset(cairo_t* cr, const Scene& s, const Units& un, double right, Vec2 lo, Vec2 hi);
+// shows (lo, hi: metres) marked on it.
+Box draw_inset(cairo_t* cr, const Scene& s, const Units& un, double right, Vec2 lo, Vec2 hi);
 // Captions at the bottom, centred, between `left` and `right` if they fit there, else above
 // everything at the bottom (whose top is `lift`).
 void draw_captions(cairo_t* cr, const Scene& s, const Units& un, double left, double right, double lift);
