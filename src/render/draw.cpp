@@ -14,6 +14,7 @@
 #include "render/furniture.hpp"
 #include "render/guide.hpp"
 #include "render/labels.hpp"
+#include "render/view.hpp"
 #include "render/paint.hpp"
 
 namespace dragon {
@@ -21,15 +22,8 @@ namespace dragon {
 namespace {
 
 using render::set_colour;
+using namespace render;  // View and its shapes
 
-// World (metres, y up) to device pixels (y down), aspect ratio kept; and the boxes (pixels)
-// that keep Cairo's work to the picture (see clip.hpp): shapes inside `tame` go to Cairo as they
-// are, the rest are cut to `cut` first.
-struct View {
-    double cx, cy, scale, ox, oy;
-    render::Box tame, cut;
-    Vec2 px(Vec2 p) const { return {ox + (p.x - cx) * scale, oy - (p.y - cy) * scale}; }
-};
 
 // The view fits the picture less the colour bar's strip on the right and the title band on
 // top. Cut shapes keep a margin wider than any line outside the picture, so no cut edge shows.
@@ -41,61 +35,6 @@ View make_view(const Scene& s, double w, double h, double right_room, double top
             picture.grown(4 * (w + h)), picture.grown(32 * u)};
 }
 
-// Flattening tolerance of the arcs cut here, px (Cairo's own default).
-constexpr double arc_tolerance = 0.1;
-
-void polygon_path(cairo_t* cr, const std::vector<Vec2>& pts) {
-    if (pts.empty()) return;
-    cairo_move_to(cr, pts[0].x, pts[0].y);
-    for (std::size_t i = 1; i < pts.size(); ++i) cairo_line_to(cr, pts[i].x, pts[i].y);
-    cairo_close_path(cr);
-}
-
-void rect_path(cairo_t* cr, const View& v, const Rect& r) {
-    const Corners c = corners(r);
-    std::vector<Vec2> pts;
-    for (Vec2 p : c.p) pts.push_back(v.px(p));
-    if (!std::all_of(pts.begin(), pts.end(), [&](Vec2 p) { return v.tame.holds(p); }))
-        pts = render::clip_polygon(std::move(pts), v.cut);
-    polygon_path(cr, pts);
-}
-
-bool tame_circle(const View& v, Vec2 p, double r) { return v.tame.grown(-r).holds(p); }
-bool off_picture(const View& v, Vec2 p, double r) { return !v.cut.grown(r).holds(p); }
-
-// A disk of radius r px about p, to fill.
-void circle_path(cairo_t* cr, const View& v, Vec2 p, double r) {
-    if (off_picture(v, p, r)) return;
-    if (tame_circle(v, p, r)) {
-        cairo_new_sub_path(cr);
-        cairo_arc(cr, p.x, p.y, r, 0, 2 * std::numbers::pi);
-    } else {
-        polygon_path(cr, render::disk_in_box(p, r, v.cut, arc_tolerance));
-    }
-}
-
-// The circle's outline, to stroke.
-void ring_path(cairo_t* cr, const View& v, Vec2 p, double r) {
-    if (off_picture(v, p, r)) return;
-    if (tame_circle(v, p, r)) {
-        cairo_new_sub_path(cr);
-        cairo_arc(cr, p.x, p.y, r, 0, 2 * std::numbers::pi);
-        return;
-    }
-    for (const auto& piece : render::circle_in_box(p, r, v.cut, arc_tolerance)) {
-        cairo_move_to(cr, piece[0].x, piece[0].y);
-        for (std::size_t i = 1; i < piece.size(); ++i) cairo_line_to(cr, piece[i].x, piece[i].y);
-    }
-}
-
-void set_dash(cairo_t* cr, bool dashed, double u) {
-    if (dashed) {
-        const double d[2] = {6 * u, 4 * u};
-        cairo_set_dash(cr, d, 2, 0);
-    } else {
-        cairo_set_dash(cr, nullptr, 0, 0);
-    }
-}
 
 Rgba style_colour(const Scene& s, const Scene::Bench& b) {
     switch (b.style) {
@@ -130,12 +69,6 @@ void draw_turning_space(cairo_t* cr, const Scene& s, const View& v, double u) {
     set_dash(cr, false, u);
 }
 
-// The part of the world the picture shows, widened by `pad_px` pixels on every side.
-render::Box world_box(const View& v, double w, double h, double pad_px) {
-    const double pad = pad_px / v.scale;
-    return {{v.cx - v.ox / v.scale - pad, v.cy - (h - v.oy) / v.scale - pad},
-            {v.cx + (w - v.ox) / v.scale + pad, v.cy + v.oy / v.scale + pad}};
-}
 
 // Bezier segments the guides may use in one picture: far more than a coiled dragon needs (about
 // 2,000 at any size), and few enough that a path packed tighter than the pixels costs what
@@ -288,71 +221,6 @@ void draw_handles(cairo_t* cr, const Scene& s, const View& v, double u) {
     cairo_fill(cr);
 }
 
-void draw_marker(cairo_t* cr, const View& v, const Marker& m, Vec2 p, double u) {
-    if (off_picture(v, p, m.radius_px * u)) return;
-    set_colour(cr, m.colour);
-    if (m.ring) {
-        ring_path(cr, v, p, m.radius_px * u);
-        cairo_set_line_width(cr, 1.5 * u);
-        cairo_stroke(cr);
-    } else {
-        circle_path(cr, v, p, m.radius_px * u);
-        cairo_fill(cr);
-    }
-}
-
-void draw_collision(cairo_t* cr, const Scene& s, const View& v, double u) {
-    if (!s.collision) return;
-    const Vec2 p = v.px(s.collision->point);
-    draw_marker(cr, v, {s.collision->point, s.theme.contact, 9.0, true}, p, u);
-    draw_marker(cr, v, {s.collision->point, s.theme.contact, 2.2, false}, p, u);
-}
-
-void draw_overlays(cairo_t* cr, const Scene& s, const View& v, double u) {
-    for (const auto& pl : s.polylines) {
-        if (pl.points.empty()) continue;
-        const std::size_t last = pl.points.size() - 1;
-        // With an arrowhead the line stops inside the head, so its square end cannot poke out
-        // beside the tip.
-        const double head = (4 + 2.5 * pl.width_px) * u;
-        Vec2 tip{}, dir{};
-        const bool arrow = pl.arrow && last >= 1 && norm(v.px(pl.points[last]) - v.px(pl.points[last - 1])) > 0;
-        if (arrow) {
-            tip = v.px(pl.points[last]);
-            dir = normalized(tip - v.px(pl.points[last - 1]));
-        }
-        std::vector<Vec2> pts;
-        for (std::size_t i = 0; i <= last; ++i) pts.push_back(v.px(pl.points[i]));
-        if (arrow) pts[last] = tip - 0.7 * head * dir;
-        if (std::all_of(pts.begin(), pts.end(), [&](Vec2 p) { return v.tame.holds(p); })) {
-            for (std::size_t i = 0; i <= last; ++i) {
-                if (i == 0) cairo_move_to(cr, pts[i].x, pts[i].y);
-                else cairo_line_to(cr, pts[i].x, pts[i].y);
-            }
-            if (pl.closed) cairo_close_path(cr);
-        } else {
-            for (const auto& piece : render::clip_polyline(pts, pl.closed, v.cut)) {
-                cairo_move_to(cr, piece[0].x, piece[0].y);
-                for (std::size_t i = 1; i < piece.size(); ++i) cairo_line_to(cr, piece[i].x, piece[i].y);
-            }
-        }
-        set_colour(cr, pl.colour);
-        cairo_set_line_width(cr, pl.width_px * u);
-        set_dash(cr, pl.dashed, u);
-        cairo_stroke(cr);
-        if (arrow && !off_picture(v, tip, head)) {
-            const Vec2 n = perp(dir);
-            const Vec2 a = tip - head * dir + 0.45 * head * n, b = tip - head * dir - 0.45 * head * n;
-            cairo_move_to(cr, tip.x, tip.y);
-            cairo_line_to(cr, a.x, a.y);
-            cairo_line_to(cr, b.x, b.y);
-            cairo_close_path(cr);
-            cairo_fill(cr);
-        }
-    }
-    set_dash(cr, false, u);
-    for (const auto& m : s.markers) draw_marker(cr, v, m, v.px(m.pos), u);
-}
 
 }  // namespace
 
