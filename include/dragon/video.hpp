@@ -174,7 +174,8 @@ std::string scenario_line(const Scenario& s);
 // the dragon at nine moments spread over [from, to] (it coils in or out monotonically, so a
 // few spread samples bound it; `margin`, a fraction of the box on every side, covers the rest).
 Camera fit_over(const Simulation& sim, double from, double to, double margin = Camera{}.margin);
-// One speed range for a stretch, from the same nine moments, so a colour means one speed.
+// One speed range for a stretch, from 257 moments spread over it (speeds peak briefly), so a
+// colour means one speed all through.
 struct SpeedRange {
     double lo, hi;
 };

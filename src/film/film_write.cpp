@@ -3,9 +3,9 @@
 
 #include <fmt/format.h>
 
-#include "dragon/atomic_file.hpp"
 #include "dragon/cairo_handles.hpp"
 #include "dragon/film.hpp"
+#include "render/png8.hpp"
 
 namespace dragon {
 
@@ -22,15 +22,13 @@ void write_film_frame(const Film& film, double at, const std::string& path) {
         throw InputError(fmt::format("--at {} is not allowed: the film lasts {:.3f} s; give 0 up to that", at,
                                      film.duration()));
     const int index = std::min(film.frame_count() - 1, static_cast<int>(std::floor(at * fps + 1e-9)));
-    AtomicFile out(path);
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, film.settings().width, film.settings().height));
     {
         cairo::Context cr(cairo_create(surface.get()));
         film.paint(index, cr.get());
     }
-    if (cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()) != CAIRO_STATUS_SUCCESS)
-        throw out.write_error("cannot write the PNG");
-    out.commit();
+    // A palette PNG, as the gallery's: a third of the bytes, no visible change to a drawing.
+    render::write_png8(surface.get(), path, 256);
 }
 
 }  // namespace dragon
