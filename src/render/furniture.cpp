@@ -156,6 +156,9 @@ Box draw_legend(cairo_t* cr, const Scene& s, const Units& un, double top) {
     for (const auto& e : entries) tw = std::max(tw, text_width(cr, s.theme.font, size, e.label));
     const double x = 8 * un.u, y = top + 6 * un.u;
     const double bw = pad + sw + 0.6 * size + tw + pad, bh = pad + row * static_cast<double>(entries.size()) - (row - size) + pad;
+    // On a picture too small for a legend at a readable size (a 320 x 180 GIF), it would hide
+    // the drawing it explains: left out.
+    if (bh > 0.45 * un.h || bw > 0.45 * un.w) return {{0, top}, {0, top}};
     backdrop(cr, s.theme, x, y, bw, bh);
     double cy = y + pad + 0.5 * size;
     for (const auto& e : entries) {
