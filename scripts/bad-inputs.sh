@@ -14,6 +14,15 @@ printf '[dragon]\nwidht = 0.3\n' > unknown.toml
 printf '[[dragon]]\nwidth = 0.3\n' > array.toml
 printf '[dragon]\nwidth = nan\n' > nan.toml
 printf '[path]\npitch = 0.1\n' > narrow.toml
+# Storyboards (tests/cli/test_cli_film.cpp, tests/film/test_storyboard.cpp)
+small='[film]\nsize = "96x64"\nfps = 5\n'
+printf "$small"'[[shot]]\nfrom = 10\nto = 12\nrate = 2\n' > story.toml
+printf "$small"'[[shot]]\nname = "a"\nfrom = 1\nto = 2\nrate = 1\nspeeed = 2\n' > story-key.toml
+printf "$small"'[[shot]]\nname = "late"\nfrom = 430\nto = 440\nrate = 5\n' > story-late.toml
+printf "$small"'[[shot]]\nfrom = 0\nto = 2\nrate = 2\n[[shot]]\nfrom = 0\nto = 0.5\nrate = 2\ntransition = { crossfade = 0.4 }\n[[shot]]\nfrom = 0\nto = 2\nrate = 2\ntransition = { crossfade = 0.4 }\n' > story-fades.toml
+printf "$small"'[[shot]]\nfrom = "collision * 2"\nto = 10\nrate = 5\n' > story-moment.toml
+printf "$small"'[[shot]]\nrate = 5\nslow = { at = 1, within = 1, rate = 1 }\nsplit = [{}, {}]\n' > story-split.toml
+printf "$small"'[[shot]]\nfrom = 0\nto = 10\nrate = 5\npitch = 0.2\n' > story-pitch.toml
 
 # One table row: the command, its exit code, and the first line of stderr (or, for a run that
 # works, the first line of stdout; with row_last, its last line). Pipes are escaped for the table.
@@ -164,6 +173,22 @@ row video -o a.mp4 --size 64x48 --speedup 1e-300 --to 1
 row video -o a.mp4 --size 64x48 --fps 5 --from 0 --to 1 --hold 3601
 row video -o a.mp4 --size 64x48 --fps 5 --from 0 --to 1 --zoom nan
 row video -o a.mp4 --size 1280x720 --fps 5 --to 1 --follow-head --zoom 1e-9
+row video -o a.mp4 --size 64x48 --fps 5 --from 0 --to 1 --tune cartoon
+row video -o a.gif --size 64x48 --fps 5 --from 0 --to 1 --tune film
+row video -o a.mp4 --size 8192x8192 --fps 5 --to 1
+
+header "dragon film (tests/cli/test_cli_film.cpp, tests/film/)"
+row film story-key.toml -o a.mp4
+row film story-late.toml -o a.mp4
+row film story-fades.toml -o a.mp4
+row film story-moment.toml -o a.mp4
+row film story-split.toml -o a.mp4
+row film story-pitch.toml -o a.mp4
+row film story.toml -o a.png
+row film story.toml -o a.png --at 99
+row film story.toml -o a.mp4 --at 1
+row film story.toml -o a.webm --tune film
+row film nowhere.toml -o a.mp4
 
 header "dragon render and figures (tests/render/test_cli_render.cpp)"
 row render --time 100 -o bad.bmp

@@ -8,6 +8,7 @@ packages=(
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   libgtest-dev libbenchmark-dev
   python3 python3-openpyxl
+  poppler-utils ffmpeg
   clang libclang-rt-14-dev
 )
 missing=()

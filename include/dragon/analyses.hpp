@@ -87,6 +87,10 @@ struct BoundaryRun {
     bool feasible() const { return !contact && !jam; }
 };
 BoundaryRun run_to_boundary(Scenario s, double pitch);
+// When the head front handle reaches the turning space's edge: on the plain spiral, where it
+// is turn_radius from the centre (negative if it starts inside); on the turnaround path t = 0,
+// where the turn begins by definition.
+double boundary_time(const Simulation& sim);
 // The first contact of that run (none also when the run jams first).
 std::optional<Contact> contact_before_boundary(Scenario s, double pitch);
 // The first scan's pitch grid, m: feasibility windows narrower than this can slip between two

@@ -15,6 +15,9 @@ struct FigureOptions {
     Theme theme;            // light by default
     double scale = 1.0;     // pixel size relative to the gallery's (about 1000 px wide)
     std::vector<std::string> only;  // names to make (e.g. "fig2_dragon_300s"); empty: all
+    // "png" (palette PNGs, small for a repository), "svg" or "pdf" (for papers: vector shapes,
+    // fonts embedded, text selectable).
+    std::string format = "png";
     // Hears every text each figure puts on its picture (titles, notes, captions, labels, axis
     // names), with the figure's name: what the figures say, without reading their pixels.
     std::function<void(const std::string& figure, const std::string& text)> on_text;
@@ -28,12 +31,12 @@ struct FigureInfo {
 // Every figure the gallery holds, in order.
 std::vector<FigureInfo> figure_list();
 
-// Writes <dir>/<name>.png for each figure (all-or-nothing per file) from the scenario `base`
+// Writes <dir>/<name>.<format> for each figure (all-or-nothing per file) from the scenario `base`
 // (the coil-in figures use it as given; the turnaround ones switch its path kind). Every number
 // a figure prints, and the times and pitches it shows, come from that scenario's own answers
 // (its first contact, its minimum pitch); remarks about the contest's paper appear only for the
 // contest's own scenario (is_contest_default). Calls `done` after each file. Throws InputError
-// for an unknown name in opt.only.
+// for an unknown name in opt.only or an unknown format.
 void write_figures(const std::string& dir, const Scenario& base, const FigureOptions& opt,
                    const std::function<void(const FigureInfo&, const std::string& path)>& done = {});
 

@@ -112,6 +112,17 @@ struct SceneOptions {
     // Top-left annotation. Unset: "t = 300.000 s   pitch = 0.55 m" from the frame and scenario;
     // an empty string: none.
     std::optional<std::string> annotation;
+    // The annotation gets a band of its own and the view fits below it (figures: a title must
+    // hide nothing); otherwise it lies over the drawing (films: the view stays put).
+    bool title_band = false;
+    // A key to the colours: head, body, tail, touching benches, the path and the turning space
+    // (the colour bar carries the speeds and their unit).
+    bool show_legend = false;
+    // A small picture of the whole dragon in a corner, the view marked on it: for a camera that
+    // follows the head or shows a fixed window (none on fit_dragon: it would repeat the picture).
+    bool show_inset = false;
+    // The inset's view; unset: the frame's whole dragon (a film fixes one for the clip).
+    std::optional<Camera> inset_camera;
     std::optional<CollisionMark> collision;
     std::vector<int> highlight_benches;  // drawn in the theme's highlight colour
 };
@@ -132,12 +143,19 @@ struct Marker {
     double radius_px = 4.0;
     bool ring = false;  // an open circle instead of a dot
 };
+// A label names a point. draw() places it by one rule rather than by its offset alone: the
+// place nearest the preferred one (the text's baseline starting (dx, dy) pixels from `pos`)
+// where it lies inside the picture, clear of the other labels, of the screen furniture, of
+// the lines drawn and of every bench but the one it names; a label set away from its point
+// gets a leader line to it.
 struct Label {
-    Vec2 pos;  // the text's left end of the baseline, offset by (dx, dy) pixels
+    Vec2 pos;
     std::string text;
     Rgba colour;
     double size_px = 13.0;
     double dx_px = 4.0, dy_px = -4.0;
+    int bench = 0;    // the first bench (1..N) the label names, which it may cover; 0: none
+    int benches = 1;  // how many benches from `bench` on it names (a handle's number: the two it joins)
 };
 
 // A display list: everything draw() needs, already resolved (no solver calls while drawing;
@@ -175,11 +193,30 @@ struct Scene {
     double speed_min = 0.0, speed_max = 1.0;
     bool show_handles = true, show_scale_bar = true, show_colour_bar = true, show_text = true;
     std::string annotation;
+    bool title_band = false;  // SceneOptions::title_band
+
+    // Screen furniture (films mostly). Text is set at a size that follows the picture's height
+    // but never below kMinTextPx, so it reads on a 400 x 300 GIF as on a 4K frame.
+    bool legend = false;
+    bool legend_touching = false;  // the legend has an entry for touching benches
+    std::string clock;             // top right, e.g. "t = 412.474 s"
+    std::string rate;              // under the clock, e.g. "×20": simulated seconds per second of film
+    struct Caption {
+        std::string text;
+        double opacity = 1.0;  // captions fade in and out
+    };
+    std::vector<Caption> captions;  // bottom centre, one box each, the last lowest
+    // The whole dragon, drawn small in the bottom right corner with the main view's box on it.
+    std::shared_ptr<const Scene> inset;
 
     std::vector<Polyline> polylines;
     std::vector<Marker> markers;
     std::vector<Label> labels;
 };
+
+// The smallest text any picture sets, px: the size a 13 px label has at 800 px keeps to at
+// least this on smaller pictures.
+inline constexpr double kMinTextPx = 11.0;
 
 // Throws InputError for a fixed or followed camera whose extent is outside kMinViewExtent ..
 // kMaxViewExtent or whose centre is not finite or beyond kMaxViewCentre.
@@ -196,6 +233,9 @@ void require_drawable(const Scene& scene, int width_px, int height_px);
 // Whole files, written all-or-nothing (AtomicFile). Throw InputError for a bad size or path or
 // a view require_drawable refuses, std::runtime_error if Cairo fails.
 void render_png(const Scene& scene, int width_px, int height_px, const std::string& path);
+// SVG in px as asked; PDF in points at 96 px to the inch (1600 px: 1200 pt), fonts embedded
+// and text selectable.
 void render_svg(const Scene& scene, int width_px, int height_px, const std::string& path);
+void render_pdf(const Scene& scene, int width_px, int height_px, const std::string& path);
 
 }  // namespace dragon

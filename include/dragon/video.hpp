@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <cairo.h>
 
@@ -25,23 +26,36 @@ enum class VideoFormat {
 VideoFormat video_format_for(const std::string& path);
 const char* to_string(VideoFormat f);
 
+// The quality each codec gets when VideoOptions::crf is unset.
+struct DefaultCrf {
+    int h264, vp9;
+};
+inline constexpr DefaultCrf kDefaultCrf{23, 35};
+
 struct VideoOptions {
     int width = 1280;   // pixels; even for mp4 and webm (yuv420p halves the chroma planes)
     int height = 720;
     double fps = 30.0;  // frames per second of the video, 0.01 to 240
     // Quality: constant rate factor; lower is better and larger. None: the codec's default here
-    // (H.264: 20, sharper than x264's 23 on thin lines at little cost in size; VP9: 32).
-    // GIF has none.
+    // (H.264: 23, VP9: 35; see kDefaultCrf). GIF has none.
     std::optional<int> crf;
-    // libx264 preset (ultrafast .. veryslow). Encoding costs as much as drawing here, and only
-    // "ultrafast" (~6 ms of CPU per 720p frame against ~15 for "veryfast") leaves two cores
-    // room for 100 frames/s at 720p and 50 at 1080p. It is sharp at crf 20 (no deblocking
-    // blur) but its files are ~3x larger: "veryfast" for a film to keep.
-    std::string preset = "ultrafast";
+    // libx264 preset (ultrafast .. veryslow) and tune (animation, film, stillimage, ...; "none"
+    // for x264's own). The defaults suit line art on two cores, as measured by
+    // scripts/bench-video.sh on the README's coil-in film (720p, 651 frames): "faster" with
+    // tune "animation" (twice the reference frames, more B-frames, less psychovisual noise) at
+    // crf 23 makes 3.4 Mbit/s at 40.6 dB against a lossless encode, where "ultrafast" at crf 20
+    // made 15.8 Mbit/s; it costs ~24 ms of CPU a frame, room for 60+ frames/s on two cores.
+    std::string preset = "faster";
+    std::string tune = "animation";
+    // Seconds between key frames (H.264, VP9): a player can seek to one in at most this long.
+    // Flat drawings that change a little per frame cost a large key frame each; 10 s keeps them
+    // a small share of a film's bits.
+    double keyframe_seconds = 10.0;
     int threads = 0;    // encoder threads, 0 = the codec decides
-    // GIF palette size, 2..256. Fewer colours make much smaller files of flat drawings; the
-    // palette keeps small distinct patches (head, tail) down to ~32.
-    int colours = 256;
+    // GIF palette size, 2..256. Fewer colours make much smaller files of flat drawings (64
+    // instead of 256: a fifth smaller, 0.1 dB lower); the palette keeps small distinct patches
+    // (head, tail) down to ~32. Speed colours need more for a smooth ramp (the CLI asks 256).
+    int colours = 64;
 };
 // Throws InputError for a size or rate the format cannot take (odd size for yuv420p, fps out
 // of range, an unknown preset, a crf or palette size out of range, a crf for GIF).
@@ -128,6 +142,45 @@ struct Clip {
     double hold = 0.0;     // seconds of video the last moment stays on screen, 0..3600 (drawn once)
 };
 
+// A moment a film says in words: a caption from `time` on.
+struct FilmEvent {
+    double time = 0.0;  // simulated s
+    std::string caption;
+};
+
+// What a film shows besides the dragon. Text follows the frame's height and never drops below
+// kMinTextPx, so a 400 x 300 GIF reads as well as a 1080p film.
+struct FilmLook {
+    bool clock = true;   // "t = 412.474 s" top right, the playback rate ("\u00d720") under it
+    bool legend = true;  // what the colours mean, top left
+    bool inset = true;   // the whole dragon small, when the camera follows the head or is zoomed in
+    std::vector<FilmEvent> events;  // each captioned from its moment on
+    // How long a caption stays, s of film; one whose event is the clip's last moment stays to
+    // the end (a held frame).
+    double caption_seconds = 3.0;
+};
+
+// The captions a film of [from, to] should carry: the head reaching the turning space (on
+// the plain spiral, when that lies inside), two benches touching at `to` (`contact`), and the
+// end of the valid motion when `to` is it.
+std::vector<FilmEvent> clip_events(const Simulation& sim, double from, double to,
+                                   const std::optional<CollisionMark>& contact);
+// The caption of a first contact: "first contact: bench 1 touches bench 9, t = 412.473838 s".
+std::string contact_caption(const CollisionMark& mark, double time);
+// What a film of `s` shows, in words, for its annotation: "Coiling in: pitch 0.55 m, head 1 m/s".
+std::string scenario_line(const Scenario& s);
+
+// One view for a stretch of motion, so the picture does not zoom as the dragon coils: it fits
+// the dragon at nine moments spread over [from, to] (it coils in or out monotonically, so a
+// few spread samples bound it; `margin`, a fraction of the box on every side, covers the rest).
+Camera fit_over(const Simulation& sim, double from, double to, double margin = Camera{}.margin);
+// One speed range for a stretch, from 257 moments spread over it (speeds peak briefly), so a
+// colour means one speed all through.
+struct SpeedRange {
+    double lo, hi;
+};
+SpeedRange speed_range_over(const Simulation& sim, double from, double to);
+
 // A clip made drawable: the moment and the scene of every frame. Frames are at from,
 // from + speedup / fps, ... and the last exactly at `to` (so a collision is the final picture),
 // then `hold` seconds more of `to`.
@@ -140,8 +193,10 @@ public:
     // speed colours and no range given, the range is fixed likewise from those moments.
     // `end_mark`: two benches that touch at `to`, drawn marked on the frames of that moment.
     // Keeps a reference to `sim`, which must outlive the animation.
+    // `look`: the clock, legend, inset and captions (with the clock on and no annotation
+    // given, the annotation names the scenario instead of the time).
     Animation(const Simulation& sim, Clip clip, double fps, SceneOptions scene,
-              std::optional<CollisionMark> end_mark = {});
+              std::optional<CollisionMark> end_mark = {}, FilmLook look = {});
 
     int frame_count() const { return frame_count_; }
     // Frames that differ: from this one on, the held last moment repeats frame distinct_frames() - 1.
@@ -154,11 +209,14 @@ public:
     void paint(int index, cairo_t* cr, int width, int height) const;
 
 private:
+    int frame_of(double t) const;  // the first frame at or after simulated time t
+
     const Simulation* sim_;
     Clip clip_;
     double fps_;
     SceneOptions scene_;
     std::optional<CollisionMark> end_mark_;
+    FilmLook look_;
     int moving_frames_ = 0;
     int frame_count_ = 0;
 };

@@ -16,6 +16,7 @@ struct FiguresOptions {
     ScenarioFlags scenario;
     std::string out = "renders";
     std::string theme = "light";
+    std::string format = "png";
     double scale = 1.0;
     std::vector<std::string> only;
     bool list = false;
@@ -32,7 +33,10 @@ void register_figures(CLI::App& app, Registry& reg) {
     // --list makes nothing: every option that shapes the figures would do nothing with it.
     for (CLI::Option* o : sub->get_options())
         if (o != list && o->get_name() != "--help") o->excludes(list);
-    sub->add_option("-o,--out", opt->out, "Folder for the PNG files (default renders)")->excludes(list);
+    sub->add_option("-o,--out", opt->out, "Folder for the files (default renders)")->excludes(list);
+    sub->add_option("--format", opt->format, "png (palette PNGs, default), svg or pdf (vector, fonts embedded, "
+                                             "text selectable: for papers)")
+        ->excludes(list);
     sub->add_option("--theme", opt->theme, "Colour theme: light, dark or a .toml file (default light)")->excludes(list);
     sub->add_option("--scale", opt->scale, "Pixel size relative to the gallery's ~1000 px (0.25..8, default 1)")
         ->excludes(list);
@@ -50,6 +54,7 @@ void register_figures(CLI::App& app, Registry& reg) {
         fo.theme = load_theme(opt->theme, DRAGON_ASSET_DIR);
         fo.scale = opt->scale;
         fo.only = opt->only;
+        fo.format = opt->format;
         const std::int64_t total = static_cast<std::int64_t>(fo.only.empty() ? figure_list().size() : fo.only.size());
         std::int64_t done = 0;
         ProgressLine progress("figures", opt->quiet);

@@ -1,4 +1,4 @@
-// dragon render: one moment of any scenario drawn to PNG or SVG.
+// dragon render: one moment of any scenario drawn to PNG, SVG or PDF.
 #include <cstdio>
 
 #include <fmt/format.h>
@@ -44,19 +44,19 @@ Contact find_contact(const Simulation& sim) {
 
 void register_render(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<RenderOptions>();
-    CLI::App* sub = app.add_subcommand("render", "Draw one moment of the dragon to PNG or SVG");
+    CLI::App* sub = app.add_subcommand("render", "Draw one moment of the dragon to PNG, SVG or PDF");
     opt->scenario.add_to(sub, ScenarioUse::drawing());
     auto* when = sub->add_option("--time", opt->time, "The moment to draw, s");
     auto* hit = sub->add_flag("--collision", opt->collision,
                               "Draw the first contact (the termination of coiling in), touching benches marked");
     when->excludes(hit);
-    sub->add_option("-o,--out", opt->out, "Output file: .png or .svg")->required();
+    sub->add_option("-o,--out", opt->out, "Output file: .png, .svg or .pdf (vector, fonts embedded, for papers)")->required();
     opt->look.add_to(sub);
     add_quiet_flag(sub, opt->quiet);
     reg["render"] = [opt]() {
         const std::string ext = extension_of(opt->out);
-        if (ext != ".png" && ext != ".svg")
-            throw InputError(fmt::format("--out {} has extension '{}': use .png or .svg", opt->out, ext));
+        if (ext != ".png" && ext != ".svg" && ext != ".pdf")
+            throw InputError(fmt::format("--out {} has extension '{}': use .png, .svg or .pdf", opt->out, ext));
         if (!opt->time && !opt->collision)
             throw InputError("render needs --time T (seconds) or --collision");
         AtomicFile probe(opt->out);  // fail on an unwritable path before any work
@@ -82,7 +82,8 @@ void register_render(CLI::App& app, Registry& reg) {
         const auto [w, h] = opt->look.size();
         if (opt->look.zoom()) require_zoom_resolves(scene, w, h, *opt->look.zoom());
         if (ext == ".png") render_png(scene, w, h, opt->out);
-        else render_svg(scene, w, h, opt->out);
+        else if (ext == ".svg") render_svg(scene, w, h, opt->out);
+        else render_pdf(scene, w, h, opt->out);
         status(opt->quiet, "wrote {} ({} x {} px, t = {:.6f} s)", opt->out, w, h, frame.time);
         return 0;
     };

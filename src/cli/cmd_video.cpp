@@ -35,14 +35,15 @@ struct VideoCliOptions {
     std::optional<double> hold;
     std::string size = "1280x720";
     std::optional<int> crf;
-    std::string preset = "ultrafast";
+    std::string preset = VideoOptions{}.preset;
+    std::string tune = VideoOptions{}.tune;
     int threads = 0;
-    int colours = 256;
+    std::optional<int> colours;
     bool follow_head = false;
     std::optional<double> zoom;
     std::string theme = "light";
     bool colour_by_speed = false;
-    bool no_guides = false, no_text = false;
+    bool no_guides = false, no_text = false, no_legend = false, no_inset = false;
     bool quiet = false;
 };
 
@@ -133,18 +134,23 @@ void register_video(CLI::App& app, Registry& reg) {
     sub->add_option("--hold", opt->hold, "Seconds the last moment stays on screen, 0..3600, drawn once (default 1 at a collision, else 0)");
     sub->add_option("--size", opt->size, "Picture size in pixels, WIDTHxHEIGHT (default 1280x720; even for mp4/webm)");
     sub->add_option("--crf", opt->crf,
-                    "Quality, lower is better: H.264 0-51 (default 20), VP9 0-63 (default 32); not for GIF");
-    sub->add_option("--preset", opt->preset, "libx264 preset, ultrafast .. veryslow (default ultrafast, the fastest; "
-                                         "veryfast makes ~3x smaller files at ~2x the encoding time)");
+                    fmt::format("Quality, lower is better: H.264 0-51 (default {}), VP9 0-63 (default {}); not for GIF",
+                                kDefaultCrf.h264, kDefaultCrf.vp9));
+    sub->add_option("--preset", opt->preset, "libx264 preset, ultrafast .. veryslow (default faster; ultrafast "
+                                         "encodes ~2x faster into ~5x larger files)");
+    sub->add_option("--tune", opt->tune, "libx264 tune: animation (default, for line art), film, stillimage, "
+                                       "grain, psnr, ssim, fastdecode, zerolatency or none");
     sub->add_option("--threads", opt->threads, "Encoder threads, 0 = automatic (default)");
-    sub->add_option("--colours", opt->colours, "GIF palette size, 2-256 (default 256; 32-64 make small files)");
+    sub->add_option("--colours", opt->colours, "GIF palette size, 2-256 (default 64, 256 with --speed-colours)");
     sub->add_flag("--follow-head", opt->follow_head, "Keep the head in the middle of the picture (a 12 m square unless --zoom)");
     sub->add_option("--zoom", opt->zoom, "Show a square of this many metres, around the head with --follow-head, "
                                          "else around the centre (default: the whole dragon over the clip)");
     sub->add_option("--theme", opt->theme, "Colour theme: light, dark or a .toml file (default light)");
     sub->add_flag("--speed-colours", opt->colour_by_speed, "Colour each bench by its speed, with a colour bar");
     sub->add_flag("--no-guides", opt->no_guides, "Leave out the path and the turning-space circle");
-    sub->add_flag("--no-text", opt->no_text, "Leave out all text");
+    sub->add_flag("--no-text", opt->no_text, "Leave out all text (clock, captions, legend, labels)");
+    sub->add_flag("--no-legend", opt->no_legend, "Leave out the key to the colours");
+    sub->add_flag("--no-inset", opt->no_inset, "Leave out the small whole-dragon picture of a followed or zoomed view");
     add_quiet_flag(sub, opt->quiet);
 
     reg["video"] = [opt, sub]() {
@@ -156,15 +162,19 @@ void register_video(CLI::App& app, Registry& reg) {
         vo.fps = opt->fps;
         vo.crf = opt->crf;
         vo.preset = opt->preset;
+        vo.tune = opt->tune;
         vo.threads = opt->threads;
-        vo.colours = opt->colours;
+        vo.colours = opt->colours.value_or(opt->colour_by_speed ? 256 : VideoOptions{}.colours);
         validate(vo, format);
         // Options of the other formats' encoders would do nothing.
         if (format != VideoFormat::mp4 && sub->count("--preset") > 0)
             throw InputError(fmt::format("--preset {} is not allowed for .{}: it is libx264's, for .mp4", opt->preset,
                                          to_string(format)));
+        if (format != VideoFormat::mp4 && sub->count("--tune") > 0)
+            throw InputError(fmt::format("--tune {} is not allowed for .{}: it is libx264's, for .mp4", opt->tune,
+                                         to_string(format)));
         if (format != VideoFormat::gif && sub->count("--colours") > 0)
-            throw InputError(fmt::format("--colours {} is not allowed for .{}: it sets a GIF's palette", opt->colours,
+            throw InputError(fmt::format("--colours {} is not allowed for .{}: it sets a GIF's palette", vo.colours,
                                          to_string(format)));
         if (opt->zoom) check_zoom(*opt->zoom);
         { AtomicFile probe(opt->out); }  // an unwritable path fails here, before any work
@@ -182,7 +192,11 @@ void register_video(CLI::App& app, Registry& reg) {
         const double from = opt->from.value_or(turn ? -100.0 : 0.0);
         const End end = resolve_to(opt->to, sim, from);
         Clip clip{from, end.time, opt->speedup, opt->hold.value_or(end.mark ? 1.0 : 0.0)};
-        const Animation anim(sim, clip, vo.fps, scene, end.mark);
+        FilmLook look;
+        look.legend = !opt->no_legend;
+        look.inset = !opt->no_inset;
+        look.events = clip_events(sim, clip.from, clip.to, end.mark);
+        const Animation anim(sim, clip, vo.fps, scene, end.mark, look);
         // A followed head is furthest from the origin at an end of the clip.
         if (opt->zoom)
             for (int index : {0, anim.distinct_frames() - 1})

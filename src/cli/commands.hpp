@@ -24,5 +24,6 @@ void register_render(CLI::App& app, Registry& reg);
 void register_figures(CLI::App& app, Registry& reg);
 void register_video(CLI::App& app, Registry& reg);
 void register_sweep(CLI::App& app, Registry& reg);
+void register_film(CLI::App& app, Registry& reg);
 
 }  // namespace dragon::cli

@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
     cli::register_render(app, reg);
     cli::register_figures(app, reg);
     cli::register_video(app, reg);
+    cli::register_film(app, reg);
     cli::register_sweep(app, reg);
 
     if (const std::optional<int> done = cli::parse_command_line(app, argc, argv))

@@ -35,6 +35,8 @@ void RenderFlags::add_to(CLI::App* sub, bool with_view) {
     sub->add_flag("--no-guides", no_guides_, "Leave out the path and the turning-space circle");
     sub->add_flag("--no-text", no_text_, "Leave out all text");
     sub->add_option("--annotation", annotation_, "Text at the top left (default: time and pitch)");
+    sub->add_flag("--legend", legend_, "A key to the colours (head, body, tail, touching benches, path)");
+    sub->add_flag("--inset", inset_, "With --zoom: the whole dragon small in a corner, the view marked on it");
 }
 
 std::pair<int, int> RenderFlags::size() const {
@@ -54,6 +56,8 @@ SceneOptions RenderFlags::scene_options() const {
     so.show_guides = so.show_turning_space = !no_guides_;
     so.show_text = !no_text_;
     so.annotation = annotation_;
+    so.show_legend = legend_;
+    so.show_inset = inset_;
     if (zoom_) check_zoom(*zoom_);
     if (!centre_.empty() && !zoom_) throw InputError("--centre needs --zoom (the width of the view in metres)");
     for (double c : centre_)

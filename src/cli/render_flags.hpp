@@ -38,6 +38,7 @@ private:
     std::optional<double> zoom_;
     std::vector<double> centre_;
     bool speed_colours_ = false, follow_head_ = false, no_guides_ = false, no_text_ = false;
+    bool legend_ = false, inset_ = false;
     std::optional<std::string> annotation_;
 };
 

@@ -11,7 +11,10 @@
 #include <fmt/format.h>
 
 #include "dragon/render.hpp"
+#include "render/furniture.hpp"
 #include "render/guide.hpp"
+#include "render/labels.hpp"
+#include "render/view.hpp"
 #include "render/paint.hpp"
 
 namespace dragon {
@@ -19,83 +22,19 @@ namespace dragon {
 namespace {
 
 using render::set_colour;
+using namespace render;  // View and its shapes
 
-// World (metres, y up) to device pixels (y down), aspect ratio kept; and the boxes (pixels)
-// that keep Cairo's work to the picture (see clip.hpp): shapes inside `tame` go to Cairo as they
-// are, the rest are cut to `cut` first.
-struct View {
-    double cx, cy, scale, ox, oy;
-    render::Box tame, cut;
-    Vec2 px(Vec2 p) const { return {ox + (p.x - cx) * scale, oy - (p.y - cy) * scale}; }
-};
 
-// Space kept free on the right for the colour bar, in units of u.
-constexpr double colour_bar_room = 110.0;
-
-// Cut shapes keep a margin wider than any line outside the picture, so no cut edge shows.
-View make_view(const Scene& s, double w, double h, double right_room, double u) {
-    const double avail = std::max(1.0, w - right_room);
-    const double scale = std::min(avail / s.view_width, h / s.view_height);
+// The view fits the picture less the colour bar's strip on the right and the title band on
+// top. Cut shapes keep a margin wider than any line outside the picture, so no cut edge shows.
+View make_view(const Scene& s, double w, double h, double right_room, double top_room, double u) {
+    const double avail = std::max(1.0, w - right_room), avail_h = std::max(1.0, h - top_room);
+    const double scale = std::min(avail / s.view_width, avail_h / s.view_height);
     const render::Box picture{{0, 0}, {w, h}};
-    return {s.view_centre.x, s.view_centre.y, scale, 0.5 * avail, 0.5 * h, picture.grown(4 * (w + h)),
-            picture.grown(32 * u)};
+    return {s.view_centre.x, s.view_centre.y, scale, 0.5 * avail, top_room + 0.5 * avail_h,
+            picture.grown(4 * (w + h)), picture.grown(32 * u)};
 }
 
-// Flattening tolerance of the arcs cut here, px (Cairo's own default).
-constexpr double arc_tolerance = 0.1;
-
-void polygon_path(cairo_t* cr, const std::vector<Vec2>& pts) {
-    if (pts.empty()) return;
-    cairo_move_to(cr, pts[0].x, pts[0].y);
-    for (std::size_t i = 1; i < pts.size(); ++i) cairo_line_to(cr, pts[i].x, pts[i].y);
-    cairo_close_path(cr);
-}
-
-void rect_path(cairo_t* cr, const View& v, const Rect& r) {
-    const Corners c = corners(r);
-    std::vector<Vec2> pts;
-    for (Vec2 p : c.p) pts.push_back(v.px(p));
-    if (!std::all_of(pts.begin(), pts.end(), [&](Vec2 p) { return v.tame.holds(p); }))
-        pts = render::clip_polygon(std::move(pts), v.cut);
-    polygon_path(cr, pts);
-}
-
-bool tame_circle(const View& v, Vec2 p, double r) { return v.tame.grown(-r).holds(p); }
-bool off_picture(const View& v, Vec2 p, double r) { return !v.cut.grown(r).holds(p); }
-
-// A disk of radius r px about p, to fill.
-void circle_path(cairo_t* cr, const View& v, Vec2 p, double r) {
-    if (off_picture(v, p, r)) return;
-    if (tame_circle(v, p, r)) {
-        cairo_new_sub_path(cr);
-        cairo_arc(cr, p.x, p.y, r, 0, 2 * std::numbers::pi);
-    } else {
-        polygon_path(cr, render::disk_in_box(p, r, v.cut, arc_tolerance));
-    }
-}
-
-// The circle's outline, to stroke.
-void ring_path(cairo_t* cr, const View& v, Vec2 p, double r) {
-    if (off_picture(v, p, r)) return;
-    if (tame_circle(v, p, r)) {
-        cairo_new_sub_path(cr);
-        cairo_arc(cr, p.x, p.y, r, 0, 2 * std::numbers::pi);
-        return;
-    }
-    for (const auto& piece : render::circle_in_box(p, r, v.cut, arc_tolerance)) {
-        cairo_move_to(cr, piece[0].x, piece[0].y);
-        for (std::size_t i = 1; i < piece.size(); ++i) cairo_line_to(cr, piece[i].x, piece[i].y);
-    }
-}
-
-void set_dash(cairo_t* cr, bool dashed, double u) {
-    if (dashed) {
-        const double d[2] = {6 * u, 4 * u};
-        cairo_set_dash(cr, d, 2, 0);
-    } else {
-        cairo_set_dash(cr, nullptr, 0, 0);
-    }
-}
 
 Rgba style_colour(const Scene& s, const Scene::Bench& b) {
     switch (b.style) {
@@ -130,12 +69,6 @@ void draw_turning_space(cairo_t* cr, const Scene& s, const View& v, double u) {
     set_dash(cr, false, u);
 }
 
-// The part of the world the picture shows, widened by `pad_px` pixels on every side.
-render::Box world_box(const View& v, double w, double h, double pad_px) {
-    const double pad = pad_px / v.scale;
-    return {{v.cx - v.ox / v.scale - pad, v.cy - (h - v.oy) / v.scale - pad},
-            {v.cx + (w - v.ox) / v.scale + pad, v.cy + v.oy / v.scale + pad}};
-}
 
 // Bezier segments the guides may use in one picture: far more than a coiled dragon needs (about
 // 2,000 at any size), and few enough that a path packed tighter than the pixels costs what
@@ -288,175 +221,12 @@ void draw_handles(cairo_t* cr, const Scene& s, const View& v, double u) {
     cairo_fill(cr);
 }
 
-void draw_marker(cairo_t* cr, const View& v, const Marker& m, Vec2 p, double u) {
-    if (off_picture(v, p, m.radius_px * u)) return;
-    set_colour(cr, m.colour);
-    if (m.ring) {
-        ring_path(cr, v, p, m.radius_px * u);
-        cairo_set_line_width(cr, 1.5 * u);
-        cairo_stroke(cr);
-    } else {
-        circle_path(cr, v, p, m.radius_px * u);
-        cairo_fill(cr);
-    }
-}
-
-void draw_collision(cairo_t* cr, const Scene& s, const View& v, double u) {
-    if (!s.collision) return;
-    const Vec2 p = v.px(s.collision->point);
-    draw_marker(cr, v, {s.collision->point, s.theme.contact, 9.0, true}, p, u);
-    draw_marker(cr, v, {s.collision->point, s.theme.contact, 2.2, false}, p, u);
-}
-
-void draw_overlays(cairo_t* cr, const Scene& s, const View& v, double u) {
-    for (const auto& pl : s.polylines) {
-        if (pl.points.empty()) continue;
-        const std::size_t last = pl.points.size() - 1;
-        // With an arrowhead the line stops inside the head, so its square end cannot poke out
-        // beside the tip.
-        const double head = (4 + 2.5 * pl.width_px) * u;
-        Vec2 tip{}, dir{};
-        const bool arrow = pl.arrow && last >= 1 && norm(v.px(pl.points[last]) - v.px(pl.points[last - 1])) > 0;
-        if (arrow) {
-            tip = v.px(pl.points[last]);
-            dir = normalized(tip - v.px(pl.points[last - 1]));
-        }
-        std::vector<Vec2> pts;
-        for (std::size_t i = 0; i <= last; ++i) pts.push_back(v.px(pl.points[i]));
-        if (arrow) pts[last] = tip - 0.7 * head * dir;
-        if (std::all_of(pts.begin(), pts.end(), [&](Vec2 p) { return v.tame.holds(p); })) {
-            for (std::size_t i = 0; i <= last; ++i) {
-                if (i == 0) cairo_move_to(cr, pts[i].x, pts[i].y);
-                else cairo_line_to(cr, pts[i].x, pts[i].y);
-            }
-            if (pl.closed) cairo_close_path(cr);
-        } else {
-            for (const auto& piece : render::clip_polyline(pts, pl.closed, v.cut)) {
-                cairo_move_to(cr, piece[0].x, piece[0].y);
-                for (std::size_t i = 1; i < piece.size(); ++i) cairo_line_to(cr, piece[i].x, piece[i].y);
-            }
-        }
-        set_colour(cr, pl.colour);
-        cairo_set_line_width(cr, pl.width_px * u);
-        set_dash(cr, pl.dashed, u);
-        cairo_stroke(cr);
-        if (arrow && !off_picture(v, tip, head)) {
-            const Vec2 n = perp(dir);
-            const Vec2 a = tip - head * dir + 0.45 * head * n, b = tip - head * dir - 0.45 * head * n;
-            cairo_move_to(cr, tip.x, tip.y);
-            cairo_line_to(cr, a.x, a.y);
-            cairo_line_to(cr, b.x, b.y);
-            cairo_close_path(cr);
-            cairo_fill(cr);
-        }
-    }
-    set_dash(cr, false, u);
-    for (const auto& m : s.markers) draw_marker(cr, v, m, v.px(m.pos), u);
-    if (!s.show_text) return;
-    // Labels get a halo of the background colour so they read over benches and lines.
-    for (const auto& l : s.labels) {
-        const Vec2 p = v.px(l.pos);
-        if (!v.tame.holds(p)) continue;  // far outside the picture: none of it could show
-        render::halo_text(cr, s.theme.font, l.size_px * u, p.x + l.dx_px * u, p.y + l.dy_px * u, l.text,
-                          l.colour, s.theme.background, 3.0 * u);
-    }
-}
-
-// A backdrop behind screen-space text so it stays readable over the drawing.
-void backdrop(cairo_t* cr, const Scene& s, double x, double y, double w, double h) {
-    Rgba bg = s.theme.background;
-    bg.a = 0.82;
-    set_colour(cr, bg);
-    cairo_rectangle(cr, x, y, w, h);
-    cairo_fill(cr);
-}
-
-void draw_scale_bar(cairo_t* cr, const Scene& s, const View& v, double u, double h) {
-    if (!s.show_scale_bar) return;
-    const double metres = render::nice_floor(0.2 * s.view_width);
-    const double len = metres * v.scale;
-    const double x0 = 16 * u, y0 = h - 16 * u, tick = 5 * u;
-    backdrop(cr, s, x0 - 6 * u, y0 - (s.show_text ? 26 : 12) * u, len + 12 * u, (s.show_text ? 32 : 18) * u);
-    set_colour(cr, s.theme.text);
-    cairo_set_line_width(cr, 2 * u);
-    cairo_set_line_cap(cr, CAIRO_LINE_CAP_SQUARE);
-    cairo_move_to(cr, x0, y0 - tick);
-    cairo_line_to(cr, x0, y0);
-    cairo_line_to(cr, x0 + len, y0);
-    cairo_line_to(cr, x0 + len, y0 - tick);
-    cairo_stroke(cr);
-    cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
-    if (s.show_text)
-        render::text(cr, s.theme.font, 13 * u, x0 + 0.5 * len, y0 - 9 * u,
-                     render::scale_label(metres), 0.5);
-}
-
-void draw_colour_bar(cairo_t* cr, const Scene& s, double u, double w, double h) {
-    if (!s.colour_by_speed || !s.show_colour_bar) return;
-    const double bar_w = 16 * u, x = w - colour_bar_room * u + 18 * u;
-    const double y0 = 0.18 * h, y1 = 0.82 * h;  // y0 top (fast), y1 bottom (slow)
-    cairo_pattern_t* grad = cairo_pattern_create_linear(0, y1, 0, y0);
-    const auto& stops = s.theme.speed_ramp;
-    for (std::size_t i = 0; i < stops.size(); ++i) {
-        const double t = stops.size() > 1 ? double(i) / double(stops.size() - 1) : 0.0;
-        cairo_pattern_add_color_stop_rgba(grad, t, stops[i].r, stops[i].g, stops[i].b, stops[i].a);
-    }
-    cairo_rectangle(cr, x, y0, bar_w, y1 - y0);
-    cairo_set_source(cr, grad);
-    cairo_fill_preserve(cr);
-    cairo_pattern_destroy(grad);
-    set_colour(cr, s.theme.text);
-    cairo_set_line_width(cr, 1 * u);
-    cairo_stroke(cr);
-    if (!s.show_text) return;
-    const auto ticks = render::nice_ticks(s.speed_min, s.speed_max, 5);
-    for (double t : ticks.values) {
-        const double y = y1 - (t - s.speed_min) / (s.speed_max - s.speed_min) * (y1 - y0);
-        cairo_move_to(cr, x + bar_w, y);
-        cairo_line_to(cr, x + bar_w + 4 * u, y);
-        cairo_stroke(cr);
-        render::text(cr, s.theme.font, 11 * u, x + bar_w + 6 * u, y, render::format_tick(t, ticks.decimals),
-                     0.0, 0.5);
-    }
-    render::text(cr, s.theme.font, 12 * u, x + 0.5 * bar_w, y0 - 18 * u, "speed (m/s)", 0.5);
-}
-
-void draw_annotation(cairo_t* cr, const Scene& s, double u, double w) {
-    if (!s.show_text || s.annotation.empty()) return;
-    // One line per '\n'; the first is the headline, the rest a little smaller. Each is fitted
-    // to the picture's width: wrapped or set smaller rather than run off its edge.
-    const double room = w - 32 * u, gap = 6 * u;
-    std::vector<render::FittedText> blocks;
-    for (std::size_t at = 0;;) {
-        const std::size_t nl = s.annotation.find('\n', at);
-        const std::string line = s.annotation.substr(at, nl == std::string::npos ? std::string::npos : nl - at);
-        blocks.push_back(render::fit_text(cr, s.theme.font, (blocks.empty() ? 15 : 13) * u, line, room));
-        if (nl == std::string::npos) break;
-        at = nl + 1;
-    }
-    double tw = 0, th = -gap;
-    for (const auto& b : blocks)
-        for (const auto& line : b.lines) {
-            tw = std::max(tw, render::text_width(cr, s.theme.font, b.size, line));
-            th += b.size + gap;
-        }
-    backdrop(cr, s, 8 * u, 8 * u, tw + 16 * u, th + 14 * u);
-    set_colour(cr, s.theme.text);
-    double y = 15 * u;
-    for (const auto& b : blocks)
-        for (const auto& line : b.lines) {
-            render::text(cr, s.theme.font, b.size, 16 * u, y + 0.5 * b.size, line, 0.0, 0.5);
-            y += b.size + gap;
-        }
-}
 
 }  // namespace
 
 void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
-    const double w = width_px, h = height_px;
-    // Sizes are given for an 800 px picture and scale with the shorter side, so a 4K frame
-    // looks like a large 800 px one rather than a thin sketch.
-    const double u = std::max(0.25, std::min(w, h) / 800.0);
+    const render::Units un = render::Units::of(width_px, height_px);
+    const double w = un.w, h = un.h, u = un.u;
     cairo_save(cr);
     cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
     set_colour(cr, {s.theme.background.r, s.theme.background.g, s.theme.background.b, 1.0});
@@ -466,13 +236,15 @@ void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
     cairo_new_path(cr);
 
     const bool vector_surface = cairo_surface_get_type(cairo_get_target(cr)) != CAIRO_SURFACE_TYPE_IMAGE;
-    const double right = (s.colour_by_speed && s.show_colour_bar) ? colour_bar_room * u : 0.0;
-    const View v = make_view(s, w, h, right, u);
+    const double right = render::colour_bar_room(s, un);
+    const double top = s.title_band ? render::annotation_height(cr, s, un, w) : 0.0;
+    const View v = make_view(s, w, h, right, top, u);
 
-    // The world keeps clear of the colour bar's strip.
+    // The world runs under the furniture (no clip, so no hard edge where a strip begins); a
+    // title band alone is kept clear, the view fitting below it.
     cairo_save(cr);
-    if (right > 0) {
-        cairo_rectangle(cr, 0, 0, w - right, h);
+    if (top > 0) {
+        cairo_rectangle(cr, 0, top, w, h - top);
         cairo_clip(cr);
     }
     draw_turning_space(cr, s, v, u);
@@ -482,9 +254,21 @@ void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
     draw_collision(cr, s, v, u);
     draw_overlays(cr, s, v, u);
     cairo_restore(cr);
-    draw_scale_bar(cr, s, v, u, h);
-    draw_colour_bar(cr, s, u, w, h);
-    draw_annotation(cr, s, u, w);
+
+    // The furniture, each piece keeping clear of the ones before; labels then keep clear of all.
+    const render::Box bar = render::draw_scale_bar(cr, s, un, v.scale);
+    const render::Box clock = render::draw_clock(cr, s, un, w - right);
+    render::draw_colour_bar(cr, s, un, right, std::max(clock.hi.y, top));
+    const render::Box shown = world_box(v, w - right, h, 0.0);
+    const render::Box inset = render::draw_inset(cr, s, un, w - right, shown.lo, shown.hi);
+    // A title band spans the picture; an annotation over the drawing keeps clear of the clock.
+    const render::Box note = render::draw_annotation(cr, s, un, s.title_band ? w : clock.lo.x);
+    const render::Box legend = render::draw_legend(cr, s, un, std::max(note.hi.y, 2 * u));
+    const render::Box strip{{w - right, 0}, {w, h}};
+    render::draw_labels(cr, s, un, [&v](Vec2 p) { return v.px(p); }, {bar, clock, inset, note, legend, strip},
+                        {{0, top}, {w, h}});
+    const double scale_top = s.show_scale_bar ? h - 48 * un.ut : h;
+    render::draw_captions(cr, s, un, bar.hi.x, inset.lo.x, std::min(scale_top, inset.lo.y));
     cairo_restore(cr);
 }
 

@@ -62,6 +62,7 @@ void broad_phase(const Context& c, const std::string& path) {
 
     SceneOptions so;
     so.theme = th;
+    so.title_band = true;  // a title hides nothing
     so.camera = Camera::at(r.centre, extent);
     so.highlight_benches = candidates;
     const std::string when =
@@ -102,6 +103,7 @@ void first_contact_zoom(const Context& c, const std::string& path) {
     if (bench_a == 0) {  // fewer than three benches: no pair that could touch
         SceneOptions so;
         so.theme = th;
+        so.title_band = true;  // a title hides nothing
         so.annotation = fmt::format("No contact: a chain of {} benches has no two that do not share a handle",
                                     f.benches.size());
         write_scene(c, make_scene(sim, f, so), w, h, path);
@@ -116,76 +118,50 @@ void first_contact_zoom(const Context& c, const std::string& path) {
 
     SceneOptions so;
     so.theme = th;
+    so.title_band = true;  // a title hides nothing
     so.camera = Camera::at(p, extent);
     if (hit) {
         so.collision = CollisionMark{bench_a, bench_b, p};
-        so.annotation = fmt::format("First contact at t = {:.6f} s: bench {} touches bench {} (head at r = {:.4f} m)",
+        so.annotation = fmt::format("First contact at t = {:.6f} s: bench {} touches bench {} (head at r = {:.4f} m)\n"
+                                    "Benches are numbered from 1 at the head; the small numbers are handles, from 0 "
+                                    "at the head's front",
                                     hit->time, bench_a, bench_b, hit->head_radius);
     } else {
         so.highlight_benches = {bench_a, bench_b};
         so.annotation = fmt::format("No contact on the way in: at t = {:.6f} s, the last moment, the closest benches "
-                                    "are {} and {}, {:.6f} m apart",
+                                    "are {} and {}, {:.6f} m apart\n"
+                                    "Benches are numbered from 1 at the head; the small numbers are handles, from 0 "
+                                    "at the head's front",
                                     f.time, bench_a, bench_b, closest.distance);
     }
+    // The whole dragon in the inset (its colours in the legend: the tail is the blue bench).
+    so.show_inset = true;
+    so.show_legend = true;
     Scene s = make_scene(sim, f, so);
-    // Name each bench of the pair beside the contact, along its own axis: a little way back
-    // from the point nearest the contact, or the nearest place to that on the board where the
-    // name is clear of the picture's edges, its title and the inset (bottom right).
-    auto clear_of_all = [&](Vec2 at) {
-        const double x = (at.x - p.x) / extent, y = (p.y - at.y) / extent;  // right, down
-        return x > -0.42 && x < 0.36 && y > -0.38 && y < 0.42 && !(x > 0.09 && y > 0.19);
-    };
+    // Each bench of the pair named a little way back from the contact along its own board; the
+    // label-placement rule keeps the names clear of everything else.
     auto name_at = [&](const Rect& r, int bench) {
         const double along = std::clamp(dot(p - r.centre, r.axis), -r.half_length, r.half_length);
-        const double wanted = along + (along > 0 ? -0.23 : 0.23) * extent;
-        Vec2 at = r.centre + wanted * r.axis;
-        double best = std::numeric_limits<double>::infinity();
-        for (int k = 0; k <= 80 && !clear_of_all(r.centre + wanted * r.axis); ++k) {
-            const double a = -r.half_length + 2 * r.half_length * k / 80;
-            if (const Vec2 q = r.centre + a * r.axis; clear_of_all(q) && std::abs(a - wanted) < best)
-                best = std::abs(a - wanted), at = q;
-        }
-        std::string name = bench == 1 ? "bench 1 (head)" : fmt::format("bench {}", bench);
-        s.labels.push_back(label(at, name, th.text, 15, -40, -16));
+        const double back = std::clamp(along + (along > 0 ? -0.23 : 0.23) * extent, -r.half_length, r.half_length);
+        Label l = label(r.centre + back * r.axis, bench == 1 ? "bench 1 (head)" : fmt::format("bench {}", bench),
+                        th.text, 15, -40, -16);
+        l.bench = bench;
+        s.labels.push_back(l);
     };
     name_at(a, bench_a);
     name_at(b, bench_b);
     s.labels.push_back(label(p, hit ? fmt::format("contact: separation {:.1e} m", sep.distance)
                                     : fmt::format("closest: {:.6f} m apart", sep.distance),
                              th.text, 13, 16, 26));
-    // The handles near the contact, numbered: those well inside the view, so that no number
-    // hides under the title band or runs off the edge.
+    // The handles in view, numbered; a number may lie on the bench the handle ends.
     for (std::size_t i = 0; i < f.handles.size(); ++i)
-        if (const Vec2 d = f.handles[i].pos - p; std::abs(d.x) < 0.46 * extent && d.y > -0.46 * extent && d.y < 0.43 * extent)
-            s.labels.push_back(label(f.handles[i].pos, fmt::format("{}", i), with_alpha(th.text, 0.7), 12, 8, 14));
-
-    c.tell(s);
-    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
-    cairo::Context cr = cairo::make_context(surface.get());
-    draw(cr.get(), s, w, h);
-    // An inset: the whole dragon, the zoomed square marked.
-    SceneOptions io;
-    io.theme = th;
-    io.show_text = false;
-    io.show_scale_bar = false;
-    io.collision = so.collision;
-    io.highlight_benches = so.highlight_benches;
-    Scene inset = make_scene(sim, f, io);
-    const double half = 0.5 * extent;
-    inset.polylines.push_back({{p + Vec2{-half, -half}, p + Vec2{half, -half}, p + Vec2{half, half}, p + Vec2{-half, half}},
-                               th.collision, 2.0, false, true});
-    const int iw = w * 3 / 10;
-    cairo_save(cr.get());
-    cairo_translate(cr.get(), w - iw - 12, h - iw - 12);
-    cairo_rectangle(cr.get(), 0, 0, iw, iw);
-    cairo_clip(cr.get());
-    draw(cr.get(), inset, iw, iw);
-    cairo_restore(cr.get());
-    cairo_set_source_rgb(cr.get(), th.text.r, th.text.g, th.text.b);
-    cairo_set_line_width(cr.get(), 1.5);
-    cairo_rectangle(cr.get(), w - iw - 12.5, h - iw - 12.5, iw + 1, iw + 1);
-    cairo_stroke(cr.get());
-    write_png(surface.get(), path);
+        if (const Vec2 d = f.handles[i].pos - p; std::abs(d.x) < 0.5 * extent && std::abs(d.y) < 0.5 * extent) {
+            Label l = label(f.handles[i].pos, fmt::format("{}", i), with_alpha(th.text, 0.7), 12, 8, 14);
+            l.bench = std::max(1, static_cast<int>(i));  // handle i joins benches i and i + 1
+            l.benches = i == 0 ? 1 : 2;
+            s.labels.push_back(l);
+        }
+    write_scene(c, s, w, h, path);
 }
 
 // Panel pitches a round step apart around `centre`, none below `lo`: three below it and three
@@ -218,7 +194,6 @@ void pitch_states(const Context& c, const std::string& path) {
         const Simulation sim(sc);
         SceneOptions so;
         so.theme = th;
-        so.camera = Camera::at({0, 0}, 2.0 * (radius + sc.bench.head_length));
         so.show_scale_bar = false;
         so.annotation = "";
         const auto hit = contact_before_boundary(c.base, pitch);
@@ -235,6 +210,16 @@ void pitch_states(const Context& c, const std::string& path) {
                                            radius));
         }
         panels.push_back(make_scene(sim, f, so));
+    }
+    // One view for all six, about the centre, holding every panel's whole dragon: the pitches
+    // compare at one scale and no outer coil is cut.
+    double reach = 0;
+    for (const Scene& p : panels)
+        for (const Scene::Bench& b : p.benches)
+            for (Vec2 q : corners(b.rect).p) reach = std::max({reach, std::abs(q.x), std::abs(q.y)});
+    for (Scene& p : panels) {
+        p.view_centre = {0, 0};
+        p.view_width = p.view_height = 2.06 * reach;
     }
     std::string verdict;
     if (std::isnan(least.pitch))
@@ -264,19 +249,18 @@ void pitch_states(const Context& c, const std::string& path) {
     const double line_h = 1.3 * fitted.size;
     const int title_h = c.px(40) + static_cast<int>(std::ceil(line_h * (static_cast<double>(fitted.lines.size()) - 1)));
     const int h = rows * (ph + caption_h) + (rows + 1) * gap + title_h;
-    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
-    cairo::Context cr = cairo::make_context(surface.get());
-    cairo_set_source_rgb(cr.get(), th.background.r, th.background.g, th.background.b);
-    cairo_paint(cr.get());
-    cairo_save(cr.get());
-    cairo_translate(cr.get(), 0, title_h);
-    draw_panels(cr.get(), panels, captions, cols, pw, ph, caption_h, th, gap);
-    cairo_restore(cr.get());
-    cairo_set_source_rgb(cr.get(), th.text.r, th.text.g, th.text.b);
-    for (std::size_t i = 0; i < fitted.lines.size(); ++i)
-        render::text(cr.get(), th.font, fitted.size, gap + 8, c.px(40) * 0.7 + line_h * static_cast<double>(i),
-                     fitted.lines[i], 0.0, 0.0, true);
-    write_png(surface.get(), path);
+    write_picture(w, h, path, 64, [&](cairo_t* cr) {
+        cairo_set_source_rgb(cr, th.background.r, th.background.g, th.background.b);
+        cairo_paint(cr);
+        cairo_save(cr);
+        cairo_translate(cr, 0, title_h);
+        draw_panels(cr, panels, captions, cols, pw, ph, caption_h, th, gap);
+        cairo_restore(cr);
+        cairo_set_source_rgb(cr, th.text.r, th.text.g, th.text.b);
+        for (std::size_t i = 0; i < fitted.lines.size(); ++i)
+            render::text(cr, th.font, fitted.size, gap + 8, c.px(40) * 0.7 + line_h * static_cast<double>(i),
+                         fitted.lines[i], 0.0, 0.0, true);
+    });
 }
 
 void clearance_over_time(const Context& c, const std::string& path) {

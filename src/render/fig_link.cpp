@@ -66,6 +66,7 @@ void link_geometry(const Context& c, const std::string& path) {
     double y0 = std::min({h0.y, h2.y, tip0.y, h0.y - d1}), y1 = std::max({h0.y, h2.y, tip0.y, h0.y + d1});
     SceneOptions so;
     so.theme = th;
+    so.title_band = true;  // a title hides nothing
     so.show_turning_space = false;
     so.camera = Camera::at({0.5 * (x0 + x1), 0.5 * (y0 + y1)}, std::max(x1 - x0, y1 - y0) + 1.4);
     so.annotation = fmt::format(

@@ -18,13 +18,18 @@ void dragon_at_300s(const Context& c, const std::string& path) {
     const char* why = hit && t == hit->time ? " (the first contact)" : t < 300.0 ? " (the end of the run)" : "";
     SceneOptions so;
     so.theme = c.opt.theme;
+    so.title_band = true;  // a title hides nothing
     so.colour_by_speed = true;
     const Vec2 head = f.handles.front().pos;
-    so.annotation = fmt::format("t = {} s{}   head front at ({:.6f}, {:.6f})   pitch {:g} m", seconds(t), why,
-                                head.x, head.y, c.base.coil_pitch());
+    so.annotation = fmt::format("t = {} s{}   head front at x = {:.6f} m, y = {:.6f} m   pitch {:g} m", seconds(t),
+                                why, head.x, head.y, c.base.coil_pitch());
     Scene s = make_scene(sim, f, so);
-    s.labels.push_back(label(head, "head", c.opt.theme.text, 14, 8, -8));
-    s.labels.push_back(label(f.handles.back().pos, "tail", c.opt.theme.text, 14, 40, 6));
+    Label h = label(head, "head", c.opt.theme.text, 14, 8, -8);
+    h.bench = 1;
+    Label tl = label(f.handles.back().pos, "tail", c.opt.theme.text, 14, 8, -8);
+    tl.bench = static_cast<int>(f.benches.size());
+    s.labels.push_back(h);
+    s.labels.push_back(tl);
     // Coloured by speed: a full palette keeps the colour map smooth.
     write_scene(c, s, c.px(1100), c.px(1000), path, 256);
 }
@@ -41,6 +46,7 @@ void turnaround_scene(const Context& c, const std::string& path) {
     for (const Handle& h : f.handles) fastest = std::max(fastest, h.speed);
     SceneOptions so;
     so.theme = load_theme("dark");
+    so.title_band = true;  // a title hides nothing
     so.colour_by_speed = true;
     so.camera = Camera::at({0, 0}, 2.0 * sc.path.turn_radius + 9.0);
     so.annotation = fmt::format("Turnaround at t = {:.1f} s, 1 s after the head leaves the S-curve (orange), pitch {:g} m\n"

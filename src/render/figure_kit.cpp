@@ -10,6 +10,7 @@
 #include "dragon/cairo_handles.hpp"
 #include "render/paint.hpp"
 #include "render/png8.hpp"
+#include "render/vector_out.hpp"
 
 namespace dragon::fig {
 
@@ -95,9 +96,19 @@ void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, const std::vecto
     }
 }
 
-// The gallery is kept small (it lives in the repository): 256-colour palette PNGs.
-void write_png(cairo_surface_t* surface, const std::string& path, int colours) {
-    render::write_png8(surface, path, colours);
+void write_picture(int w, int h, const std::string& path, int colours, const std::function<void(cairo_t*)>& paint) {
+    const render::PictureFormat format = render::picture_format(path);
+    if (format != render::PictureFormat::png) {
+        render::write_vector(path, format, w, h, paint);
+        return;
+    }
+    // The gallery is kept small (it lives in the repository): palette PNGs.
+    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
+    {
+        cairo::Context cr = cairo::make_context(surface.get());
+        paint(cr.get());
+    }
+    render::write_png8(surface.get(), path, colours);
 }
 
 void Context::tell(const std::string& text) const {
@@ -119,18 +130,12 @@ void Context::tell(const Plot& p) const {
 
 void write_scene(const Context& c, const Scene& scene, int w, int h, const std::string& path, int colours) {
     c.tell(scene);
-    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
-    cairo::Context cr = cairo::make_context(surface.get());
-    draw(cr.get(), scene, w, h);
-    write_png(surface.get(), path, colours);
+    write_picture(w, h, path, colours, [&](cairo_t* cr) { draw(cr, scene, w, h); });
 }
 
 void write_plot(const Context& c, const Plot& plot, int w, int h, const std::string& path) {
     c.tell(plot);
-    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
-    cairo::Context cr = cairo::make_context(surface.get());
-    draw_plot(cr.get(), plot, 0, 0, w, h);
-    write_png(surface.get(), path);
+    write_picture(w, h, path, 64, [&](cairo_t* cr) { draw_plot(cr, plot, 0, 0, w, h); });
 }
 
 }  // namespace dragon::fig

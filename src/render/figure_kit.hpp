@@ -1,6 +1,7 @@
 // Shared pieces of the gallery's figures: sizes, labels, a contact witness, panel layout.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -47,9 +48,10 @@ std::string seconds(double t);
 // caption strip caption_h pixels tall.
 void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, const std::vector<std::string>& captions, int cols,
                  int panel_w, int panel_h, int caption_h, const Theme& theme, int gap_px);
-// A palette PNG: 64 colours suit flat drawings; speed-coloured pictures need 256 so the colour
-// map stays smooth.
-void write_png(cairo_surface_t* surface, const std::string& path, int colours = 64);
+// A picture of w x h px painted by `paint`, in the figures' format by the path's extension: a
+// palette PNG (64 colours suit flat drawings; speed-coloured pictures need 256 so the colour
+// map stays smooth), an SVG or a PDF.
+void write_picture(int w, int h, const std::string& path, int colours, const std::function<void(cairo_t*)>& paint);
 // One scene or one plot as the whole picture, its texts told first.
 void write_scene(const Context& c, const Scene& scene, int w, int h, const std::string& path, int colours = 64);
 void write_plot(const Context& c, const Plot& plot, int w, int h, const std::string& path);

@@ -49,6 +49,8 @@ void write_figures(const std::string& dir, const Scenario& base, const FigureOpt
             throw InputError(fmt::format("figure \"{}\" is unknown: choose from {}", name, all));
         }
     }
+    if (opt.format != "png" && opt.format != "svg" && opt.format != "pdf")
+        throw InputError(fmt::format("figure format \"{}\" is unknown: use png, svg or pdf", opt.format));
     if (!(opt.scale >= 0.25 && opt.scale <= 8))
         throw InputError(fmt::format("figure scale {} is not allowed: use 0.25..8", opt.scale));
     std::error_code ec;
@@ -59,7 +61,7 @@ void write_figures(const std::string& dir, const Scenario& base, const FigureOpt
     ctx.answers = std::make_shared<fig::Answers>(ctx.base);
     for (const auto& e : entries()) {
         if (!opt.only.empty() && std::find(opt.only.begin(), opt.only.end(), e.info.name) == opt.only.end()) continue;
-        const std::string path = (std::filesystem::path(dir) / (e.info.name + ".png")).string();
+        const std::string path = (std::filesystem::path(dir) / (e.info.name + "." + opt.format)).string();
         ctx.figure = e.info.name;
         e.make(ctx, path);
         if (done) done(e.info, path);

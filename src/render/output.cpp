@@ -1,9 +1,12 @@
-// Whole-file outputs: the same draw() onto an image surface (PNG) or a vector surface (SVG).
+// Whole-file outputs: the same draw() onto an image surface (PNG) or a vector surface (SVG, PDF).
 #include <cerrno>
 #include <cstring>
 
+#include <cairo-pdf.h>
 #include <cairo-svg.h>
 #include <fmt/format.h>
+
+#include "render/vector_out.hpp"
 
 #include "dragon/atomic_file.hpp"
 #include "dragon/cairo_handles.hpp"
@@ -47,16 +50,31 @@ void render_png(const Scene& scene, int w, int h, const std::string& path) {
     out.commit();
 }
 
-void render_svg(const Scene& scene, int w, int h, const std::string& path) {
-    check_size(w, h);
-    require_drawable(scene, w, h);
+namespace render {
+
+PictureFormat picture_format(const std::string& path) {
+    const std::string ext = extension_of(path);
+    if (ext == ".png") return PictureFormat::png;
+    if (ext == ".svg") return PictureFormat::svg;
+    if (ext == ".pdf") return PictureFormat::pdf;
+    throw InputError(fmt::format("output '{}' has extension '{}': pictures are .png, .svg or .pdf", path, ext));
+}
+
+void write_vector(const std::string& path, PictureFormat format, int w, int h,
+                  const std::function<void(cairo_t*)>& paint) {
     AtomicFile out(path);
     {
-        // SVG user units are points; one pixel of the layout is one unit.
-        cairo::Surface surface(cairo_svg_surface_create(out.temp_path().c_str(), w, h));
-        check(cairo_surface_status(surface.get()), "creating the SVG surface");
+        // CSS pixels: 96 to the inch, 72 points to the inch.
+        constexpr double pt_per_px = 72.0 / 96.0;
+        cairo::Surface surface(format == PictureFormat::pdf
+                                   ? cairo_pdf_surface_create(out.temp_path().c_str(), w * pt_per_px, h * pt_per_px)
+                                   : cairo_svg_surface_create(out.temp_path().c_str(), w, h));
+        check(cairo_surface_status(surface.get()), "creating the vector surface");
+        if (format == PictureFormat::svg) cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
+        else cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "benchdragon");
         cairo::Context cr = cairo::make_context(surface.get());
-        draw(cr.get(), scene, w, h);
+        if (format == PictureFormat::pdf) cairo_scale(cr.get(), pt_per_px, pt_per_px);
+        paint(cr.get());
         check(cairo_status(cr.get()), "drawing");
         cr.reset();
         errno = 0;
@@ -65,6 +83,20 @@ void render_svg(const Scene& scene, int w, int h, const std::string& path) {
             throw out.write_error(errno != 0 ? std::strerror(errno) : cairo_status_to_string(st));
     }
     out.commit();
+}
+
+}  // namespace render
+
+void render_svg(const Scene& scene, int w, int h, const std::string& path) {
+    check_size(w, h);
+    require_drawable(scene, w, h);
+    render::write_vector(path, render::PictureFormat::svg, w, h, [&](cairo_t* cr) { draw(cr, scene, w, h); });
+}
+
+void render_pdf(const Scene& scene, int w, int h, const std::string& path) {
+    check_size(w, h);
+    require_drawable(scene, w, h);
+    render::write_vector(path, render::PictureFormat::pdf, w, h, [&](cairo_t* cr) { draw(cr, scene, w, h); });
 }
 
 }  // namespace dragon

@@ -47,14 +47,18 @@ void halo_text(cairo_t* cr, const std::string& font, double size_px, double x, d
     select_font(cr, font, size_px, false);
     cairo_text_extents_t e;
     cairo_text_extents(cr, s.c_str(), &e);
+    // The halo is the glyphs' outline stroked wide; the text itself is shown as text, so a PDF
+    // or SVG keeps it selectable and searchable.
     cairo_move_to(cr, x - align * e.x_advance, y);
     cairo_text_path(cr, s.c_str());
     set_colour(cr, {halo.r, halo.g, halo.b, 0.85});
     cairo_set_line_width(cr, halo_px);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    cairo_stroke_preserve(cr);
+    cairo_stroke(cr);
     set_colour(cr, colour);
-    cairo_fill(cr);
+    cairo_move_to(cr, x - align * e.x_advance, y);
+    cairo_show_text(cr, s.c_str());
+    cairo_new_path(cr);
 }
 
 double text_width(cairo_t* cr, const std::string& font, double size_px, const std::string& s, bool bold) {

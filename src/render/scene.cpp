@@ -113,6 +113,26 @@ void add_guides(Scene& scene, const Simulation& sim, const Frame& frame) {
     }
 }
 
+// The whole dragon small (draw() marks the main view's box on it): where a close-up or a
+// followed head is.
+std::shared_ptr<const Scene> make_inset(const Simulation& sim, const Frame& frame, const SceneOptions& opt,
+                                        const Scene& main) {
+    SceneOptions io;
+    io.theme = opt.theme;
+    io.camera = opt.inset_camera.value_or(Camera::fit());
+    io.colour_by_speed = opt.colour_by_speed;
+    io.speed_min = main.speed_min;
+    io.speed_max = main.speed_max;
+    io.show_guides = opt.show_guides;
+    io.show_turning_space = opt.show_turning_space;
+    io.show_handles = false;
+    io.show_scale_bar = io.show_colour_bar = io.show_text = false;
+    io.annotation = "";
+    io.collision = opt.collision;
+    io.highlight_benches = opt.highlight_benches;
+    return std::make_shared<const Scene>(make_scene(sim, frame, io));
+}
+
 }  // namespace
 
 Scene make_scene(const Simulation& sim, const Frame& frame, const SceneOptions& opt) {
@@ -157,6 +177,10 @@ Scene make_scene(const Simulation& sim, const Frame& frame, const SceneOptions& 
     scene.show_text = opt.show_text;
     scene.annotation = opt.annotation.value_or(
         fmt::format("t = {:.3f} s   pitch = {:.3g} m", frame.time, sc.coil_pitch()));
+    scene.title_band = opt.title_band;
+    scene.legend = opt.show_legend;
+    scene.legend_touching = opt.collision.has_value();
+    if (opt.show_inset && opt.camera.mode != Camera::Mode::fit_dragon) scene.inset = make_inset(sim, frame, opt, scene);
     return scene;
 }
 

@@ -17,8 +17,7 @@ constexpr int max_frames = 1'000'000;
 // A held last moment is drawn once, but every second of it is still encoded (about 700 frames/s
 // of a still 720p picture here): an hour is the longest still a film can sensibly end on.
 constexpr double max_hold = 3600.0;  // s
-// Moments the fixed view is fitted to: the dragon coils in or out monotonically, so a few
-// spread samples bound it; the margin covers the motion in between.
+// Moments the fixed view and the speed range are fitted to.
 constexpr int camera_samples = 9;
 
 struct Box {
@@ -32,38 +31,45 @@ struct Box {
     }
 };
 
-// One view for the whole clip, so the picture does not zoom as the dragon coils.
-Camera fixed_camera(const Simulation& sim, const Clip& clip, double margin) {
+double sample_time(double from, double to, int i) { return from + (to - from) * i / (camera_samples - 1); }
+
+}  // namespace
+
+Camera fit_over(const Simulation& sim, double from, double to, double margin) {
     Box box;
-    for (int i = 0; i < camera_samples; ++i) {
-        const double t = clip.from + (clip.to - clip.from) * i / (camera_samples - 1);
-        for (const Rect& r : sim.frame(t).benches)
+    for (int i = 0; i < camera_samples; ++i)
+        for (const Rect& r : sim.frame(sample_time(from, to, i)).benches)
             for (Vec2 p : corners(r).p) box.add(p);
-    }
+    if (!std::isfinite(box.lo_x)) return Camera::at({0, 0}, 2.0);  // no benches
     const double w = box.hi_x - box.lo_x, h = box.hi_y - box.lo_y;
     const double extent = std::max(w, h) * (1.0 + 2.0 * margin);
     return Camera::at({0.5 * (box.lo_x + box.hi_x), 0.5 * (box.lo_y + box.hi_y)}, extent);
 }
 
-// One speed range for the whole clip, so a bench's colour means the same speed in every frame.
-void fix_speed_range(const Simulation& sim, const Clip& clip, SceneOptions& scene) {
+SpeedRange speed_range_over(const Simulation& sim, double from, double to) {
+    // Speeds peak briefly (handles just behind the head as it leaves the S-curve): far more
+    // moments than the view needs, each a chain solve of some 16 us.
+    constexpr int speed_samples = 257;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (int i = 0; i < camera_samples; ++i) {
-        const double t = clip.from + (clip.to - clip.from) * i / (camera_samples - 1);
-        for (const Handle& h : sim.frame(t).handles) {
+    Frame f;
+    for (int i = 0; i < speed_samples; ++i) {
+        sim.frame_into(from + (to - from) * i / (speed_samples - 1), f);
+        for (const Handle& h : f.handles) {
             lo = std::min(lo, h.speed);
             hi = std::max(hi, h.speed);
         }
     }
-    if (!scene.speed_min) scene.speed_min = lo;
-    if (!scene.speed_max) scene.speed_max = std::max(hi, lo + 1e-9);
+    return {lo, std::max(hi, lo + 1e-9)};
 }
 
-}  // namespace
+std::string scenario_line(const Scenario& s) {
+    return fmt::format("{}: pitch {:g} m, head {:g} m/s", s.path.kind == PathKind::spiral ? "Coiling in" : "Turnaround",
+                       s.coil_pitch(), s.head_speed);
+}
 
 Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions scene,
-                     std::optional<CollisionMark> end_mark)
-    : sim_(&sim), clip_(clip), fps_(fps), scene_(std::move(scene)), end_mark_(end_mark) {
+                     std::optional<CollisionMark> end_mark, FilmLook look)
+    : sim_(&sim), clip_(clip), fps_(fps), scene_(std::move(scene)), end_mark_(end_mark), look_(std::move(look)) {
     if (!std::isfinite(clip.from) || !std::isfinite(clip.to))
         throw InputError(fmt::format("time range {} .. {} is not allowed: both ends must be finite seconds",
                                      clip.from, clip.to));
@@ -93,8 +99,27 @@ Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions 
     // Both ends on the path (throws InputError otherwise), before any file is touched.
     sim.frame(clip.from);
     sim.frame(clip.to);
-    if (scene_.camera.mode == Camera::Mode::fit_dragon) scene_.camera = fixed_camera(sim, clip, scene_.camera.margin);
-    if (scene_.colour_by_speed) fix_speed_range(sim, clip, scene_);
+    // An inset for a close view only, showing the whole clip's dragon in one view, as the
+    // fitted camera does (which it becomes just below, hence the order).
+    if (scene_.camera.mode != Camera::Mode::fit_dragon) {
+        scene_.show_inset = scene_.show_inset || look_.inset;
+        if (scene_.show_inset && !scene_.inset_camera) scene_.inset_camera = fit_over(sim, clip.from, clip.to);
+    }
+    if (scene_.camera.mode == Camera::Mode::fit_dragon)
+        scene_.camera = fit_over(sim, clip.from, clip.to, scene_.camera.margin);
+    if (scene_.colour_by_speed) {
+        const SpeedRange r = speed_range_over(sim, clip.from, clip.to);
+        if (!scene_.speed_min) scene_.speed_min = r.lo;
+        if (!scene_.speed_max) scene_.speed_max = r.hi;
+    }
+    scene_.show_legend = scene_.show_legend || look_.legend;
+    // The clock tells the time: the annotation names what is shown instead.
+    if (look_.clock && !scene_.annotation) scene_.annotation = scenario_line(sim.scenario());
+}
+
+int Animation::frame_of(double t) const {
+    const double steps = (t - clip_.from) * fps_ / clip_.speedup;
+    return std::clamp(static_cast<int>(std::ceil(steps - 1e-9)), 0, moving_frames_ - 1);
 }
 
 double Animation::time_at(int index) const {
@@ -106,7 +131,25 @@ Scene Animation::scene_at(int index) const {
     const double t = time_at(index);
     SceneOptions opt = scene_;
     if (end_mark_ && t == clip_.to) opt.collision = end_mark_;
-    return make_scene(*sim_, sim_->frame(t), opt);
+    Scene s = make_scene(*sim_, sim_->frame(t), opt);
+    if (end_mark_) s.legend_touching = true;  // the legend keeps one set of entries for the clip
+    if (look_.clock) {
+        s.clock = fmt::format("t = {:.3f} s", t);
+        s.rate = index >= moving_frames_ ? "held" : fmt::format("\u00d7{:g}", clip_.speedup);
+    }
+    // One caption at a time: the latest event's (a later one takes the place of an earlier).
+    for (auto it = look_.events.rbegin(); it != look_.events.rend() && s.captions.empty(); ++it) {
+        const FilmEvent& e = *it;
+        if (e.time < clip_.from || e.time > clip_.to) continue;
+        const int at = frame_of(e.time);
+        const double since = (index - at) / fps_;  // s of film since the caption came up
+        const bool last = at == moving_frames_ - 1;
+        if (since < 0 || (!last && since >= look_.caption_seconds)) continue;
+        // Half a second to fade out, unless it stays to the end.
+        const double out = last ? 1.0 : std::clamp((look_.caption_seconds - since) / 0.5, 0.0, 1.0);
+        s.captions.push_back({e.caption, out});
+    }
+    return s;
 }
 
 void Animation::paint(int index, cairo_t* cr, int width, int height) const {

@@ -14,11 +14,17 @@ namespace dragon {
 namespace {
 constexpr std::array<std::string_view, 10> x264_presets = {
     "ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow", "placebo"};
+constexpr std::array<std::string_view, 9> x264_tunes = {"none",     "film",     "animation",  "grain",      "stillimage",
+                                                        "psnr",     "ssim",     "fastdecode", "zerolatency"};
 constexpr double max_fps = 240.0;
 // A frame at most every 100 s: GIF stores a frame's delay in 1/100 s in 16 bits (655 s at
 // most), and the MP4 muxer refuses the durations of rates below ~1e-5.
 constexpr double min_fps = 0.01;
-constexpr int max_side = 8192;  // px; H.264 level limits and memory, not taste
+constexpr int max_side = 8192;  // px; memory and the codecs' limits, not taste
+// H.264's largest level (6.2) allows 139,264 macroblocks of 16x16 pixels in a frame (8192 x 4352,
+// say); decoders refuse more, so a bigger MP4 would be a file no player opens.
+constexpr long h264_max_macroblocks = 139264;
+constexpr double max_keyframe_seconds = 3600.0;
 }  // namespace
 
 VideoFormat video_format_for(const std::string& path) {
@@ -49,6 +55,13 @@ void validate(const VideoOptions& opt, VideoFormat format) {
     if (!(opt.fps >= min_fps) || !(opt.fps <= max_fps))
         throw InputError(fmt::format("--fps {} is not allowed: use a rate from {} to {} frames per second", opt.fps,
                                      min_fps, max_fps));
+    if (format == VideoFormat::mp4) {
+        const long mbs = static_cast<long>((opt.width + 15) / 16) * ((opt.height + 15) / 16);
+        if (mbs > h264_max_macroblocks)
+            throw InputError(fmt::format("video size {}x{} is not allowed for mp4: H.264 allows at most {} macroblocks "
+                                         "of 16x16 pixels a frame (8192x4352, say), this size has {}",
+                                         opt.width, opt.height, h264_max_macroblocks, mbs));
+    }
     if (opt.crf && format == VideoFormat::gif)
         throw InputError(fmt::format("--crf {} is not allowed for .gif: a GIF has no quality setting (--colours "
                                      "sets its palette)", *opt.crf));
@@ -62,7 +75,15 @@ void validate(const VideoOptions& opt, VideoFormat format) {
         if (!known)
             throw InputError(fmt::format("--preset {} is not allowed: use one of ultrafast, superfast, veryfast, "
                                          "faster, fast, medium, slow, slower, veryslow", opt.preset));
+        known = false;
+        for (auto t : x264_tunes) known = known || t == opt.tune;
+        if (!known)
+            throw InputError(fmt::format("--tune {} is not allowed: use one of animation, film, stillimage, grain, "
+                                         "psnr, ssim, fastdecode, zerolatency or none", opt.tune));
     }
+    if (!(opt.keyframe_seconds > 0.0 && opt.keyframe_seconds <= max_keyframe_seconds))
+        throw InputError(fmt::format("key frame interval {} s is not allowed: use more than 0, up to {:g} s",
+                                     opt.keyframe_seconds, max_keyframe_seconds));
     if (opt.colours < 2 || opt.colours > 256)
         throw InputError(fmt::format("--colours {} is not allowed: a GIF palette has 2 to 256 colours", opt.colours));
     if (opt.threads < 0 || opt.threads > 64)

@@ -80,7 +80,7 @@ TEST(Animation, HeldLastMomentIsDrawnOnce) {
     ASSERT_EQ(anim.distinct_frames(), moving);
     ASSERT_EQ(anim.frame_count(), moving + held);
 
-    VideoOptions opt;  // H.264 at crf 20, as in DecodedH264FrameMatchesTheRenderersPicture
+    VideoOptions opt;  // H.264 at the default quality, as in DecodedH264FrameMatchesTheRenderersPicture
     opt.width = 640;
     opt.height = 360;
     opt.fps = fps;
@@ -153,7 +153,7 @@ TEST(Animation, DecodedH264FrameMatchesTheRenderersPicture) {
     Scenario s;
     const Simulation sim(s);
     const Animation anim(sim, Clip{100.0, 104.0, 2.0}, 10, SceneOptions{});
-    VideoOptions opt;  // the defaults but the size: H.264, ultrafast, crf 20
+    VideoOptions opt;  // the defaults but the size: H.264, faster, tune animation, crf 23
     opt.width = 640;
     opt.height = 360;
     const std::string path = scratch("coil.mp4");

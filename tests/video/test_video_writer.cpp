@@ -136,6 +136,23 @@ TEST(VideoWriter, BadOptionsAreInputErrors) {
     VideoOptions slow;
     slow.preset = "glacial";
     EXPECT_THROW(validate(slow, VideoFormat::mp4), InputError);
+    VideoOptions cartoon;
+    cartoon.tune = "cartoon";
+    EXPECT_THROW(validate(cartoon, VideoFormat::mp4), InputError);
+    cartoon.tune = "none";  // x264's own tuning
+    EXPECT_NO_THROW(validate(cartoon, VideoFormat::mp4));
+    VideoOptions no_keys;
+    no_keys.keyframe_seconds = 0;
+    EXPECT_THROW(validate(no_keys, VideoFormat::webm), InputError);
+    // H.264's largest level holds 139,264 macroblocks: 8192x4352 is the widest 16:8.5 frame it
+    // takes, 8192x4368 one row of macroblocks too many. VP9 and GIF have no such limit here.
+    VideoOptions big;
+    big.width = 8192;
+    big.height = 4352;
+    EXPECT_NO_THROW(validate(big, VideoFormat::mp4));
+    big.height = 4368;
+    EXPECT_THROW(validate(big, VideoFormat::mp4), InputError);
+    EXPECT_NO_THROW(validate(big, VideoFormat::webm));
     EXPECT_THROW(video_format_for("film.avi"), InputError);
     EXPECT_THROW(video_format_for("film"), InputError);
     EXPECT_EQ(video_format_for("Film.MP4"), VideoFormat::mp4);

@@ -1,0 +1,165 @@
+// Storyboards: one TOML file, one film. A storyboard is data: shots, each a stretch of one
+// scenario's motion (or two side by side, or a title card) with a playback rate, a camera,
+// captions and a transition from the shot before. It is read and checked here, resolved
+// against its simulations (the first contact, the turning space, the end of the valid motion)
+// and rendered frame by frame on demand through the video writer, so memory stays at a few
+// frames whatever the film's length. The format is described in docs/storyboards.md.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <cairo.h>
+
+#include "dragon/render.hpp"
+#include "dragon/scenario.hpp"
+#include "dragon/video.hpp"
+
+namespace dragon {
+
+// A bad storyboard, naming where: the shot (1-based; 0: the [film] table) and the key.
+struct StoryboardError : InputError {
+    StoryboardError(const std::string& file, int shot, const std::string& shot_name, const std::string& key,
+                    const std::string& why);
+    int shot = 0;
+    std::string key;
+};
+
+// A moment of a shot's run: a time, or an event of the run plus an offset
+// ("collision - 5": five simulated seconds before the first contact).
+struct TimeRef {
+    enum class Anchor { time, collision, boundary, end };
+    Anchor anchor = Anchor::time;
+    double offset = 0.0;  // s; the time itself for Anchor::time
+};
+
+// What a camera shows: the run's whole dragon, the head (followed), a fixed window, or a
+// window about the run's first contact.
+struct Window {
+    enum class Kind { fit, head, fixed, contact };
+    Kind kind = Kind::fit;
+    Vec2 centre;          // fixed
+    double extent = 0.0;  // head, fixed, contact: metres across
+};
+
+enum class Ease { linear, in_out };
+
+// A camera that stays (from only) or moves from one window to another over the shot.
+struct CameraMove {
+    Window from;
+    std::optional<Window> to;
+    Ease ease = Ease::in_out;
+};
+
+// Slower playback near a moment: `rate` simulated seconds per film second within `within`
+// simulated seconds of `at`, easing back to the shot's rate over as long again on each side.
+struct SlowMotion {
+    TimeRef at;
+    double within = 0.0;
+    double rate = 1.0;
+};
+
+// The shot's last moment held for `seconds` of film, the camera closing in on a window `zoom`
+// metres across about the contact (or the head, when the shot does not end on one).
+struct Freeze {
+    double seconds = 0.0;
+    std::optional<double> zoom;
+};
+
+// A caption of the storyboard's own, from `at` (the shot's start if unset) for `seconds` of film.
+struct CaptionSpec {
+    std::string text;
+    std::optional<TimeRef> at;
+    double seconds = 3.0;
+};
+
+// One scene: a scenario on its path over [from, to], seen through a camera.
+struct ShotView {
+    Scenario scenario;
+    std::string label;  // the scene's annotation (top left); empty: the scenario in words
+    TimeRef from, to;
+    CameraMove camera;
+    bool speed_colours = false;
+    bool guides = true;
+};
+
+struct Shot {
+    enum class Kind { scene, split, title };
+    Kind kind = Kind::scene;
+    std::string name;                 // for messages: the shot's name key, or "shot N"
+    std::string title, subtitle;      // title cards
+    std::vector<ShotView> views;      // one (scene) or two side by side (split)
+    std::optional<double> rate;       // simulated s per film s
+    std::optional<double> duration;   // film s (a title card's, or a scene's instead of a rate)
+    std::optional<SlowMotion> slow;
+    Freeze freeze;
+    std::vector<CaptionSpec> captions;
+    bool events = true;               // captions at the run's events (turning space, contact, end)
+    bool legend = true, clock = true, inset = true;
+    bool text = true;                 // false: no words at all (clean footage)
+    double crossfade = 0.0;           // film s over which it fades in over the shot before; 0: a cut
+};
+
+struct FilmSettings {
+    int width = 1280, height = 720;
+    double fps = 30.0;
+    std::string theme = "light";
+};
+
+struct Storyboard {
+    std::string file;  // for messages
+    FilmSettings film;
+    std::vector<Shot> shots;
+};
+
+// Reads a storyboard: unknown keys, wrong types and values out of range are StoryboardErrors
+// naming the shot and key. A shot's scenario is a preset's name (assets/<name>.toml) or a
+// .toml file relative to the storyboard, with the shot's own keys over it. Times are checked
+// against the runs by Film.
+Storyboard load_storyboard(const std::string& path, const std::string& asset_dir = "");
+Storyboard parse_storyboard(const std::string& toml_text, const std::string& file, const std::string& base_dir,
+                            const std::string& asset_dir = "");
+
+// A storyboard resolved against its simulations: every time found (first contacts searched,
+// the turning space and the end of the valid motion located), every frame's moment and camera
+// known, nothing drawn. Throws StoryboardError for a moment past the valid motion (or off the
+// path), an empty or reversed range, a contact that never happens, or transitions that
+// overlap.
+class Film {
+public:
+    explicit Film(const Storyboard& board);
+    ~Film();
+    Film(const Film&) = delete;
+    Film& operator=(const Film&) = delete;
+
+    const FilmSettings& settings() const;
+    int frame_count() const;
+    double duration() const { return frame_count() / settings().fps; }  // s
+
+    // Where each shot lies in the film: its first frame, its frame count and how many of its
+    // first frames fade in over the shot before.
+    struct ShotSpan {
+        int first = 0, count = 0, fade = 0;
+    };
+    const std::vector<ShotSpan>& spans() const;
+    // The simulated moment frame `local` of shot `shot` shows in its view `view`.
+    double time_at(int shot, int local, int view = 0) const;
+    // The scene of that frame (its camera, captions, clock), as paint() draws it.
+    Scene scene_at(int shot, int local, int view = 0) const;
+
+    // Paints film frame `index` onto a width x height picture; safe to call from several threads.
+    void paint(int index, cairo_t* cr) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// Renders and encodes the film (opt's size and rate are the film's).
+EncodeStats write_film(const Film& film, const std::string& path, VideoOptions opt, const ProgressFn& progress = {});
+// One frame, the one shown `at` seconds into the film, as a PNG (all-or-nothing).
+void write_film_frame(const Film& film, double at, const std::string& path);
+
+}  // namespace dragon

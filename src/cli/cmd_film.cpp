@@ -1,0 +1,95 @@
+// dragon film STORY.toml -o film.mp4: a storyboard's shots assembled into one film (or one of
+// its frames as a PNG, for a poster).
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "cli/progress.hpp"
+#include "cli/status.hpp"
+#include "dragon/atomic_file.hpp"
+#include "dragon/film.hpp"
+#include "dragon/video.hpp"
+
+namespace dragon::cli {
+
+namespace {
+struct FilmCliOptions {
+    std::string story, out, size;
+    std::optional<double> fps, at;
+    std::optional<int> crf, colours;
+    std::optional<std::string> preset, tune;
+    bool quiet = false;
+};
+
+std::pair<int, int> parse_size(const std::string& s) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 16 || h < 16 ||
+        w > 8192 || h > 8192)
+        throw InputError(fmt::format("--size {} is not allowed: use WIDTHxHEIGHT, each 16 to 8192 pixels", s));
+    return {w, h};
+}
+}  // namespace
+
+void register_film(CLI::App& app, Registry& reg) {
+    auto opt = std::make_shared<FilmCliOptions>();
+    CLI::App* sub = app.add_subcommand("film", "Assemble a storyboard's shots into one film (MP4, WebM, GIF) or a poster frame (PNG)");
+    sub->add_option("storyboard", opt->story, "The storyboard, a .toml file (see assets/films/contest.toml)")->required();
+    sub->add_option("-o,--out", opt->out, "Output: .mp4, .webm or .gif; .png with --at for one frame")->required();
+    sub->add_option("--at", opt->at, "With a .png: the frame shown this many seconds into the film");
+    sub->add_option("--size", opt->size, "Frame size WIDTHxHEIGHT, over the storyboard's [film] size");
+    sub->add_option("--fps", opt->fps, "Frames per second, over the storyboard's [film] fps");
+    sub->add_option("--crf", opt->crf, fmt::format("Quality: H.264 0-51 (default {}), VP9 0-63 (default {})",
+                                                   kDefaultCrf.h264, kDefaultCrf.vp9));
+    sub->add_option("--preset", opt->preset, "libx264 preset (default faster)");
+    sub->add_option("--tune", opt->tune, "libx264 tune (default animation)");
+    sub->add_option("--colours", opt->colours, "GIF palette size, 2-256 (default 64)");
+    add_quiet_flag(sub, opt->quiet);
+
+    reg["film"] = [opt]() {
+        const bool poster = extension_of(opt->out) == ".png";
+        if (poster && !opt->at) throw InputError("--out " + opt->out + " is a picture: give --at SECONDS, the moment of the film it shows");
+        if (!poster && opt->at) throw InputError(fmt::format("--at {} is not allowed for a film: it picks one frame for a .png", *opt->at));
+        VideoOptions vo;
+        const VideoFormat format = poster ? VideoFormat::mp4 : video_format_for(opt->out);
+        if (poster && (opt->crf || opt->preset || opt->tune || opt->colours))
+            throw InputError("--crf, --preset, --tune and --colours are not allowed for a .png: they set a film's encoding");
+        if (format != VideoFormat::mp4 && (opt->preset || opt->tune))
+            throw InputError(fmt::format("--{} is not allowed for .{}: it is libx264's, for .mp4", opt->preset ? "preset" : "tune",
+                                         to_string(format)));
+        if (format != VideoFormat::gif && opt->colours)
+            throw InputError(fmt::format("--colours {} is not allowed for .{}: it sets a GIF's palette", *opt->colours,
+                                         to_string(format)));
+        Storyboard board = load_storyboard(opt->story, DRAGON_ASSET_DIR);
+        if (!opt->size.empty()) std::tie(board.film.width, board.film.height) = parse_size(opt->size);
+        if (opt->fps) board.film.fps = *opt->fps;
+        vo.width = board.film.width;
+        vo.height = board.film.height;
+        vo.fps = board.film.fps;
+        vo.crf = opt->crf;
+        if (opt->preset) vo.preset = *opt->preset;
+        if (opt->tune) vo.tune = *opt->tune;
+        if (opt->colours) vo.colours = *opt->colours;
+        if (!poster) validate(vo, format);
+        { AtomicFile probe(opt->out); }  // an unwritable path fails here, before any work
+        const Film film(board);
+        if (poster) {
+            write_film_frame(film, *opt->at, opt->out);
+            status(opt->quiet, "wrote {}: frame {} of {} ({:.3f} s into the film), {}x{}", opt->out,
+                   static_cast<int>(*opt->at * vo.fps), film.frame_count(), *opt->at, vo.width, vo.height);
+            return 0;
+        }
+        quiet_codec_logs();
+        const EncodeStats stats = [&] {
+            ProgressLine progress("frames", opt->quiet);
+            return write_film(film, opt->out, vo, [&progress](const Progress& p) { progress.update(p.done, p.total); });
+        }();
+        status(opt->quiet, "wrote {}: {} shots, {} frames, {}x{}, {:.2f} s of film ({:.1f} frames/s)", opt->out,
+               film.spans().size(), stats.frames, vo.width, vo.height, film.duration(), stats.fps());
+        return 0;
+    };
+}
+
+}  // namespace dragon::cli

@@ -1,0 +1,269 @@
+// A storyboard file read into data: [film] settings and [[shot]] tables, every key checked.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "dragon/film.hpp"
+#include "film/storyboard_values.hpp"
+
+namespace dragon {
+
+StoryboardError::StoryboardError(const std::string& file, int shot_, const std::string& shot_name,
+                                 const std::string& key_, const std::string& why)
+    : InputError(shot_ == 0 ? fmt::format("storyboard '{}', [film] {}: {}", file, key_, why)
+                 : shot_name == fmt::format("shot {}", shot_)
+                     ? fmt::format("storyboard '{}', shot {}, key '{}': {}", file, shot_, key_, why)
+                     : fmt::format("storyboard '{}', shot {} ({}), key '{}': {}", file, shot_, shot_name, key_, why)),
+      shot(shot_), key(key_) {}
+
+namespace {
+
+using film::Where;
+
+// Keys that set a scenario value over the shot's scenario file, and the value each sets.
+struct Override {
+    const char* key;
+    ScenarioValues value;
+};
+constexpr Override overrides[] = {
+    {"pitch", value::pitch},           {"speed", value::head_speed},     {"start_turn", value::start_turn},
+    {"turn_radius", value::turn_radius}, {"turn_pitch", value::turn_pitch}, {"arc_ratio", value::arc_ratio},
+    {"bench_count", value::bench_count},
+};
+
+const std::set<std::string> view_keys = {"scenario", "path",  "pitch", "speed",         "start_turn",
+                                         "turn_radius", "turn_pitch", "arc_ratio", "bench_count", "from",
+                                         "to",       "camera", "speed_colours", "guides", "label"};
+
+struct Context {
+    std::string file, base_dir, asset_dir;
+    std::string default_scenario;  // [film] scenario
+};
+
+Scenario scenario_of(const Where& w, const Context& cx, const toml::table& t, const std::string& prefix) {
+    Scenario s;
+    std::string name = cx.default_scenario;
+    if (const toml::node* n = t.get("scenario")) name = film::text(w, *n, prefix + "scenario");
+    if (!name.empty()) {
+        const bool file = name.size() > 5 && name.ends_with(".toml");
+        const std::string path = file ? (std::filesystem::path(cx.base_dir) / name).string()
+                                      : (std::filesystem::path(cx.asset_dir) / (name + ".toml")).string();
+        if (!file && !std::filesystem::exists(path))
+            w.fail(prefix + "scenario", fmt::format("'{}' is neither a preset in {} nor a .toml file", name, cx.asset_dir));
+        try {
+            s = load_scenario(path);
+        } catch (const InputError& e) {
+            w.fail(prefix + "scenario", e.what());
+        }
+    }
+    if (const toml::node* n = t.get("path")) {
+        const std::string kind = film::text(w, *n, prefix + "path");
+        if (kind == "spiral") s.path.kind = PathKind::spiral;
+        else if (kind == "turnaround") s.path.kind = PathKind::turnaround;
+        else w.fail(prefix + "path", fmt::format("'{}' is not a path: use \"spiral\" or \"turnaround\"", kind));
+    }
+    ScenarioValues set = 0;
+    for (const Override& o : overrides) {
+        const toml::node* n = t.get(o.key);
+        if (!n) continue;
+        const std::string key = prefix + o.key;
+        if (o.value == value::bench_count) {
+            const std::optional<std::int64_t> c = n->value_exact<std::int64_t>();
+            if (!c || *c < 1 || *c > 1000000) w.fail(key, "must be a whole number of benches, 1 to 1000000");
+            s.bench.bench_count = static_cast<int>(*c);
+        } else {
+            const double v = film::number(w, *n, key);
+            if (o.value == value::pitch) s.path.pitch = v;
+            if (o.value == value::head_speed) s.head_speed = v;
+            if (o.value == value::start_turn) s.path.start_turn = v;
+            if (o.value == value::turn_radius) s.path.turn_radius = v;
+            if (o.value == value::turn_pitch) s.path.turn_pitch = v;
+            if (o.value == value::arc_ratio) s.path.arc_ratio = v;
+        }
+        set |= o.value;
+    }
+    try {
+        validate(s);
+    } catch (const ScenarioError& e) {
+        // Named by the shot's own key when it set one of the values the rule involves.
+        std::string key = prefix + "scenario";
+        for (const Override& o : overrides)
+            if ((e.values & o.value) && (set & o.value)) key = prefix + o.key;
+        w.fail(key, e.what());
+    }
+    return s;
+}
+
+// One scene of a shot: the shot's own keys, with a pane's over them in a split.
+ShotView view_of(const Where& w, const Context& cx, const toml::table& shot, const toml::table* pane,
+                 const std::string& prefix) {
+    toml::table t = shot;
+    if (pane)
+        for (const auto& [k, v] : *pane) t.insert_or_assign(k, v);
+    ShotView v;
+    v.scenario = scenario_of(w, cx, t, prefix);
+    const bool turn = v.scenario.path.kind == PathKind::turnaround;
+    v.from = {TimeRef::Anchor::time, turn ? -100.0 : 0.0};
+    v.to = turn ? TimeRef{TimeRef::Anchor::time, 100.0} : TimeRef{TimeRef::Anchor::collision, 0.0};
+    // A pane's keys are named with their place: split[2].to.
+    auto key = [&](const char* k) { return (pane && pane->contains(k) ? prefix : std::string()) + k; };
+    if (const toml::node* n = t.get("from")) v.from = film::time_ref(w, *n, key("from"));
+    if (const toml::node* n = t.get("to")) v.to = film::time_ref(w, *n, key("to"));
+    if (const toml::node* n = t.get("camera")) v.camera = film::camera(w, *n, key("camera"));
+    if (const toml::node* n = t.get("speed_colours")) v.speed_colours = film::boolean(w, *n, key("speed_colours"));
+    if (const toml::node* n = t.get("guides")) v.guides = film::boolean(w, *n, key("guides"));
+    if (const toml::node* n = t.get("label")) v.label = film::text(w, *n, key("label"));
+    return v;
+}
+
+void read_common(const Where& w, const toml::table& t, Shot& s) {
+    if (const toml::node* n = t.get("rate")) s.rate = film::positive(w, *n, "rate", 1e6);
+    if (const toml::node* n = t.get("duration")) s.duration = film::positive(w, *n, "duration", 3600);
+    if (s.kind != Shot::Kind::title && s.rate.has_value() == s.duration.has_value())
+        w.fail(s.rate ? "duration" : "rate", "give a rate (simulated seconds per second of film) or a duration, "
+                                              "one of the two");
+    if (s.kind == Shot::Kind::title && !s.duration) w.fail("duration", "a title card needs a duration, s");
+    if (const toml::node* n = t.get("transition")) {
+        if (n->is_string() && *n->value<std::string>() == "cut") {
+        } else if (const toml::table* tt = n->as_table(); tt && tt->contains("crossfade")) {
+            film::check_keys(w, *tt, {"crossfade"}, "a transition", "transition.");
+            s.crossfade = film::positive(w, *tt->get("crossfade"), "transition.crossfade", 60);
+        } else {
+            w.fail("transition", "must be \"cut\" or {crossfade = SECONDS}");
+        }
+    }
+    if (const toml::node* n = t.get("legend")) s.legend = film::boolean(w, *n, "legend");
+    if (const toml::node* n = t.get("clock")) s.clock = film::boolean(w, *n, "clock");
+    if (const toml::node* n = t.get("inset")) s.inset = film::boolean(w, *n, "inset");
+    if (const toml::node* n = t.get("events")) s.events = film::boolean(w, *n, "events");
+    if (const toml::node* n = t.get("text")) s.text = film::boolean(w, *n, "text");
+    if (const toml::node* n = t.get("captions")) {
+        const toml::array* a = n->as_array();
+        if (!a) w.fail("captions", "must be a list of {text = \"...\", at = MOMENT, seconds = S}");
+        for (std::size_t i = 0; i < a->size(); ++i) {
+            const std::string key = fmt::format("captions[{}]", i + 1);
+            const toml::table* c = a->get(i)->as_table();
+            if (!c || !c->contains("text")) w.fail(key, "must be a table with text = \"...\"");
+            film::check_keys(w, *c, {"text", "at", "seconds"}, "a caption", key + ".");
+            CaptionSpec spec{film::text(w, *c->get("text"), key + ".text"), std::nullopt, 3.0};
+            if (const toml::node* at = c->get("at")) spec.at = film::time_ref(w, *at, key + ".at");
+            if (const toml::node* sec = c->get("seconds")) spec.seconds = film::positive(w, *sec, key + ".seconds", 3600);
+            s.captions.push_back(spec);
+        }
+    }
+}
+
+Shot shot_of(const Where& w, const Context& cx, const toml::table& t) {
+    Shot s;
+    s.name = w.name;
+    std::set<std::string> common = {"name", "rate", "duration", "transition", "legend", "clock", "inset",
+                                    "events", "captions", "slow", "freeze", "text"};
+    if (t.contains("title")) {
+        s.kind = Shot::Kind::title;
+        film::check_keys(w, t, {"name", "title", "subtitle", "duration", "transition"}, "a title card");
+        s.title = film::text(w, *t.get("title"), "title");
+        if (const toml::node* n = t.get("subtitle")) s.subtitle = film::text(w, *n, "subtitle");
+        read_common(w, t, s);
+        return s;
+    }
+    std::set<std::string> allowed = common;
+    allowed.insert(view_keys.begin(), view_keys.end());
+    if (const toml::node* split = t.get("split")) {
+        s.kind = Shot::Kind::split;
+        allowed.insert("split");
+        film::check_keys(w, t, allowed, "a split shot");
+        const toml::array* a = split->as_array();
+        if (!a || a->size() != 2) w.fail("split", "must list two scenes: split = [{...}, {...}]");
+        toml::table shared = t;
+        shared.erase("split");
+        for (std::size_t i = 0; i < 2; ++i) {
+            const std::string prefix = fmt::format("split[{}].", i + 1);
+            const toml::table* pane = a->get(i)->as_table();
+            if (!pane) w.fail(prefix.substr(0, prefix.size() - 1), "must be a table of a scene's keys");
+            film::check_keys(w, *pane, view_keys, "a split scene", prefix);
+            s.views.push_back(view_of(w, cx, shared, pane, prefix));
+        }
+    } else {
+        film::check_keys(w, t, allowed, "a shot");
+        s.views.push_back(view_of(w, cx, t, nullptr, ""));
+    }
+    read_common(w, t, s);
+    if (const toml::node* n = t.get("slow")) {
+        const toml::table* st = n->as_table();
+        if (!st || !st->contains("at") || !st->contains("within") || !st->contains("rate"))
+            w.fail("slow", "must be {at = MOMENT, within = SECONDS, rate = SIMULATED SECONDS PER SECOND}");
+        if (s.kind == Shot::Kind::split) w.fail("slow", "is not allowed in a split shot: its scenes keep one clock");
+        film::check_keys(w, *st, {"at", "within", "rate"}, "slow motion", "slow.");
+        s.slow = SlowMotion{film::time_ref(w, *st->get("at"), "slow.at"),
+                            film::positive(w, *st->get("within"), "slow.within", 1e6),
+                            film::positive(w, *st->get("rate"), "slow.rate", 1e6)};
+    }
+    if (const toml::node* n = t.get("freeze")) {
+        const toml::table* ft = n->as_table();
+        if (!ft || !ft->contains("seconds")) w.fail("freeze", "must be {seconds = S} or {seconds = S, zoom = METRES}");
+        film::check_keys(w, *ft, {"seconds", "zoom"}, "a freeze", "freeze.");
+        s.freeze.seconds = film::positive(w, *ft->get("seconds"), "freeze.seconds", 3600);
+        if (const toml::node* z = ft->get("zoom")) {
+            if (s.kind == Shot::Kind::split) w.fail("freeze.zoom", "is not allowed in a split shot");
+            const double m = film::number(w, *z, "freeze.zoom");
+            if (!(m >= kMinViewExtent && m <= kMaxViewExtent))
+                w.fail("freeze.zoom", fmt::format("= {} is not allowed: a window is {:g}..{:g} m across", m,
+                                                  kMinViewExtent, kMaxViewExtent));
+            s.freeze.zoom = m;
+        }
+    }
+    return s;
+}
+
+}  // namespace
+
+Storyboard parse_storyboard(const std::string& toml_text, const std::string& file, const std::string& base_dir,
+                            const std::string& asset_dir) {
+    Storyboard board;
+    board.file = file;
+    toml::table root;
+    try {
+        root = toml::parse(toml_text, file);
+    } catch (const toml::parse_error& e) {
+        throw InputError(fmt::format("storyboard '{}' is not valid TOML (line {}, column {}): {}", file,
+                                     e.source().begin.line, e.source().begin.column, e.description()));
+    }
+    Context cx{file, base_dir, asset_dir.empty() ? find_asset_dir() : asset_dir, ""};
+    const Where top{file, 0, "film"};
+    film::check_keys(top, root, {"film", "shot"}, "a storyboard (a [film] table and [[shot]] tables)");
+    if (const toml::node* f = root.get("film")) {
+        const toml::table* t = f->as_table();
+        if (!t) top.fail("film", "must be a table: [film]");
+        film::check_keys(top, *t, {"size", "fps", "theme", "scenario"}, "[film]");
+        if (const toml::node* n = t->get("size")) std::tie(board.film.width, board.film.height) = film::size(top, *n, "size");
+        if (const toml::node* n = t->get("fps")) board.film.fps = film::positive(top, *n, "fps", 240);
+        if (const toml::node* n = t->get("theme")) board.film.theme = film::text(top, *n, "theme");
+        if (const toml::node* n = t->get("scenario")) cx.default_scenario = film::text(top, *n, "scenario");
+    }
+    const toml::array* shots = root.get_as<toml::array>("shot");
+    if (!shots || shots->empty() || !shots->is_array_of_tables())
+        top.fail("shot", "a storyboard needs at least one [[shot]] table");
+    for (std::size_t i = 0; i < shots->size(); ++i) {
+        const toml::table& t = *shots->get(i)->as_table();
+        Where w{file, static_cast<int>(i + 1), fmt::format("shot {}", i + 1)};
+        if (const toml::node* n = t.get("name")) w.name = fmt::format("\"{}\"", film::text(w, *n, "name"));
+        board.shots.push_back(shot_of(w, cx, t));
+    }
+    return board;
+}
+
+Storyboard load_storyboard(const std::string& path, const std::string& asset_dir) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(fmt::format("storyboard '{}' is a folder: give a .toml file", path));
+    std::ifstream in(path);
+    if (!in) throw InputError(fmt::format("storyboard '{}' cannot be read", path));
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string base = std::filesystem::path(path).parent_path().string();
+    return parse_storyboard(text.str(), path, base.empty() ? "." : base, asset_dir);
+}
+
+}  // namespace dragon

@@ -1,0 +1,22 @@
+// Pictures written as files: the same painting onto a PNG, SVG or PDF surface.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include <cairo.h>
+
+namespace dragon::render {
+
+enum class PictureFormat { png, svg, pdf };
+// By the path's extension (.png, .svg, .pdf); InputError for any other.
+PictureFormat picture_format(const std::string& path);
+
+// A picture of w x h px painted by `paint` onto a vector surface, all-or-nothing (AtomicFile).
+// SVG sizes are in px, as asked; a PDF page is in points at 96 px per inch (CSS pixels: a
+// 1600 px picture is 1200 pt, 16.7 in, wide), its fonts embedded as subsets and its text real
+// text, selectable and searchable.
+void write_vector(const std::string& path, PictureFormat format, int w, int h,
+                  const std::function<void(cairo_t*)>& paint);
+
+}  // namespace dragon::render

@@ -1,0 +1,135 @@
+// Storyboards read into data, and every kind of bad input named by its shot and key.
+#include <gtest/gtest.h>
+
+#include "dragon/film.hpp"
+
+using namespace dragon;
+
+namespace {
+
+const std::string assets = std::string(DRAGON_SOURCE_DIR) + "/assets";
+
+Storyboard parse(const std::string& text) { return parse_storyboard(text, "s.toml", DRAGON_SOURCE_DIR, assets); }
+
+TEST(Storyboard, ReadsShotsOfEveryKind) {
+    const Storyboard b = parse(R"(
+[film]
+size = "320x180"
+fps = 12
+[[shot]]
+name = "card"
+title = "Hello"
+subtitle = "world"
+duration = 2
+[[shot]]
+from = "boundary - 30"
+to = "collision"
+rate = 20
+pitch = 0.5
+camera = { from = "fit", to = { follow = 8 }, ease = "linear" }
+slow = { at = "collision", within = 2, rate = 0.5 }
+freeze = { seconds = 1.5, zoom = 2 }
+captions = [{ text = "look", at = "collision-1", seconds = 2 }]
+transition = { crossfade = 0.5 }
+[[shot]]
+path = "turnaround"
+duration = 4
+split = [{ arc_ratio = 1.5, label = "left" }, { from = -5, to = "end - 0" , arc_ratio = 2.5 }]
+)");
+    EXPECT_EQ(b.film.width, 320);
+    EXPECT_EQ(b.film.height, 180);
+    EXPECT_EQ(b.film.fps, 12);
+    ASSERT_EQ(b.shots.size(), 3u);
+    EXPECT_EQ(b.shots[0].kind, Shot::Kind::title);
+    EXPECT_EQ(b.shots[0].name, "\"card\"");
+    const Shot& s = b.shots[1];
+    EXPECT_EQ(s.kind, Shot::Kind::scene);
+    EXPECT_EQ(s.name, "shot 2");
+    ASSERT_EQ(s.views.size(), 1u);
+    EXPECT_EQ(s.views[0].scenario.path.pitch, 0.5);
+    EXPECT_EQ(s.views[0].from.anchor, TimeRef::Anchor::boundary);
+    EXPECT_EQ(s.views[0].from.offset, -30.0);
+    EXPECT_EQ(s.views[0].to.anchor, TimeRef::Anchor::collision);
+    EXPECT_EQ(s.views[0].camera.from.kind, Window::Kind::fit);
+    ASSERT_TRUE(s.views[0].camera.to);
+    EXPECT_EQ(s.views[0].camera.to->kind, Window::Kind::head);
+    EXPECT_EQ(s.views[0].camera.to->extent, 8.0);
+    EXPECT_EQ(s.views[0].camera.ease, Ease::linear);
+    ASSERT_TRUE(s.slow);
+    EXPECT_EQ(s.slow->rate, 0.5);
+    EXPECT_EQ(s.freeze.zoom, 2.0);
+    ASSERT_EQ(s.captions.size(), 1u);
+    EXPECT_EQ(s.captions[0].at->offset, -1.0);
+    EXPECT_EQ(s.crossfade, 0.5);
+    const Shot& split = b.shots[2];
+    EXPECT_EQ(split.kind, Shot::Kind::split);
+    ASSERT_EQ(split.views.size(), 2u);
+    EXPECT_EQ(split.views[0].scenario.path.kind, PathKind::turnaround);  // the shot's key, shared
+    EXPECT_EQ(split.views[0].scenario.path.arc_ratio, 1.5);
+    EXPECT_EQ(split.views[1].scenario.path.arc_ratio, 2.5);
+    EXPECT_EQ(split.views[0].label, "left");
+    // The turnaround's own default range, and the pane's.
+    EXPECT_EQ(split.views[0].from.offset, -100.0);
+    EXPECT_EQ(split.views[1].from.offset, -5.0);
+    EXPECT_EQ(split.views[1].to.anchor, TimeRef::Anchor::end);
+}
+
+struct Bad {
+    const char* name;
+    std::string toml;
+    std::string says;  // the message must contain this
+};
+
+class BadStoryboard : public ::testing::TestWithParam<Bad> {};
+
+TEST_P(BadStoryboard, NamesTheShotAndTheKey) {
+    try {
+        parse(GetParam().toml);
+        FAIL() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find(GetParam().says), std::string::npos) << e.what();
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "one line: " << e.what();
+    }
+}
+
+const std::string ok_shot = "[[shot]]\nfrom = 0\nto = 10\nrate = 5\n";
+
+INSTANTIATE_TEST_SUITE_P(
+    Storyboard, BadStoryboard,
+    ::testing::Values(
+        Bad{"unknown_key", ok_shot + "zoom = 3\n", "shot 1, key 'zoom': is not a key of a shot"},
+        Bad{"unknown_film_key", "[film]\nwidth = 3\n" + ok_shot, "[film] width: is not a key of [film]"},
+        Bad{"unknown_section", "[films]\n" + ok_shot, "films"},
+        Bad{"no_shots", "[film]\nfps = 10\n", "at least one [[shot]]"},
+        Bad{"bad_moment", "[[shot]]\nfrom = \"soon\"\nto = 10\nrate = 5\n", "key 'from': 'soon' is not a moment"},
+        Bad{"bad_offset", "[[shot]]\nfrom = \"collision * 2\"\nto = 10\nrate = 5\n", "key 'from'"},
+        Bad{"rate_and_duration", ok_shot + "duration = 3\n", "key 'duration': give a rate"},
+        Bad{"neither", "[[shot]]\nfrom = 0\nto = 10\n", "key 'rate'"},
+        Bad{"negative_rate", "[[shot]]\nfrom = 0\nto = 10\nrate = -5\n", "key 'rate': = -5 is not allowed"},
+        Bad{"title_without_duration", "[[shot]]\ntitle = \"x\"\n", "key 'duration': a title card needs a duration"},
+        Bad{"title_with_from", "[[shot]]\ntitle = \"x\"\nduration = 2\nfrom = 3\n", "key 'from': is not a key of a title card"},
+        Bad{"bad_camera", ok_shot + "camera = \"close\"\n", "key 'camera': 'close' is not a window"},
+        Bad{"bad_camera_move", ok_shot + "camera = { from = \"fit\", to = { follow = -1 } }\n",
+            "key 'camera.to.follow': = -1 is not allowed"},
+        Bad{"bad_ease", ok_shot + "camera = { from = \"fit\", ease = \"bounce\" }\n", "key 'camera.ease'"},
+        Bad{"bad_transition", ok_shot + "transition = \"wipe\"\n", "key 'transition': must be \"cut\" or {crossfade"},
+        Bad{"split_of_one", "[[shot]]\nrate = 5\nsplit = [{ pitch = 0.5 }]\n", "key 'split': must list two scenes"},
+        Bad{"split_pane_key", "[[shot]]\nrate = 5\nsplit = [{ pitch = 0.5 }, { rate = 3 }]\n",
+            "key 'split[2].rate': is not a key of a split scene"},
+        Bad{"slow_in_split", "[[shot]]\nrate = 5\nslow = { at = 1, within = 1, rate = 1 }\nsplit = [{}, {}]\n",
+            "key 'slow': is not allowed in a split shot"},
+        Bad{"bad_pitch", ok_shot + "pitch = 0.2\n", "key 'pitch': pitch 0.2 is not allowed"},
+        Bad{"unknown_preset", ok_shot + "scenario = \"nowhere\"\n", "key 'scenario': 'nowhere' is neither a preset"},
+        Bad{"bad_path", ok_shot + "path = \"circle\"\n", "key 'path': 'circle' is not a path"},
+        Bad{"caption_without_text", ok_shot + "captions = [{ at = 3 }]\n", "key 'captions[1]': must be a table with text"},
+        Bad{"bad_size", "[film]\nsize = \"big\"\n" + ok_shot, "[film] size: 'big' is not allowed"},
+        Bad{"not_toml", "[[shot]\n", "is not valid TOML"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(Storyboard, ScenarioFilesAreFoundBesideTheStoryboard) {
+    const Storyboard b = parse(ok_shot + "scenario = \"assets/cumcm2024.toml\"\nspeed = 2\n");
+    EXPECT_EQ(b.shots[0].views[0].scenario.head_speed, 2.0);
+    EXPECT_EQ(b.shots[0].views[0].scenario.path.pitch, 0.55);
+}
+
+}  // namespace

@@ -1,0 +1,122 @@
+// Pictures for papers: a PDF that poppler reads, with the fonts embedded and the words
+// extractable; SVG sizes in the pixels asked for.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "dragon/figures.hpp"
+#include "dragon/render.hpp"
+#include "support/cli_run.hpp"
+#include "support/scratch.hpp"
+
+namespace fs = std::filesystem;
+using namespace dragon;
+
+namespace {
+
+// stdout of a shell command (poppler's tools), and whether it succeeded.
+std::pair<bool, std::string> run(const std::string& cmd) {
+    std::string out;
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) return {false, ""};
+    char buf[4096];
+    while (const std::size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
+    return {pclose(p) == 0, out};
+}
+
+std::string slurp(const fs::path& p) {
+    std::ifstream f(p);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+Scene annotated() {
+    const Simulation sim(Scenario{});
+    SceneOptions o;
+    o.theme = load_theme("light", std::string(DRAGON_SOURCE_DIR) + "/assets");
+    o.annotation = "Coiling in at t = 300 s";
+    o.colour_by_speed = true;
+    o.title_band = true;
+    Scene s = make_scene(sim, sim.frame(300.0), o);
+    s.labels.push_back({sim.frame(300.0).handles[0].pos, "head", o.theme.text, 13, 4, -4, 1, 1});
+    return s;
+}
+
+TEST(Pdf, PopplerReadsItsPageItsFontsAndItsWords) {
+    const fs::path pdf = dragon_test::scratch_dir() / "dragon.pdf";
+    render_pdf(annotated(), 1600, 1200, pdf.string());
+    const auto [info_ok, info] = run("pdfinfo " + pdf.string());
+    ASSERT_TRUE(info_ok) << info;
+    EXPECT_NE(info.find("Pages:           1"), std::string::npos) << info;
+    // 1600 x 1200 CSS pixels at 96 to the inch: 1200 x 900 points.
+    EXPECT_NE(info.find("Page size:       1200 x 900 pts"), std::string::npos) << info;
+    const auto [fonts_ok, fonts] = run("pdffonts " + pdf.string());
+    ASSERT_TRUE(fonts_ok) << fonts;
+    EXPECT_NE(fonts.find("DejaVuSans"), std::string::npos) << fonts;
+    // Every font line says "emb yes": the columns after the type are emb, sub, uni.
+    std::istringstream lines(fonts);
+    std::string line;
+    int font_lines = 0;
+    while (std::getline(lines, line))
+        if (line.find("DejaVu") != std::string::npos) {
+            ++font_lines;
+            EXPECT_NE(line.find(" yes yes "), std::string::npos) << "not embedded as a subset: " << line;
+        }
+    EXPECT_GE(font_lines, 1);
+    const auto [text_ok, text] = run("pdftotext " + pdf.string() + " -");
+    ASSERT_TRUE(text_ok);
+    for (const char* word : {"Coiling in at t = 300 s", "speed (m/s)", "head", "0.9995"})
+        EXPECT_NE(text.find(word), std::string::npos) << word << " not in: " << text;
+    // The scale bar's "2 m" (pdftotext may close up the narrow space between number and unit).
+    EXPECT_TRUE(text.find("2 m") != std::string::npos || text.find("2m") != std::string::npos) << text;
+}
+
+TEST(Pdf, SvgIsSizedInThePixelsAskedFor) {
+    const fs::path svg = dragon_test::scratch_dir() / "dragon.svg";
+    render_svg(annotated(), 1600, 1200, svg.string());
+    const std::string text = slurp(svg);
+    EXPECT_NE(text.find("width=\"1600px\""), std::string::npos) << text.substr(0, 300);
+    EXPECT_NE(text.find("height=\"1200px\""), std::string::npos) << text.substr(0, 300);
+}
+
+TEST(Pdf, FiguresForPapers) {
+    const fs::path dir = dragon_test::scratch_dir() / "figures";
+    FigureOptions fo;
+    fo.theme = load_theme("light", std::string(DRAGON_SOURCE_DIR) + "/assets");
+    fo.format = "pdf";
+    fo.only = {"fig4_first_contact", "plot_speeds"};
+    write_figures(dir.string(), Scenario{}, fo);
+    for (const char* name : {"fig4_first_contact.pdf", "plot_speeds.pdf"}) {
+        const auto [ok, info] = run("pdfinfo " + (dir / name).string());
+        EXPECT_TRUE(ok) << name << ": " << info;
+    }
+    const auto [ok, text] = run("pdftotext " + (dir / "fig4_first_contact.pdf").string() + " -");
+    ASSERT_TRUE(ok);
+    EXPECT_NE(text.find("First contact at t = 412.473838 s"), std::string::npos) << text;
+    EXPECT_NE(text.find("touching benches"), std::string::npos) << text;  // the legend
+    fo.format = "tiff";
+    EXPECT_THROW(write_figures(dir.string(), Scenario{}, fo), InputError);
+}
+
+// The command line's way to the same: a close-up of the contact for a paper, with its legend
+// and the inset of the whole dragon.
+TEST(Pdf, RenderWritesAPdfWithItsLegend) {
+    const fs::path pdf = dragon_test::scratch_dir() / "contact.pdf";
+    const auto r = dragon_test::run_dragon("render --collision --zoom 3 --legend --inset --size 800x600 -q -o " +
+                                           pdf.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto [ok, text] = run("pdftotext " + pdf.string() + " -");
+    ASSERT_TRUE(ok);
+    for (const char* word : {"first contact t = 412.473838 s: benches 1 and 9", "touching benches", "tail"})
+        EXPECT_NE(text.find(word), std::string::npos) << word << " not in: " << text;
+    const auto bad = dragon_test::run_dragon("render --time 1 -o " + (dragon_test::scratch_dir() / "x.eps").string());
+    EXPECT_EQ(bad.code, 2);
+    EXPECT_TRUE(dragon_test::contains(bad.err, "use .png, .svg or .pdf")) << bad.err;
+}
+
+}  // namespace
