@@ -42,6 +42,10 @@ struct ContactSearchOptions {
     // bounds (without looking inside), in order; the search then runs on the calling thread.
     StepObserver on_step;
     Executor* executor = nullptr;  // null: default_executor()
+    // On the plain spiral, leave out of each stretch's search the benches proved unable to touch
+    // anything over it (their turn of the spiral stays clear of the next); false watches every
+    // bench, for checking that proof.
+    bool skip_untouched_tail = true;
 };
 // Both ends must lie within the valid motion (Simulation::valid_range; throws InputError
 // otherwise): clamp `t_to` to valid_range().to to search as far as the dragon can go.

@@ -90,6 +90,13 @@ public:
     Frame frame(double t) const;
     void frame_into(double t, Frame& out) const;
 
+    // The same motion with only benches 1..k solved (k clamped to 1..bench_count): their frames
+    // are the leading part of this one's, at a fraction of the cost. Its valid range stays this
+    // chain's (shared with this simulation), though the benches ahead alone might go farther.
+    Simulation leading(int k) const;
+    // How many benches a frame holds: bench_count, or k for leading(k).
+    int solved_benches() const { return solved_ > 0 ? solved_ : scenario_.bench.bench_count; }
+
 private:
     struct Validity;  // what the searches have found so far, shared by copies
     std::optional<Jam> jam_toward(double t, bool whole) const;
@@ -99,6 +106,7 @@ private:
     double start_arc_ = 0.0;
     double entry_length_ = 0.0;  // turnaround: arc length from the centre to where the turn starts
     std::shared_ptr<Validity> validity_;
+    int solved_ = 0;  // benches a frame holds, 0: all (leading())
 };
 
 // One line for a message: what happens to which handle at the jam.

@@ -192,7 +192,13 @@ std::string describe(const Jam& j) {
 void Simulation::frame_into(double t, Frame& out) const {
     require_valid(t, "time");
     out.time = t;
-    solve_chain(*path_, scenario_.bench, head_arc(t), scenario_.head_speed, out);
+    solve_chain_front(*path_, scenario_.bench, head_arc(t), scenario_.head_speed, solved_benches() + 1, out);
+}
+
+Simulation Simulation::leading(int k) const {
+    Simulation lead = *this;
+    lead.solved_ = std::clamp(k, 1, scenario_.bench.bench_count);
+    return lead;
 }
 
 Frame Simulation::frame(double t) const {

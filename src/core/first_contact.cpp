@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/contact_step.hpp"
+#include "core/untouched_tail.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/constants.hpp"
 #include "dragon/executor.hpp"
@@ -37,6 +38,12 @@ using contact::Memory;
 using contact::PairMemory;
 using contact::Workspace;
 
+// Head travel one proof of the untouched tail covers (untouched_tail.hpp): a shorter stretch
+// proves more of the tail untouched (the chain's reach is judged at its innermost moment), for
+// two more frames and a restart of the stepping. Measured on Q3's runs: 10 m watches about
+// 8 of the contest's 223 benches on average, against 30 for one proof of the whole run.
+constexpr double kStretchTravel = 10.0;  // m
+
 double head_radius(const Frame& f) { return norm(f.handles.front().pos); }
 
 Contact make_contact(const Simulation& sim, double t, int steps, double time_tol, BroadPhase& broad) {
@@ -49,9 +56,11 @@ Contact make_contact(const Simulation& sim, double t, int steps, double time_tol
 // The search over one range. `stop()` is asked once per step: true abandons the search (a
 // contact was found in an earlier range). `steps` counts the evaluations; `ws` is this
 // search's own scratch.
+// The search over one stretch, stepping `watched` (the benches that may touch) and reporting
+// the contact with the whole chain of `sim`; `steps` grows by the evaluations it makes.
 template <class Stop>
-std::optional<Contact> search_range(const Simulation& sim, double t_from, double t_to, const StepObserver& on_step,
-                                    const Stop& stop, int& steps, Workspace& ws) {
+std::optional<Contact> search_stretch(const Simulation& sim, const Simulation& watched, double t_from, double t_to,
+                                      const StepObserver& on_step, const Stop& stop, int& steps, Workspace& ws) {
     // Everything scales with the head's speed: the chain at speed v is the chain at 1 m/s with
     // time divided by v. A step covers at most kMaxTravel of head travel, and the contact time
     // is found to tol::contact_time and to at most that many metres of head travel (so 1e-9 s at
@@ -60,10 +69,9 @@ std::optional<Contact> search_range(const Simulation& sim, double t_from, double
     const double max_step = kMaxTravel / speed;
     const double time_tol = tol::contact_time * std::min(1.0, 1.0 / speed);
     Frame f;
-    steps = 0;
     double t = t_from;
     Memory memory, seen;
-    sim.frame_into(t, f);
+    watched.frame_into(t, f);
     Approach a = approach(f, t, max_step, memory, seen, false, ws);
     memory.swap(seen);
     ++steps;
@@ -81,14 +89,14 @@ std::optional<Contact> search_range(const Simulation& sim, double t_from, double
         double t_hi = std::numeric_limits<double>::quiet_NaN();
         if (a.clear.distance < kProbeGap && a.rate < 0.0) {
             const double probe = std::min({t_to, t + 1.5 * a.clear.distance / -a.rate, t + a.others_step});
-            sim.frame_into(probe, f);
+            watched.frame_into(probe, f);
             ++steps;
             if (clearance(f, kMargin, ws.broad).distance <= 0.0) t_hi = probe;
         }
         if (std::isnan(t_hi)) {
             const double next = std::min({t + a.safe_step, t + retry_cap, t_to});
             if (next <= t) break;
-            sim.frame_into(next, f);
+            watched.frame_into(next, f);
             ++steps;
             const Approach b = approach(f, next, max_step, memory, seen, true, ws);
             if (b.bound_broken && next - t > time_tol) {
@@ -113,11 +121,41 @@ std::optional<Contact> search_range(const Simulation& sim, double t_from, double
         while (hi - lo > time_tol) {
             const double mid = 0.5 * (lo + hi);
             if (mid <= lo || mid >= hi) break;
-            sim.frame_into(mid, f);
+            watched.frame_into(mid, f);
             ++steps;
             if (clearance(f, kMargin, ws.broad).distance > 0.0) lo = mid; else hi = mid;
         }
         return make_contact(sim, hi, steps, time_tol, ws.broad);
+    }
+    return std::nullopt;
+}
+
+// The benches a search over [t0, t1] must watch: on the plain spiral only the leading ones that
+// may touch (core/untouched_tail.hpp), elsewhere all of them.
+Simulation watched_over(const Simulation& sim, double t0, double t1) {
+    const auto* spiral = dynamic_cast<const Spiral*>(&sim.path());
+    if (!spiral) return sim;
+    return sim.leading(benches_that_may_touch(*spiral, sim.scenario().bench, sim.frame(t0), sim.frame(t1)));
+}
+
+// The search over one range, in stretches of at most kStretchTravel of head travel, each with
+// its own watched benches. `stop()` is asked once per step: true abandons the search (a
+// contact was found in an earlier range). `steps` counts the evaluations; `ws` is this search's
+// own scratch.
+template <class Stop>
+std::optional<Contact> search_range(const Simulation& sim, double t_from, double t_to, const ContactSearchOptions& options,
+                                    const Stop& stop, int& steps, Workspace& ws) {
+    steps = 0;
+    if (!options.skip_untouched_tail)
+        return search_stretch(sim, sim, t_from, t_to, options.on_step, stop, steps, ws);
+    const double stretch = kStretchTravel / sim.scenario().head_speed;
+    const double count = std::max(1.0, std::ceil((t_to - t_from) / stretch));
+    for (double k = 0; k < count; ++k) {
+        const double a = k == 0 ? t_from : t_from + (t_to - t_from) * (k / count);
+        const double b = k + 1 == count ? t_to : t_from + (t_to - t_from) * ((k + 1) / count);
+        if (std::optional<Contact> c = search_stretch(sim, watched_over(sim, a, b), a, b, options.on_step, stop, steps, ws))
+            return c;
+        if (stop()) return std::nullopt;
     }
     return std::nullopt;
 }
@@ -142,7 +180,7 @@ std::optional<Contact> first_contact(const Simulation& sim, double t_from, doubl
     if (ex.workers() == 1 || !(t_to > t_from)) {
         int steps = 0;
         Workspace ws;
-        return search_range(sim, t_from, t_to, options.on_step, never, steps, ws);
+        return search_range(sim, t_from, t_to, options, never, steps, ws);
     }
     const size_t chunks = 8 * static_cast<size_t>(ex.workers());
     std::vector<double> edge(chunks + 1);
@@ -152,13 +190,15 @@ std::optional<Contact> first_contact(const Simulation& sim, double t_from, doubl
     std::vector<int> steps(chunks, 0);
     std::vector<Workspace> ws(static_cast<size_t>(ex.workers()));
     std::atomic<size_t> winner{chunks};
+    ContactSearchOptions chunk_options = options;
+    chunk_options.on_step = {};
     // Latest chunk first: the one holding the contact usually costs most (short steps, then the
     // bisection), so it starts early, and the ones after it start overlapping and end at once.
     ex.parallel_for(chunks, [&](size_t item, int worker) {
         const size_t k = chunks - 1 - item;
         if (winner.load() < k) return;
         try {
-            found[k] = search_range(sim, edge[k], edge[k + 1], {},
+            found[k] = search_range(sim, edge[k], edge[k + 1], chunk_options,
                                     [&] { return winner.load(std::memory_order_relaxed) < k; }, steps[k],
                                     ws[static_cast<size_t>(worker)]);
         } catch (...) {

@@ -67,11 +67,11 @@ TEST(Progress, TheLineSaysHowFarHowFastAndHowLong) {
 }
 
 TEST(Progress, ShownOnATerminalAndErasedAtTheEnd) {
-    // 101 runs of the dragon to the turning space: a second or two, past the half second
+    // 2001 runs of the dragon to the turning space: a few seconds, well past the half second
     // before the line first appears.
-    const PtyRun r = run_on_terminal("min-pitch --grid 0.002");
+    const PtyRun r = run_on_terminal("min-pitch --grid 0.0001");
     ASSERT_EQ(r.code, 0) << r.err;
-    EXPECT_TRUE(contains(r.err, "/101 pitches")) << r.err;
+    EXPECT_TRUE(contains(r.err, "/2001 pitches")) << r.err;
     EXPECT_TRUE(contains(r.err, " left")) << r.err;
     // The last thing on the terminal erases the line, for the answers that follow.
     const std::string erase = "\r\x1b[K";

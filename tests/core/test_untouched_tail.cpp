@@ -1,0 +1,265 @@
+// The proof that the tail of the chain cannot touch anything over a stretch of the spiral
+// (core/untouched_tail.hpp), checked from outside: every point of a board lies within the reach
+// it claims; every pair with a bench past the watched ones stays apart at every sampled moment,
+// every pair tested; and the contact search that leaves the tail out finds what the search
+// watching every bench finds.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "core/untouched_tail.hpp"
+#include "dragon/analyses.hpp"
+#include "dragon/collision.hpp"
+#include "dragon/path.hpp"
+
+using namespace dragon;
+
+namespace {
+
+// The angle psi of point x unwrapped next to the spiral's angle theta at point `near` (both
+// on the same side of the centre, well within half a turn of each other).
+double unwrapped_angle(const Spiral& sp, Vec2 near, double theta, Vec2 x) {
+    // The spiral's angle grows counter-clockwise when a point a little farther out along it
+    // lies counter-clockwise of this one.
+    const double sense = cross(near, sp.at({0, theta + 1e-3}).pos) > 0.0 ? 1.0 : -1.0;
+    return theta + sense * std::atan2(cross(near, x), dot(near, x));
+}
+
+BenchSpec wide_short() {
+    BenchSpec s;
+    s.width = 0.6;
+    s.head_length = 1.5;
+    s.body_length = 1.2;
+    s.hole_offset = 0.1;
+    return s;
+}
+
+BenchSpec long_ends() {
+    BenchSpec s;
+    s.body_length = 3.0;
+    s.head_length = 4.0;
+    s.hole_offset = 0.6;
+    return s;
+}
+
+// Smallest separation of the pairs (i, j), j >= i + 2, with j past the first `watched`
+// benches: every such pair, no broad phase.
+double tail_clearance(const Frame& f, int watched) {
+    double best = std::numeric_limits<double>::infinity();
+    const int n = static_cast<int>(f.benches.size());
+    for (int j = std::max(watched + 1, 3); j <= n; ++j)
+        for (int i = 1; i + 2 <= j; ++i)
+            best = std::min(best, separation(f.benches[static_cast<size_t>(i - 1)], f.benches[static_cast<size_t>(j - 1)]).distance);
+    return best;
+}
+
+}  // namespace
+
+TEST(UntouchedTail, EveryBoardPointLiesWithinItsBenchsReach) {
+    struct Case {
+        BenchSpec spec;
+        std::vector<double> pitches;
+    };
+    const std::vector<Case> cases = {{BenchSpec{}, {0.32, 0.55, 1.7, 4.0}},
+                                     {wide_short(), {0.65, 1.0, 3.0}},
+                                     {long_ends(), {0.35, 0.55, 2.0}}};
+    int checked = 0;
+    double fullest_in = 0.0, fullest_out = 0.0;  // observed over bound, largest
+    for (const Case& c : cases) {
+        for (const double pitch : c.pitches) {
+            const Spiral sp(pitch);
+            const double b = sp.b();
+            for (double radius = 0.3; radius < 60.0; radius *= 1.07) {
+                for (const int bench : {1, 2}) {
+                    const double theta = radius / b;
+                    const Located front = sp.at({0, theta});
+                    const std::optional<Located> rear = sp.behind(front, c.spec.link_length(bench));
+                    ASSERT_TRUE(rear.has_value());
+                    const std::optional<BenchReach> reach =
+                        bench_reach(b, c.spec, bench, theta, rear->place.u, rear->place.u - theta);
+                    if (!reach) {
+                        // Refused only near the centre, within a few boards' widths.
+                        EXPECT_LT(radius, 2.0 * c.spec.link_length(bench)) << "pitch " << pitch;
+                        continue;
+                    }
+                    ++checked;
+                    const Rect r = bench_rect(c.spec, bench, front.pos, rear->pos);
+                    double low = INFINITY, high = -INFINITY;
+                    for (int u = -40; u <= 40; ++u) {
+                        for (int v = -8; v <= 8; ++v) {
+                            const Vec2 x = r.centre + (r.half_length * u / 40.0) * r.axis +
+                                           (r.half_width * v / 8.0) * perp(r.axis);
+                            const double psi = unwrapped_angle(sp, front.pos, theta, x);
+                            const double offset = norm(x) - b * psi;
+                            low = std::min(low, offset);
+                            high = std::max(high, offset);
+                            ASSERT_GE(psi, theta - reach->angle) << "pitch " << pitch << ", radius " << radius;
+                            ASSERT_LE(psi, rear->place.u + reach->angle) << "pitch " << pitch << ", radius " << radius;
+                        }
+                    }
+                    ASSERT_GE(low, -reach->in) << "pitch " << pitch << ", radius " << radius << ", bench " << bench;
+                    ASSERT_LE(high, reach->out) << "pitch " << pitch << ", radius " << radius << ", bench " << bench;
+                    fullest_in = std::max(fullest_in, -low / reach->in);
+                    fullest_out = std::max(fullest_out, high / reach->out);
+                }
+            }
+        }
+    }
+    EXPECT_GT(checked, 500);
+    // Not loose either: somewhere (far out) a board reaches nearly all of its bound.
+    EXPECT_GT(fullest_in, 0.95);
+    EXPECT_GT(fullest_out, 0.95);
+}
+
+// Cut into stretches of 10 m of head travel as the search cuts them, every run below: at a
+// nine moments of each stretch, every pair with a bench past the watched ones is apart.
+TEST(UntouchedTail, TheTailStaysApartOverEveryStretch) {
+    struct Case {
+        const char* name;
+        Scenario s;
+        bool to_boundary;
+    };
+    std::vector<Case> cases;
+    cases.push_back({"contest, to the first contact", Scenario{}, false});
+    Scenario q3;
+    q3.path.pitch = 0.4503;
+    cases.push_back({"pitch 0.4503, to the boundary", q3, true});
+    Scenario window;
+    window.path.pitch = 0.44;  // a contact window opens and closes on the way in
+    cases.push_back({"pitch 0.44, to the boundary", window, true});
+    Scenario wide;
+    wide.bench = wide_short();
+    wide.path.pitch = 0.7;
+    wide.bench.bench_count = 300;
+    cases.push_back({"wide short benches", wide, false});
+    int stretches = 0, proved = 0;
+    Frame f;
+    for (const Case& c : cases) {
+        const Simulation sim(c.s);
+        double end = c.to_boundary ? boundary_time(sim) : sim.valid_end();
+        end = std::min(end, sim.valid_end());
+        if (!c.to_boundary) {
+            if (const auto hit = first_contact(sim, 0.0, end, {.skip_untouched_tail = false})) end = hit->time;
+        }
+        const int n = c.s.bench.bench_count;
+        for (double a = 0.0; a < end; a += 10.0) {
+            const double z = std::min(end, a + 10.0);
+            const int watched = benches_that_may_touch(dynamic_cast<const Spiral&>(sim.path()), c.s.bench, sim.frame(a),
+                                                       sim.frame(z));
+            ++stretches;
+            if (watched < n / 4) ++proved;
+            if (watched == n) continue;
+            for (int k = 0; k <= 8; ++k) {
+                const double t = k == 8 ? z : a + (z - a) * k / 8.0;
+                sim.frame_into(t, f);
+                ASSERT_GT(tail_clearance(f, watched), 0.0)
+                    << c.name << ": t = " << t << " in [" << a << ", " << z << "], " << watched << " watched";
+            }
+        }
+    }
+    // The proof is worth having: most stretches leave most of the chain out.
+    EXPECT_GT(proved, stretches * 3 / 4) << proved << " of " << stretches;
+}
+
+// The search with the tail left out (the default) and watching every bench: the same contact,
+// or none, on the contest's runs, near the minimum pitch, through a contact window, for a
+// fast head, and for random benches and pitches.
+TEST(UntouchedTail, TheSearchFindsWhatWatchingEveryBenchFinds) {
+    std::vector<std::pair<Scenario, double>> runs;  // scenario, end of the search (< 0: valid end)
+    runs.push_back({Scenario{}, -1.0});
+    for (const double p : {0.44, 0.4503, 0.4504, 0.46}) {
+        Scenario s;
+        s.path.pitch = p;
+        runs.push_back({s, 1.0});  // 1: to the boundary
+    }
+    Scenario fast;
+    fast.path.pitch = 0.6;
+    fast.head_speed = 3.0;
+    runs.push_back({fast, -1.0});
+    std::mt19937 rng(20261123);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    while (runs.size() < 14) {
+        Scenario s;
+        s.bench.bench_count = 30 + static_cast<int>(270 * unit(rng));
+        s.bench.width = 0.2 + 0.3 * unit(rng);
+        s.bench.body_length = 1.2 + 1.8 * unit(rng);
+        s.bench.head_length = s.bench.body_length + 1.5 * unit(rng);
+        s.bench.hole_offset = 0.1 + 0.25 * unit(rng);
+        s.path.pitch = s.bench.width + 0.02 + 0.5 * unit(rng);
+        try {
+            const Simulation probe(s);
+            probe.frame(0.0);
+        } catch (const InputError&) {
+            continue;  // a chain that does not fit on the spiral
+        }
+        runs.push_back({s, -1.0});
+    }
+    int contacts = 0;
+    for (const auto& [s, end_kind] : runs) {
+        const Simulation sim(s);
+        const double end = end_kind < 0.0 ? sim.valid_end() : std::min(sim.valid_end(), boundary_time(sim));
+        const auto quick = first_contact(sim, 0.0, end);
+        const auto every = first_contact(sim, 0.0, end, {.skip_untouched_tail = false});
+        const std::string name = "pitch " + std::to_string(s.path.pitch) + ", " + std::to_string(s.bench.bench_count) +
+                                 " benches of width " + std::to_string(s.bench.width);
+        ASSERT_EQ(quick.has_value(), every.has_value()) << name;
+        if (!quick) continue;
+        ++contacts;
+        EXPECT_EQ(quick->bench_a, every->bench_a) << name;
+        EXPECT_EQ(quick->bench_b, every->bench_b) << name;
+        EXPECT_NEAR(quick->time, every->time, 2.0 * std::max(quick->tolerance, every->tolerance)) << name;
+        EXPECT_EQ(quick->frame.benches.size(), static_cast<size_t>(s.bench.bench_count)) << name;  // the whole chain
+    }
+    EXPECT_GE(contacts, 6);
+}
+
+TEST(UntouchedTail, ProvesNothingItCannot) {
+    const Scenario contest;
+    const Simulation sim(contest);
+    const auto& sp = dynamic_cast<const Spiral&>(sim.path());
+    const int n = contest.bench.bench_count;
+    // Backwards in time, or frames of another chain.
+    EXPECT_EQ(benches_that_may_touch(sp, contest.bench, sim.frame(20.0), sim.frame(10.0)), n);
+    EXPECT_EQ(benches_that_may_touch(sp, contest.bench, sim.leading(50).frame(10.0), sim.frame(20.0)), n);
+    // The head near the centre, where the head bench's board wraps round it.
+    const double end = sim.valid_end();
+    EXPECT_EQ(benches_that_may_touch(sp, contest.bench, sim.frame(end - 1.0), sim.frame(end)), n);
+    // The turnaround path: the frames leave the coil-in spiral.
+    Scenario turn;
+    turn.path.kind = PathKind::turnaround;
+    const Simulation tsim(turn);
+    const Spiral coil(turn.path.turn_pitch);
+    EXPECT_EQ(benches_that_may_touch(coil, turn.bench, tsim.frame(-5.0), tsim.frame(5.0)), n);
+    // Far out the tail is proved untouched whole; a short chain keeps what it has.
+    EXPECT_EQ(benches_that_may_touch(sp, contest.bench, sim.frame(0.0), sim.frame(10.0)), 2);
+    Scenario one = contest;
+    one.bench.bench_count = 1;
+    const Simulation osim(one);
+    EXPECT_EQ(benches_that_may_touch(sp, one.bench, osim.frame(0.0), osim.frame(10.0)), 1);
+}
+
+TEST(UntouchedTail, LeadingBenchesAreTheWholeChainsFirstOnes) {
+    const Simulation sim(Scenario{});
+    const Simulation lead = sim.leading(30);
+    EXPECT_EQ(lead.solved_benches(), 30);
+    EXPECT_EQ(sim.solved_benches(), 223);
+    EXPECT_EQ(sim.leading(0).solved_benches(), 1);
+    EXPECT_EQ(sim.leading(1000).solved_benches(), 223);
+    for (const double t : {0.0, 100.0, 400.0}) {
+        const Frame all = sim.frame(t), part = lead.frame(t);
+        ASSERT_EQ(part.handles.size(), 31u);
+        ASSERT_EQ(part.benches.size(), 30u);
+        for (size_t k = 0; k < part.handles.size(); ++k) {
+            EXPECT_EQ(part.handles[k].pos.x, all.handles[k].pos.x);
+            EXPECT_EQ(part.handles[k].pos.y, all.handles[k].pos.y);
+            EXPECT_EQ(part.handles[k].speed, all.handles[k].speed);
+        }
+    }
+    // Its valid range is the whole chain's.
+    EXPECT_EQ(lead.valid_end(), sim.valid_end());
+    EXPECT_THROW(lead.frame(sim.valid_end() + 1.0), InputError);
+}
