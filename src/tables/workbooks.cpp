@@ -7,6 +7,7 @@
 #include <cstring>
 #include <ctime>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -21,27 +22,44 @@ namespace {
 
 // libxlsxwriter prints its own lines on stderr before it returns an error (three for a full
 // disk, naming the hidden temporary file). The error comes back as one exception naming the
-// target, so file descriptor 2 points at /dev/null for the call. (A process-wide effect for a
-// moment: nothing else of this program writes to stderr while a workbook closes.)
+// target, so file descriptor 2 points at /dev/null for the call. A process-wide effect: while
+// any workbook closes (several may, on different threads: dragon solve writes its tables in
+// parallel), so the first to start mutes and the last to finish restores; nothing else of this
+// program writes to stderr while a workbook closes.
 class StderrMuted {
 public:
     StderrMuted() {
+        const std::lock_guard<std::mutex> hold(lock());
+        if (depth()++ > 0) return;
         std::fflush(stderr);
-        saved_ = ::dup(STDERR_FILENO);
+        saved() = ::dup(STDERR_FILENO);
         const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
-        if (saved_ >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
+        if (saved() >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
         if (null >= 0) ::close(null);
     }
     ~StderrMuted() {
-        if (saved_ < 0) return;
-        ::dup2(saved_, STDERR_FILENO);
-        ::close(saved_);
+        const std::lock_guard<std::mutex> hold(lock());
+        if (--depth() > 0 || saved() < 0) return;
+        ::dup2(saved(), STDERR_FILENO);
+        ::close(saved());
+        saved() = -1;
     }
     StderrMuted(const StderrMuted&) = delete;
     StderrMuted& operator=(const StderrMuted&) = delete;
 
 private:
-    int saved_ = -1;
+    static std::mutex& lock() {
+        static std::mutex m;
+        return m;
+    }
+    static int& depth() {
+        static int d = 0;
+        return d;
+    }
+    static int& saved() {
+        static int fd = -1;
+        return fd;
+    }
 };
 
 // Closing writes the file; also when an exception unwinds past an unfinished workbook.
