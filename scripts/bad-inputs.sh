@@ -144,7 +144,7 @@ row sweep --vary width=0.3,0.4 --measure collide --shard 0/2 -o out.csv
 row sweep --vary width=0.3,0.4 --measure collide -o out.txt
 row sweep --vary width=0.3,0.4 --measure collide --resume
 row sweep --vary width=0.3 --measure collide --plot x.png
-row sweep --vary width=0.3,0.4 --measure collide --plot x.pdf
+row sweep --vary width=0.3,0.4 --measure collide --plot x.jpg
 row sweep merge out.csv
 row sweep merge out.csv --bogus
 row_last sweep --vary width=0.3,0.6 --bench-count 20 --measure collide --workers 1

@@ -55,10 +55,10 @@ std::string axis_label(const std::string& quantity, const std::string& unit);
 std::pair<int, int> sweep_map_size(const SweepMap& map);
 // Draws the panels one under the other inside (0, 0, w, h), background included.
 void draw_sweep_map(cairo_t* cr, const SweepMap& map, double w, double h);
-// Throws InputError unless `path` names a format a map can be written in: .png or .svg (not .pdf:
-// this build's renderer writes none).
+// Throws InputError unless `path` names a format a map can be written in: .png, .svg or .pdf.
 void require_map_format(const std::string& path);
-// All-or-nothing .png or .svg of sweep_map_size(map).
+// All-or-nothing .png, .svg or .pdf of sweep_map_size(map) (a PDF as render_pdf writes one: 96
+// px per inch, fonts embedded, text selectable).
 void write_sweep_map(const SweepMap& map, const std::string& path);
 
 }  // namespace dragon

@@ -115,7 +115,7 @@ void register_sweep(CLI::App& app, Registry& reg) {
     sub->add_flag("--resume", opt->output.resume, "Go on with the rows -o already holds; compute only the rest");
     sub->add_flag("--json", opt->output.json, "Each row as one JSON object on stdout, one a line, as it finishes");
     sub->add_option("--shard", opt->request.shard, "K/N: run only the K-th of N disjoint parts (merge them after)");
-    sub->add_option("--plot", opt->plot, "Also draw the map (.png or .svg): line plots over one varied value, heat "
+    sub->add_option("--plot", opt->plot, "Also draw the map (.png, .svg or .pdf): line plots over one varied value, heat "
                                          "maps over two");
     sub->add_option("--workers", opt->workers, "Scenarios run at once (default: one per core)");
     add_quiet_flag(sub, opt->output.quiet);
@@ -124,7 +124,7 @@ void register_sweep(CLI::App& app, Registry& reg) {
                                               "is there once: dragon sweep merge OUT.csv PART.csv...");
     opt->merge->add_option("files", opt->merge_files, "OUT.csv, then the parts");
     opt->merge->allow_extras();  // named by run_merge, as the command line names a command's leftovers
-    opt->merge->add_option("--plot", opt->merge_plot, "Also draw the map (.png or .svg)");
+    opt->merge->add_option("--plot", opt->merge_plot, "Also draw the map (.png, .svg or .pdf)");
     add_quiet_flag(opt->merge, opt->merge_quiet);
     reg["sweep"] = [opt]() { return run(*opt); };
 }

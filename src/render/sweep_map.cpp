@@ -7,7 +7,6 @@
 #include <numbers>
 #include <numeric>
 
-#include <cairo-svg.h>
 #include <fmt/format.h>
 
 #include "dragon/atomic_file.hpp"
@@ -15,6 +14,7 @@
 #include "dragon/scenario.hpp"
 #include "render/map_panels.hpp"
 #include "render/paint.hpp"
+#include "render/vector_out.hpp"
 
 namespace dragon {
 
@@ -136,44 +136,32 @@ void draw_sweep_map(cairo_t* cr, const SweepMap& map, double w, double h) {
 
 void require_map_format(const std::string& path) {
     const std::string ext = extension_of(path);
-    if (ext == ".pdf")
-        throw InputError(fmt::format("--plot {} is not allowed: this build draws maps as .png or .svg (its renderer "
-                                     "writes no PDF yet)", path));
-    if (ext != ".png" && ext != ".svg")
-        throw InputError(fmt::format("--plot {} has extension '{}': use .png or .svg", path, ext));
+    if (ext != ".png" && ext != ".svg" && ext != ".pdf")
+        throw InputError(fmt::format("--plot {} has extension '{}': use .png, .svg or .pdf", path, ext));
 }
 
 void write_sweep_map(const SweepMap& map, const std::string& path) {
     require_map_format(path);
     const auto [w, h] = sweep_map_size(map);
-    AtomicFile out(path);
-    const auto check = [&](cairo_status_t st, const char* what) {
-        if (st != CAIRO_STATUS_SUCCESS) throw std::runtime_error(fmt::format("{}: {}", what, cairo_status_to_string(st)));
-    };
-    if (extension_of(path) == ".png") {
-        cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
-        check(cairo_surface_status(surface.get()), "creating the image surface");
-        {
-            cairo::Context cr = cairo::make_context(surface.get());
-            draw_sweep_map(cr.get(), map, w, h);
-            check(cairo_status(cr.get()), "drawing the map");
-        }
-        errno = 0;
-        if (const cairo_status_t st = cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()))
-            throw out.write_error(errno != 0 ? std::strerror(errno) : cairo_status_to_string(st));
-    } else {
-        cairo::Surface surface(cairo_svg_surface_create(out.temp_path().c_str(), w, h));
-        check(cairo_surface_status(surface.get()), "creating the SVG surface");
-        {
-            cairo::Context cr = cairo::make_context(surface.get());
-            draw_sweep_map(cr.get(), map, w, h);
-            check(cairo_status(cr.get()), "drawing the map");
-        }
-        errno = 0;
-        cairo_surface_finish(surface.get());
-        if (const cairo_status_t st = cairo_surface_status(surface.get()))
-            throw out.write_error(errno != 0 ? std::strerror(errno) : cairo_status_to_string(st));
+    const auto paint = [&](cairo_t* cr) { draw_sweep_map(cr, map, w, h); };
+    const render::PictureFormat format = render::picture_format(path);
+    if (format != render::PictureFormat::png) {
+        render::write_vector(path, format, w, h, paint);
+        return;
     }
+    AtomicFile out(path);
+    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
+    if (const cairo_status_t st = cairo_surface_status(surface.get()))
+        throw std::runtime_error(fmt::format("creating the image surface: {}", cairo_status_to_string(st)));
+    {
+        cairo::Context cr = cairo::make_context(surface.get());
+        paint(cr.get());
+        if (const cairo_status_t st = cairo_status(cr.get()))
+            throw std::runtime_error(fmt::format("drawing the map: {}", cairo_status_to_string(st)));
+    }
+    errno = 0;
+    if (const cairo_status_t st = cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()))
+        throw out.write_error(errno != 0 ? std::strerror(errno) : cairo_status_to_string(st));
     out.commit();
 }
 

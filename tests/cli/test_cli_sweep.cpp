@@ -184,7 +184,7 @@ INSTANTIATE_TEST_SUITE_P(
                       std::pair{"--vary width=0.3,0.4 --measure min-pitch --lo width-0.1", "--lo width-0.1"},
                       std::pair{"--vary width=0.3,0.4 --measure collide --shard 0/2", "--shard 0/2"},
                       std::pair{"--vary width=0.3 --measure collide", "--plot"},
-                      std::pair{"--vary width=0.3,0.4 --measure collide --plot @DIR/map.pdf", "PDF"},
+                      std::pair{"--vary width=0.3,0.4 --measure collide --plot @DIR/map.jpg", "use .png, .svg or .pdf"},
                       std::pair{"--vary width=0.3,0.4 --measure collide --workers 0", "--workers 0"}),
     [](const auto& info) { return "case" + std::to_string(info.index); });
 

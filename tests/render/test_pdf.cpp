@@ -10,6 +10,7 @@
 
 #include "dragon/figures.hpp"
 #include "dragon/render.hpp"
+#include "dragon/sweep_map.hpp"
 #include "support/cli_run.hpp"
 #include "support/scratch.hpp"
 
@@ -117,6 +118,34 @@ TEST(Pdf, RenderWritesAPdfWithItsLegend) {
     const auto bad = dragon_test::run_dragon("render --time 1 -o " + (dragon_test::scratch_dir() / "x.eps").string());
     EXPECT_EQ(bad.code, 2);
     EXPECT_TRUE(dragon_test::contains(bad.err, "use .png, .svg or .pdf")) << bad.err;
+}
+
+// A sweep's map for a paper: a PDF page with its axes' and panel's words in it; a picture
+// format no surface writes is refused before anything is written.
+TEST(Pdf, SweepMapsToo) {
+    SweepMap map;
+    map.x = {"bench width", "m", {0.2, 0.25, 0.3, 0.35}, 0.30};
+    map.y = MapAxis{"body board length", "m", {1.8, 2.2, 2.6}, 2.2};
+    MapPanel panel{"minimum pitch", "m", {}, {}};
+    for (const double w : map.x.values)
+        for (const double b : map.y->values) panel.values.push_back(w + 0.1 * b), panel.cells.push_back(MapCell::value);
+    map.panels.push_back(panel);
+    const fs::path pdf = dragon_test::scratch_dir() / "map.pdf";
+    write_sweep_map(map, pdf.string());
+    const auto [info_ok, info] = run("pdfinfo " + pdf.string());
+    ASSERT_TRUE(info_ok) << info;
+    std::istringstream lines(info);
+    std::string key, pages;
+    while (lines >> key && key != "Pages:") std::getline(lines, pages);
+    lines >> pages;
+    EXPECT_EQ(pages, "1") << info;
+    const auto [ok, text] = run("pdftotext " + pdf.string() + " -");
+    ASSERT_TRUE(ok);
+    for (const char* word : {"bench width (m)", "body board length (m)", "minimum pitch"})
+        EXPECT_NE(text.find(word), std::string::npos) << word << " not in: " << text;
+    const fs::path jpg = dragon_test::scratch_dir() / "map.jpg";
+    EXPECT_THROW(write_sweep_map(map, jpg.string()), InputError);
+    EXPECT_FALSE(fs::exists(jpg));
 }
 
 }  // namespace
