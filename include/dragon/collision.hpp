@@ -20,6 +20,11 @@ struct Separation {
 };
 Separation separation(const Rect& a, const Rect& b);
 
+// Where two touching (or nearly touching) boards meet, to mark it: the corner of either one
+// nearest the other board. Boards touch corner to edge except in the measure-zero parallel
+// case, where a corner is still a point of contact.
+Vec2 contact_point(const Rect& a, const Rect& b);
+
 // The smallest separation between two benches that do not share a handle.
 // Benches are numbered 1..N; bench_a < bench_b. With fewer than 3 benches there is no such pair
 // and distance is +infinity.

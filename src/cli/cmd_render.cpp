@@ -13,7 +13,6 @@
 #include "dragon/atomic_file.hpp"
 #include "dragon/render.hpp"
 #include "dragon/tables.hpp"
-#include "render/figure_kit.hpp"
 
 namespace dragon::cli {
 
@@ -68,7 +67,7 @@ void register_render(CLI::App& app, Registry& reg) {
             const Contact c = find_contact(sim);
             frame = c.frame;
             // Marked where the boards meet: the corner of one nearest the other.
-            const Vec2 at = fig::contact_point(frame.benches[c.bench_a - 1], frame.benches[c.bench_b - 1]);
+            const Vec2 at = contact_point(frame.benches[c.bench_a - 1], frame.benches[c.bench_b - 1]);
             so.collision = CollisionMark{c.bench_a, c.bench_b, at};
             if (!so.annotation)
                 so.annotation = fmt::format("first contact t = {:.6f} s: benches {} and {}", c.time,

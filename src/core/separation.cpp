@@ -55,4 +55,14 @@ Separation separation(const Rect& a, const Rect& b) {
     return {sat.gap, sat.axis, witness};
 }
 
+Vec2 contact_point(const Rect& a, const Rect& b) {
+    Vec2 best = a.centre;
+    double best_d = INFINITY;
+    for (const Vec2 p : corners(a).p)
+        if (const double d = point_to_rect(p, b).distance; d < best_d) best_d = d, best = p;
+    for (const Vec2 p : corners(b).p)
+        if (const double d = point_to_rect(p, a).distance; d < best_d) best_d = d, best = p;
+    return best;
+}
+
 }  // namespace dragon

@@ -14,23 +14,6 @@
 
 namespace dragon::fig {
 
-double distance_to(const Rect& r, Vec2 p) {
-    const Vec2 d = p - r.centre;
-    const double along = std::abs(dot(d, r.axis)) - r.half_length;
-    const double across = std::abs(cross(r.axis, d)) - r.half_width;
-    return std::hypot(std::max(along, 0.0), std::max(across, 0.0));
-}
-
-Vec2 contact_point(const Rect& a, const Rect& b) {
-    Vec2 best = a.centre;
-    double best_d = 1e300;
-    for (Vec2 p : corners(a).p)
-        if (double d = distance_to(b, p); d < best_d) best_d = d, best = p;
-    for (Vec2 p : corners(b).p)
-        if (double d = distance_to(a, p); d < best_d) best_d = d, best = p;
-    return best;
-}
-
 Polyline circle(Vec2 centre, double radius, Rgba colour, double width_px, bool dashed) {
     Polyline pl;
     constexpr int n = 144;

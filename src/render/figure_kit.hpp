@@ -1,4 +1,4 @@
-// Shared pieces of the gallery's figures: sizes, labels, a contact witness, panel layout.
+// Shared pieces of the gallery's figures: sizes, labels, panel layout.
 #pragma once
 
 #include <functional>
@@ -29,13 +29,6 @@ struct Context {
     void tell(const Scene& scene) const;
     void tell(const Plot& plot) const;
 };
-
-// The point where two touching (or nearly touching) rectangles meet: the corner of either one
-// nearest to the other rectangle. Contact between boards is corner-to-edge except in the
-// measure-zero parallel case, where a corner is still a contact point.
-Vec2 contact_point(const Rect& a, const Rect& b);
-// Distance from a point to a rectangle (0 inside).
-double distance_to(const Rect& r, Vec2 p);
 
 // A circle as a closed polyline (world units).
 Polyline circle(Vec2 centre, double radius, Rgba colour, double width_px = 1.2, bool dashed = false);

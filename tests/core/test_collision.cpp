@@ -245,3 +245,29 @@ TEST(Clearance, BroadPhaseNeverMissesAPair) {
     }
     EXPECT_GT(touching, 0);
 }
+
+// The mark of a contact: the corner of one board that touches the other, whichever board it
+// belongs to; for boards apart, the corner nearest the other board.
+TEST(ContactPoint, TheCornerThatTouches) {
+    const Rect a{{0.0, 0.0}, {1.0, 0.0}, 1.0, 0.25};
+    // b tilted, its lowest corner resting on a's top edge at x = 0.3.
+    const Vec2 axis = normalized(Vec2{1.0, 1.0});
+    const Vec2 corner{0.3, 0.25};
+    const Vec2 centre = corner + 1.0 * axis + 0.25 * perp(axis);
+    const Rect b{centre, axis, 1.0, 0.25};
+    ASSERT_NEAR(std::min({corners(b).p[0].y, corners(b).p[1].y, corners(b).p[2].y, corners(b).p[3].y}), 0.25, 1e-12);
+    const Vec2 p = contact_point(a, b);
+    EXPECT_NEAR(p.x, 0.3, 1e-12);
+    EXPECT_NEAR(p.y, 0.25, 1e-12);
+    EXPECT_NEAR(point_to_rect(p, a).distance, 0.0, 1e-12);
+    // The same from the other side: the point does not depend on the order.
+    const Vec2 q = contact_point(b, a);
+    EXPECT_EQ(q.x, p.x);
+    EXPECT_EQ(q.y, p.y);
+    // Apart: the corner nearest the other board, lifted with b.
+    Rect lifted = b;
+    lifted.centre = b.centre + Vec2{0.0, 0.1};
+    const Vec2 r = contact_point(a, lifted);
+    EXPECT_NEAR(r.y, 0.35, 1e-12);
+    EXPECT_NEAR(point_to_rect(r, a).distance, 0.1, 1e-12);
+}
