@@ -23,4 +23,13 @@ cmake --build "$work/all" >/dev/null
 (cd "$work" && "$work/all/moment_png" "$work/moment.png" >/dev/null && "$work/all/ten_second_film" "$work/film.mp4" >/dev/null)
 test -s "$work/moment.png" && test -s "$work/film.mp4" \
   || { echo "test-consumer: an example wrote no file" >&2; exit 1; }
-echo "test-consumer: the installed package builds the examples; the core one links no Cairo, FFmpeg or libxlsxwriter"
+
+# The installed tool: no path into the source tree built in, and its assets found beside it.
+if strings "$work/prefix/bin/dragon" | grep -F "$root"; then
+  echo "test-consumer: the installed dragon holds a path into the source tree (above)" >&2
+  exit 1
+fi
+env -u DRAGON_ASSETS "$work/prefix/bin/dragon" render --time 10 --theme dark --size 64x64 -q -o "$work/dark.png"
+test -s "$work/dark.png" || { echo "test-consumer: the installed dragon drew nothing" >&2; exit 1; }
+echo "test-consumer: the installed package builds the examples; the core one links no Cairo, FFmpeg or libxlsxwriter;"
+echo "test-consumer: the installed dragon finds its assets beside it and holds no source path"

@@ -47,7 +47,7 @@ struct Theme {
 };
 
 // Where to find assets (themes, scenarios): `hint` if not empty, else $DRAGON_ASSETS, else the
-// install dir (<prefix>/share/benchdragon), else the source tree's assets/. Throws
+// install dir (<prefix>/share/benchdragon). Throws
 // std::runtime_error if none holds a themes/ folder.
 std::string find_asset_dir(const std::string& hint = "");
 // "light", "dark" (assets/themes/<name>.toml) or a path to a .toml file. Keys missing from the

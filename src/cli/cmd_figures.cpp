@@ -51,7 +51,7 @@ void register_figures(CLI::App& app, Registry& reg) {
             return 0;
         }
         FigureOptions fo;
-        fo.theme = load_theme(opt->theme, DRAGON_ASSET_DIR);
+        fo.theme = load_theme(opt->theme);
         fo.scale = opt->scale;
         fo.only = opt->only;
         fo.format = opt->format;

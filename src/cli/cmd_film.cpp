@@ -62,7 +62,7 @@ void register_film(CLI::App& app, Registry& reg) {
         if (format != VideoFormat::gif && opt->colours)
             throw InputError(fmt::format("--colours {} is not allowed for .{}: it sets a GIF's palette", *opt->colours,
                                          to_string(format)));
-        Storyboard board = load_storyboard(opt->story, DRAGON_ASSET_DIR);
+        Storyboard board = load_storyboard(opt->story);
         if (!opt->size.empty()) std::tie(board.film.width, board.film.height) = parse_size(opt->size);
         if (opt->fps) board.film.fps = *opt->fps;
         vo.width = board.film.width;

@@ -51,7 +51,7 @@ std::pair<int, int> RenderFlags::size() const {
 
 SceneOptions RenderFlags::scene_options() const {
     SceneOptions so;
-    so.theme = load_theme(theme_, DRAGON_ASSET_DIR);
+    so.theme = load_theme(theme_);
     so.colour_by_speed = speed_colours_;
     so.show_guides = so.show_turning_space = !no_guides_;
     so.show_text = !no_text_;

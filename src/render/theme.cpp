@@ -100,9 +100,6 @@ std::string find_asset_dir(const std::string& hint) {
 #ifdef DRAGON_INSTALL_ASSET_DIR
     if (consider(DRAGON_INSTALL_ASSET_DIR)) return DRAGON_INSTALL_ASSET_DIR;
 #endif
-#ifdef DRAGON_SOURCE_ASSET_DIR
-    if (consider(DRAGON_SOURCE_ASSET_DIR)) return DRAGON_SOURCE_ASSET_DIR;
-#endif
     std::string list;
     for (const auto& p : tried) list += (list.empty() ? "" : ", ") + p.string();
     throw std::runtime_error("no asset folder with themes/ found (tried: " + list +

@@ -12,7 +12,7 @@ using namespace dragon;
 void draw_frame(benchmark::State& state, bool speed_colours) {
     const Simulation sim(Scenario{});
     SceneOptions o;
-    o.theme = load_theme("light");
+    o.theme = load_theme("light", DRAGON_SOURCE_DIR "/assets");
     o.colour_by_speed = speed_colours;
     const Scene scene = make_scene(sim, sim.frame(300.0), o);
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1920, 1080));
