@@ -7,7 +7,7 @@
 #include "cli/progress.hpp"
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
-#include "dragon/figures.hpp"
+#include "gallery/figures.hpp"
 
 namespace dragon::cli {
 

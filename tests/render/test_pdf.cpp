@@ -8,7 +8,6 @@
 
 #include <gtest/gtest.h>
 
-#include "dragon/figures.hpp"
 #include "dragon/render.hpp"
 #include "dragon/sweep_map.hpp"
 #include "support/cli_run.hpp"
@@ -19,15 +18,7 @@ using namespace dragon;
 
 namespace {
 
-// stdout of a shell command (poppler's tools), and whether it succeeded.
-std::pair<bool, std::string> run(const std::string& cmd) {
-    std::string out;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return {false, ""};
-    char buf[4096];
-    while (const std::size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
-    return {pclose(p) == 0, out};
-}
+std::pair<bool, std::string> run(const std::string& cmd) { return dragon_test::shell_output(cmd); }
 
 std::string slurp(const fs::path& p) {
     std::ifstream f(p);
@@ -83,25 +74,6 @@ TEST(Pdf, SvgIsSizedInThePixelsAskedFor) {
     const std::string text = slurp(svg);
     EXPECT_NE(text.find("width=\"1600px\""), std::string::npos) << text.substr(0, 300);
     EXPECT_NE(text.find("height=\"1200px\""), std::string::npos) << text.substr(0, 300);
-}
-
-TEST(Pdf, FiguresForPapers) {
-    const fs::path dir = dragon_test::scratch_dir() / "figures";
-    FigureOptions fo;
-    fo.theme = load_theme("light", std::string(DRAGON_SOURCE_DIR) + "/assets");
-    fo.format = "pdf";
-    fo.only = {"fig4_first_contact", "plot_speeds"};
-    write_figures(dir.string(), Scenario{}, fo);
-    for (const char* name : {"fig4_first_contact.pdf", "plot_speeds.pdf"}) {
-        const auto [ok, info] = run("pdfinfo " + (dir / name).string());
-        EXPECT_TRUE(ok) << name << ": " << info;
-    }
-    const auto [ok, text] = run("pdftotext " + (dir / "fig4_first_contact.pdf").string() + " -");
-    ASSERT_TRUE(ok);
-    EXPECT_NE(text.find("First contact at t = 412.473838 s"), std::string::npos) << text;
-    EXPECT_NE(text.find("touching benches"), std::string::npos) << text;  // the legend
-    fo.format = "tiff";
-    EXPECT_THROW(write_figures(dir.string(), Scenario{}, fo), InputError);
 }
 
 // The command line's way to the same: a close-up of the contact for a paper, with its legend

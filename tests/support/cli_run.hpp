@@ -38,6 +38,16 @@ inline CliRun run_dragon(const std::string& args, const std::string& prefix = ""
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
 }
 
+// stdout of a shell command (poppler's tools, say), and whether it succeeded.
+inline std::pair<bool, std::string> shell_output(const std::string& cmd) {
+    std::string out;
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) return {false, ""};
+    char buf[4096];
+    while (const std::size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
+    return {pclose(p) == 0, out};
+}
+
 inline int count_lines(const std::string& s) {
     int n = 0;
     for (char c : s) n += c == '\n';

@@ -1,7 +1,9 @@
-// The gallery for any scenario: its figures carry that scenario's own numbers, computed here
+// The gallery (the tool's, not the library's) for any scenario: its figures carry that scenario's own numbers, computed here
 // from the library's answers; remarks about the contest's paper appear only for the contest's
 // own dragon; a run without a contact says so.
+#include <filesystem>
 #include <map>
+#include <set>
 #include <optional>
 #include <regex>
 #include <string>
@@ -11,7 +13,9 @@
 #include <gtest/gtest.h>
 
 #include "dragon/analyses.hpp"
-#include "dragon/figures.hpp"
+#include "dragon/render.hpp"
+#include "gallery/figures.hpp"
+#include "support/cli_run.hpp"
 #include "support/scratch.hpp"
 
 namespace dragon {
@@ -111,4 +115,35 @@ TEST(Figures, TheContestsDefaultsAreRecognised) {
 }
 
 }  // namespace
+}  // namespace dragon
+
+namespace dragon {
+namespace fs = std::filesystem;
+
+// The gallery for papers: PDF pages poppler reads, the words on them real text.
+TEST(GalleryPdf, FiguresForPapers) {
+    const fs::path dir = dragon_test::scratch_dir() / "figures";
+    FigureOptions fo;
+    fo.theme = load_theme("light", std::string(DRAGON_SOURCE_DIR) + "/assets");
+    fo.format = "pdf";
+    fo.only = {"fig4_first_contact", "plot_speeds"};
+    write_figures(dir.string(), Scenario{}, fo);
+    for (const char* name : {"fig4_first_contact.pdf", "plot_speeds.pdf"}) {
+        const auto [ok, info] = dragon_test::shell_output("pdfinfo " + (dir / name).string());
+        EXPECT_TRUE(ok) << name << ": " << info;
+    }
+    const auto [ok, text] = dragon_test::shell_output("pdftotext " + (dir / "fig4_first_contact.pdf").string() + " -");
+    ASSERT_TRUE(ok);
+    EXPECT_NE(text.find("First contact at t = 412.473838 s"), std::string::npos) << text;
+    EXPECT_NE(text.find("touching benches"), std::string::npos) << text;  // the legend
+    fo.format = "tiff";
+    EXPECT_THROW(write_figures(dir.string(), Scenario{}, fo), InputError);
+}
+
+TEST(GalleryList, EveryFigureHasItsOwnFileName) {
+    std::set<std::string> names;
+    for (const auto& f : dragon::figure_list()) EXPECT_TRUE(names.insert(f.name).second) << f.name;
+    EXPECT_GE(names.size(), 10u);
+}
+
 }  // namespace dragon

@@ -9,10 +9,10 @@
 #include <cairo.h>
 
 #include "dragon/chain.hpp"
-#include "dragon/figures.hpp"
+#include "gallery/figures.hpp"
 #include "dragon/plot.hpp"
 #include "dragon/render.hpp"
-#include "render/figure_answers.hpp"
+#include "gallery/figure_answers.hpp"
 
 namespace dragon::fig {
 

@@ -1,4 +1,4 @@
-#include "render/figure_answers.hpp"
+#include "gallery/figure_answers.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "render/figure_kit.hpp"
+#include "gallery/figure_kit.hpp"
 
 #include <algorithm>
 #include <cmath>

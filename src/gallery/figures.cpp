@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "render/figure_kit.hpp"
+#include "gallery/figure_kit.hpp"
 
 namespace dragon {
 
