@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "film/film_plan.hpp"
 #include "render/paint.hpp"
 

@@ -3,7 +3,7 @@
 
 #include <fmt/format.h>
 
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "dragon/film.hpp"
 #include "render/png8.hpp"
 

@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "dragon/analyses.hpp"
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "dragon/collision.hpp"
 #include "gallery/figure_kit.hpp"
 #include "render/paint.hpp"

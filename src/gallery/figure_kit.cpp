@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "dragon/atomic_file.hpp"
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "render/paint.hpp"
 #include "render/png8.hpp"
 #include "render/vector_out.hpp"

@@ -9,7 +9,7 @@
 #include "render/vector_out.hpp"
 
 #include "dragon/atomic_file.hpp"
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "dragon/render.hpp"
 #include "dragon/scenario.hpp"
 

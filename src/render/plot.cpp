@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "dragon/atomic_file.hpp"
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "dragon/scenario.hpp"
 #include "render/paint.hpp"
 

@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "dragon/atomic_file.hpp"
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "dragon/scenario.hpp"
 #include "render/map_panels.hpp"
 #include "render/paint.hpp"

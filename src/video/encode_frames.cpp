@@ -15,7 +15,7 @@
 
 #include <fmt/format.h>
 
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "dragon/scenario.hpp"
 #include "dragon/video.hpp"
 

@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "dragon/atomic_file.hpp"
-#include "dragon/av_handles.hpp"
+#include "video/av_handles.hpp"
 #include "dragon/scenario.hpp"
 #include "dragon/video.hpp"
 #include "video/av_error.hpp"

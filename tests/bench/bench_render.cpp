@@ -2,7 +2,7 @@
 // compression), and building the scene from a frame.
 #include <benchmark/benchmark.h>
 
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "dragon/render.hpp"
 
 namespace {

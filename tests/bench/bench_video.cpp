@@ -12,8 +12,8 @@ extern "C" {
 #include <libavutil/frame.h>
 }
 
-#include "dragon/av_handles.hpp"
-#include "dragon/cairo_handles.hpp"
+#include "video/av_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "dragon/video.hpp"
 #include "video/yuv_convert.hpp"
 

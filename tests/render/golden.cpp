@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 
 namespace dragon::test {
 

@@ -12,7 +12,7 @@
 
 #include "support/scratch.hpp"
 
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "dragon/render.hpp"
 #include "render/clip.hpp"
 #include "render/guide.hpp"

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "dragon/render.hpp"
 #include "support/scratch.hpp"
 

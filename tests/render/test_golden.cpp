@@ -2,7 +2,7 @@
 // File names carry the parameters. DRAGON_REBASELINE=1 rewrites the references.
 #include <gtest/gtest.h>
 
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "dragon/render.hpp"
 #include "golden.hpp"
 

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "dragon/render.hpp"
 #include "render/guide.hpp"
 #include "render/paint.hpp"

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "dragon/sweep_map.hpp"
 #include "golden.hpp"
 #include "render/contours.hpp"

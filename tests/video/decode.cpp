@@ -4,7 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "dragon/av_handles.hpp"
+#include "video/av_handles.hpp"
 #include "video/av_error.hpp"
 
 namespace dragon::test {

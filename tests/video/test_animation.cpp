@@ -10,7 +10,7 @@
 
 #include "support/scratch.hpp"
 
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "dragon/scenario.hpp"
 #include "dragon/video.hpp"
 #include "video/decode.hpp"

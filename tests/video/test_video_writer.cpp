@@ -11,7 +11,7 @@
 
 #include "dragon/scenario.hpp"
 #include "dragon/video.hpp"
-#include "dragon/cairo_handles.hpp"
+#include "render/cairo_handles.hpp"
 #include "video/decode.hpp"
 #include "video/synthetic.hpp"
 

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "dragon/av_handles.hpp"
+#include "video/av_handles.hpp"
 #include "video/yuv_convert.hpp"
 
 namespace {
