@@ -81,6 +81,23 @@ TEST(Workbooks, SameBytesFromRunToRun) {
     EXPECT_GT(bytes(a).size(), 1000u);
 }
 
+// dragon solve writes its workbooks on several threads at once: each comes out byte for byte as
+// written alone, and stderr (muted while any of them closes) is back afterwards.
+TEST(Workbooks, SeveralAtOnceOnThreads) {
+    const Simulation sim(Scenario{});
+    const std::vector<Frame> frames = simulate_table(sim, 0.0, 20.0, 1.0);
+    const fs::path alone = dragon_test::scratch_dir() / "alone.xlsx";
+    write_result_xlsx(frames, alone.string());
+    std::vector<fs::path> paths;
+    for (int k = 0; k < 4; ++k) paths.push_back(dragon_test::scratch_dir() / fmt::format("thread{}.xlsx", k));
+    std::vector<std::thread> writers;
+    for (const fs::path& p : paths) writers.emplace_back([&frames, p] { write_result_xlsx(frames, p.string()); });
+    for (std::thread& w : writers) w.join();
+    for (const fs::path& p : paths) EXPECT_EQ(bytes(p), bytes(alone)) << p;
+    // File descriptor 2 is stderr again, not /dev/null.
+    EXPECT_NE(fs::read_symlink("/proc/self/fd/2").string(), "/dev/null");
+}
+
 TEST(Workbooks, IntoAnAtomicFileTheCallerCommits) {
     const Simulation sim(Scenario{});
     const fs::path target = dragon_test::scratch_dir() / "r2.xlsx";
