@@ -11,7 +11,8 @@ std::string min_pitch_guarantee(const MinPitch& m) {
         "feasibility evaluated on a {:.4g} m pitch grid over [{}, {}], each change narrowed to {:.0e} m "
         "(where the touching pair's closest approach is zero, confirmed by full runs on either side); "
         "each evaluation checks the whole run to the boundary with time steps no contact can fit in "
-        "(clearance over a bound on its rate of change, second order near grazing passes), and that the "
+        "(clearance over a bound on its rate of change, second order near grazing passes; benches that a bound "
+        "on how far they stray from their turn of the spiral proves apart are left out), and that the "
         "dragon can follow the spiral that far (a run whose motion ends first is infeasible); a window "
         "narrower than the grid spacing could still lie unseen between two grid points of the same state "
         "(a finer --grid rules out narrower ones)",
