@@ -32,6 +32,17 @@ struct DefaultCrf {
 };
 inline constexpr DefaultCrf kDefaultCrf{23, 35};
 
+// The rates a video can have, frames per second: a frame at least every 100 s (GIF stores a
+// frame's delay in 1/100 s in 16 bits, 655 s at most, and the MP4 muxer refuses the durations of
+// rates below ~1e-5), at most 240 a second.
+inline constexpr double kMinVideoFps = 0.01;
+inline constexpr double kMaxVideoFps = 240.0;
+// The largest side of a video, px: memory and the codecs' limits, not taste.
+inline constexpr int kMaxVideoSide = 8192;
+// The most frames a film may have: far beyond any sensible film (an hour at 240 fps is 864 000);
+// stops a typo from running for days.
+inline constexpr int kMaxFilmFrames = 1'000'000;
+
 struct VideoOptions {
     int width = 1280;   // pixels; even for mp4 and webm (yuv420p halves the chroma planes)
     int height = 720;

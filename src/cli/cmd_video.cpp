@@ -191,6 +191,10 @@ void register_video(CLI::App& app, Registry& reg) {
         const bool turn = s.path.kind == PathKind::turnaround;
         const double from = opt->from.value_or(turn ? -100.0 : 0.0);
         const End end = resolve_to(opt->to, sim, from);
+        // An empty range named by both flags (the library names it "time range").
+        if (std::isfinite(from) && std::isfinite(end.time) && !(end.time > from))
+            throw InputError(fmt::format("time range --from {} --to {} is empty: --to must be after --from", from,
+                                         end.time));
         Clip clip{from, end.time, opt->speedup, opt->hold.value_or(end.mark ? 1.0 : 0.0)};
         FilmLook look;
         look.legend = !opt->no_legend;
