@@ -43,6 +43,7 @@ const std::map<std::string, FlagWords>& flag_of_field() {
         {"sweep axis", {"--vary"}},
         {"shard", {"--shard"}},
         // Pictures and films.
+        {"picture size", {"--size"}},
         {"map file", {"--plot"}},
         {"frame rate", {"--fps"}},
         {"speedup", {"--speedup"}},

@@ -8,6 +8,7 @@
 
 #include "cli/error_words.hpp"
 #include "dragon/film.hpp"
+#include "dragon/picture_size.hpp"
 #include "dragon/sweep_map.hpp"
 #include "dragon/video.hpp"
 
@@ -116,6 +117,15 @@ TEST(ErrorWords, FilmMoment) {
 TEST(ErrorWords, MapFile) {
     expect(words_of([] { require_map_format("x.jpg"); }),
            {"map file", "x.jpg", "use .png, .svg or .pdf", "--plot x.jpg has extension '.jpg': use .png, .svg or .pdf"});
+}
+
+TEST(ErrorWords, PictureSize) {
+    expect(words_of([] { parse_picture_size("big"); }),
+           {"picture size", "big", "use WIDTHxHEIGHT in pixels, e.g. 1280x720",
+            "--size big is not allowed: use WIDTHxHEIGHT in pixels, e.g. 1280x720"});
+    expect(words_of([] { parse_picture_size("10x10"); }),
+           {"picture size", "10x10", "each side must be 16..16384 px",
+            "--size 10x10 is not allowed: each side must be 16..16384 px"});
 }
 
 }  // namespace
