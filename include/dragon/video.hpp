@@ -1,5 +1,5 @@
 // Videos: a streaming encoder (H.264 in MP4, VP9 in WebM, animated GIF) and the pipeline that
-// renders a simulation into it on every core, never holding more than a few frames.
+// renders a simulation into it on the caller's executor, never holding more than a few frames.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +12,7 @@
 #include <cairo.h>
 
 #include "dragon/chain.hpp"
+#include "dragon/executor.hpp"
 #include "dragon/render.hpp"
 
 namespace dragon {
@@ -67,6 +68,10 @@ struct VideoOptions {
     // instead of 256: a fifth smaller, 0.1 dB lower); the palette keeps small distinct patches
     // (head, tail) down to ~32. Speed colours need more for a smooth ramp (the CLI asks 256).
     int colours = 64;
+    // The workers frames are drawn on (encode_frames, write_video, write_film): at most 8 of its
+    // workers draw, and the one that finds the next frame drawn encodes it. Null: the
+    // default_executor(). The codec's own threads are `threads`, above.
+    Executor* executor = nullptr;
 };
 // Throws InputError for a size or rate the format cannot take (odd size for yuv420p, fps out
 // of range, an unknown preset, a crf or palette size out of range, a crf for GIF).
@@ -122,8 +127,8 @@ struct Progress {
 using ProgressFn = std::function<void(const Progress&)>;
 
 // Paints frame `index` (0-based) onto an ARGB32 image surface of the video's size; it must
-// paint every pixel opaque and depend on the index alone. Called from several render threads
-// at once (so it must be safe to call concurrently), roughly in order; for a GIF also
+// paint every pixel opaque and depend on the index alone. Called on the executor's workers,
+// several at once (so it must be safe to call concurrently), roughly in order; for a GIF also
 // beforehand, on the caller's thread, for the palette's sample frames.
 using PaintFn = std::function<void(int index, cairo_t* cr)>;
 
@@ -133,13 +138,16 @@ struct EncodeStats {
     double fps() const { return seconds > 0 ? frames / seconds : 0.0; }
 };
 
-// Renders `frame_count` frames with `paint` on render threads (one per core) and encodes them
-// in order on this one, through a ring of 2 reusable surfaces per render thread, so drawing
-// and encoding overlap and every core works. Only frames 0 .. painted - 1 are painted (all of
-// them when `painted` is 0): the rest repeat frame painted - 1, drawn once and handed to the
-// encoder again (a held last moment costs its encoding alone). GIF palettes are sampled from
-// the first, middle and last frames first. An error on any thread stops them all and is
-// rethrown here; the target is written only if every frame made it.
+// Renders `frame_count` frames with `paint` on opt.executor's workers (the default executor's,
+// one per core, when it is null; at most 8) and encodes them in order, through a ring of 2
+// reusable surfaces per worker: whichever worker finds the next frame drawn encodes it, so
+// drawing and encoding overlap and every worker works. Only frames 0 .. painted - 1 are painted
+// (all of them when `painted` is 0): the rest repeat frame painted - 1, drawn once and handed to
+// the encoder again (a held last moment costs its encoding alone). GIF palettes are sampled
+// from the first, middle and last frames first. `progress` is called once a frame, in order,
+// one call at a time, from the worker encoding (the held frames' from this thread). An error
+// on any worker stops them all and is rethrown here; the target is written only if every frame
+// made it.
 EncodeStats encode_frames(const std::string& path, const VideoOptions& opt, int frame_count,
                           const PaintFn& paint, const ProgressFn& progress = {}, int painted = 0);
 
