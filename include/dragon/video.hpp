@@ -74,7 +74,9 @@ struct VideoOptions {
     Executor* executor = nullptr;
 };
 // Throws InputError for a size or rate the format cannot take (odd size for yuv420p, fps out
-// of range, an unknown preset, a crf or palette size out of range, a crf for GIF).
+// of range, an unknown preset, a crf or palette size out of range, a crf for GIF). Its fields:
+// "video size", "frame rate", "H.264 quality (crf)" (VP9, GIF likewise), "encoder preset",
+// "encoder tune", "key frame interval", "palette colours", "encoder threads".
 void validate(const VideoOptions& opt, VideoFormat format);
 
 // Encodes frames to a file as they come; never holds more than the codec's own look-ahead.
@@ -205,11 +207,13 @@ SpeedRange speed_range_over(const Simulation& sim, double from, double to);
 // then `hold` seconds more of `to`.
 class Animation {
 public:
-    // Throws InputError for an empty or reversed range, a time off the path (past the spiral's
-    // centre, say), a speedup or fps <= 0, a hold outside 0..3600 s or a fixed or followed view
-    // that cannot be drawn (see check_view). With the camera on fit_dragon the
-    // view is fixed for the whole clip: it fits the dragon at nine moments spread over it; with
-    // speed colours and no range given, the range is fixed likewise from those moments.
+    // Throws InputError for an empty or reversed range ("time range"), a time off the path
+    // (past the spiral's centre, say: "time range start", "time range end"), a speedup or fps
+    // <= 0 ("speedup", "frame rate"), a hold outside 0..3600 s ("hold"), more than
+    // kMaxFilmFrames frames ("film frame count") or a fixed or followed view that cannot be
+    // drawn (see check_view). With the camera on fit_dragon the view is fixed for the whole
+    // clip: it fits the dragon at nine moments spread over it; with speed colours and no range
+    // given, the range is fixed likewise from those moments.
     // `end_mark`: two benches that touch at `to`, drawn marked on the frames of that moment.
     // Keeps a reference to `sim`, which must outlive the animation.
     // `look`: the clock, legend, inset and captions (with the clock on and no annotation
