@@ -159,7 +159,8 @@ private:
 
 // Renders and encodes the film (opt's size and rate are the film's).
 EncodeStats write_film(const Film& film, const std::string& path, VideoOptions opt, const ProgressFn& progress = {});
-// One frame, the one shown `at` seconds into the film, as a PNG (all-or-nothing).
+// One frame, the one shown `at` seconds into the film, as a PNG (all-or-nothing). A moment
+// outside the film is an InputError ("film moment").
 void write_film_frame(const Film& film, double at, const std::string& path);
 
 }  // namespace dragon

@@ -55,7 +55,8 @@ std::string axis_label(const std::string& quantity, const std::string& unit);
 std::pair<int, int> sweep_map_size(const SweepMap& map);
 // Draws the panels one under the other inside (0, 0, w, h), background included.
 void draw_sweep_map(cairo_t* cr, const SweepMap& map, double w, double h);
-// Throws InputError unless `path` names a format a map can be written in: .png, .svg or .pdf.
+// Throws InputError (field "map file", the path, the formats allowed) unless `path` names a
+// format a map can be written in: .png, .svg or .pdf.
 void require_map_format(const std::string& path);
 // All-or-nothing .png, .svg or .pdf of sweep_map_size(map) (a PDF as render_pdf writes one: 96
 // px per inch, fonts embedded, text selectable).

@@ -1,5 +1,5 @@
 // Videos: a streaming encoder (H.264 in MP4, VP9 in WebM, animated GIF) and the pipeline that
-// renders a simulation into it on every core, never holding more than a few frames.
+// renders a simulation into it on the caller's executor, never holding more than a few frames.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +12,7 @@
 #include <cairo.h>
 
 #include "dragon/chain.hpp"
+#include "dragon/executor.hpp"
 #include "dragon/render.hpp"
 
 namespace dragon {
@@ -31,6 +32,17 @@ struct DefaultCrf {
     int h264, vp9;
 };
 inline constexpr DefaultCrf kDefaultCrf{23, 35};
+
+// The rates a video can have, frames per second: a frame at least every 100 s (GIF stores a
+// frame's delay in 1/100 s in 16 bits, 655 s at most, and the MP4 muxer refuses the durations of
+// rates below ~1e-5), at most 240 a second.
+inline constexpr double kMinVideoFps = 0.01;
+inline constexpr double kMaxVideoFps = 240.0;
+// The largest side of a video, px: memory and the codecs' limits, not taste.
+inline constexpr int kMaxVideoSide = 8192;
+// The most frames a film may have: far beyond any sensible film (an hour at 240 fps is 864 000);
+// stops a typo from running for days.
+inline constexpr int kMaxFilmFrames = 1'000'000;
 
 struct VideoOptions {
     int width = 1280;   // pixels; even for mp4 and webm (yuv420p halves the chroma planes)
@@ -56,9 +68,15 @@ struct VideoOptions {
     // instead of 256: a fifth smaller, 0.1 dB lower); the palette keeps small distinct patches
     // (head, tail) down to ~32. Speed colours need more for a smooth ramp (the CLI asks 256).
     int colours = 64;
+    // The workers frames are drawn on (encode_frames, write_video, write_film): at most 8 of its
+    // workers draw, and the one that finds the next frame drawn encodes it. Null: the
+    // default_executor(). The codec's own threads are `threads`, above.
+    Executor* executor = nullptr;
 };
 // Throws InputError for a size or rate the format cannot take (odd size for yuv420p, fps out
-// of range, an unknown preset, a crf or palette size out of range, a crf for GIF).
+// of range, an unknown preset, a crf or palette size out of range, a crf for GIF). Its fields:
+// "video size", "frame rate", "H.264 quality (crf)" (VP9, GIF likewise), "encoder preset",
+// "encoder tune", "key frame interval", "palette colours", "encoder threads".
 void validate(const VideoOptions& opt, VideoFormat format);
 
 // Encodes frames to a file as they come; never holds more than the codec's own look-ahead.
@@ -111,8 +129,8 @@ struct Progress {
 using ProgressFn = std::function<void(const Progress&)>;
 
 // Paints frame `index` (0-based) onto an ARGB32 image surface of the video's size; it must
-// paint every pixel opaque and depend on the index alone. Called from several render threads
-// at once (so it must be safe to call concurrently), roughly in order; for a GIF also
+// paint every pixel opaque and depend on the index alone. Called on the executor's workers,
+// several at once (so it must be safe to call concurrently), roughly in order; for a GIF also
 // beforehand, on the caller's thread, for the palette's sample frames.
 using PaintFn = std::function<void(int index, cairo_t* cr)>;
 
@@ -122,13 +140,16 @@ struct EncodeStats {
     double fps() const { return seconds > 0 ? frames / seconds : 0.0; }
 };
 
-// Renders `frame_count` frames with `paint` on render threads (one per core) and encodes them
-// in order on this one, through a ring of 2 reusable surfaces per render thread, so drawing
-// and encoding overlap and every core works. Only frames 0 .. painted - 1 are painted (all of
-// them when `painted` is 0): the rest repeat frame painted - 1, drawn once and handed to the
-// encoder again (a held last moment costs its encoding alone). GIF palettes are sampled from
-// the first, middle and last frames first. An error on any thread stops them all and is
-// rethrown here; the target is written only if every frame made it.
+// Renders `frame_count` frames with `paint` on opt.executor's workers (the default executor's,
+// one per core, when it is null; at most 8) and encodes them in order, through a ring of 2
+// reusable surfaces per worker: whichever worker finds the next frame drawn encodes it, so
+// drawing and encoding overlap and every worker works. Only frames 0 .. painted - 1 are painted
+// (all of them when `painted` is 0): the rest repeat frame painted - 1, drawn once and handed to
+// the encoder again (a held last moment costs its encoding alone). GIF palettes are sampled
+// from the first, middle and last frames first. `progress` is called once a frame, in order,
+// one call at a time, from the worker encoding (the held frames' from this thread). An error
+// on any worker stops them all and is rethrown here; the target is written only if every frame
+// made it.
 EncodeStats encode_frames(const std::string& path, const VideoOptions& opt, int frame_count,
                           const PaintFn& paint, const ProgressFn& progress = {}, int painted = 0);
 
@@ -186,11 +207,13 @@ SpeedRange speed_range_over(const Simulation& sim, double from, double to);
 // then `hold` seconds more of `to`.
 class Animation {
 public:
-    // Throws InputError for an empty or reversed range, a time off the path (past the spiral's
-    // centre, say), a speedup or fps <= 0, a hold outside 0..3600 s or a fixed or followed view
-    // that cannot be drawn (see check_view). With the camera on fit_dragon the
-    // view is fixed for the whole clip: it fits the dragon at nine moments spread over it; with
-    // speed colours and no range given, the range is fixed likewise from those moments.
+    // Throws InputError for an empty or reversed range ("time range"), a time off the path
+    // (past the spiral's centre, say: "time range start", "time range end"), a speedup or fps
+    // <= 0 ("speedup", "frame rate"), a hold outside 0..3600 s ("hold"), more than
+    // kMaxFilmFrames frames ("film frame count") or a fixed or followed view that cannot be
+    // drawn (see check_view). With the camera on fit_dragon the view is fixed for the whole
+    // clip: it fits the dragon at nine moments spread over it; with speed colours and no range
+    // given, the range is fixed likewise from those moments.
     // `end_mark`: two benches that touch at `to`, drawn marked on the frames of that moment.
     // Keeps a reference to `sim`, which must outlive the animation.
     // `look`: the clock, legend, inset and captions (with the clock on and no annotation

@@ -10,6 +10,7 @@
 #include "cli/status.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/film.hpp"
+#include "dragon/picture_size.hpp"
 #include "dragon/video.hpp"
 
 namespace dragon::cli {
@@ -23,14 +24,6 @@ struct FilmCliOptions {
     bool quiet = false;
 };
 
-std::pair<int, int> parse_size(const std::string& s) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 16 || h < 16 ||
-        w > 8192 || h > 8192)
-        throw InputError(fmt::format("--size {} is not allowed: use WIDTHxHEIGHT, each 16 to 8192 pixels", s));
-    return {w, h};
-}
 }  // namespace
 
 void register_film(CLI::App& app, Registry& reg) {
@@ -63,7 +56,11 @@ void register_film(CLI::App& app, Registry& reg) {
             throw InputError(fmt::format("--colours {} is not allowed for .{}: it sets a GIF's palette", *opt->colours,
                                          to_string(format)));
         Storyboard board = load_storyboard(opt->story);
-        if (!opt->size.empty()) std::tie(board.film.width, board.film.height) = parse_size(opt->size);
+        if (!opt->size.empty()) {
+            const PictureSize size = parse_picture_size(opt->size, kMaxVideoSide);
+            board.film.width = size.width;
+            board.film.height = size.height;
+        }
         if (opt->fps) board.film.fps = *opt->fps;
         vo.width = board.film.width;
         vo.height = board.film.height;

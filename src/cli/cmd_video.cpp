@@ -17,6 +17,7 @@
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/path.hpp"
+#include "dragon/picture_size.hpp"
 #include "dragon/render.hpp"
 #include "dragon/tables.hpp"
 #include "dragon/video.hpp"
@@ -46,27 +47,6 @@ struct VideoCliOptions {
     bool no_guides = false, no_text = false, no_legend = false, no_inset = false;
     bool quiet = false;
 };
-
-// "1280x720" -> {1280, 720}: 1 to 5 digits, x or X, 1 to 5 digits, nothing else. (--width is
-// the scenario's board width, so the picture's size is one option of its own.) Parsed by hand:
-// std::regex costs a lot to compile and trips GCC's -Wmaybe-uninitialized under the sanitizers.
-std::pair<int, int> parse_size(const std::string& s) {
-    const auto digits = [&s](size_t from, size_t to) {
-        if (to <= from || to - from > 5) return -1;
-        int v = 0;
-        for (size_t i = from; i < to; ++i) {
-            if (s[i] < '0' || s[i] > '9') return -1;
-            v = 10 * v + (s[i] - '0');
-        }
-        return v;
-    };
-    const size_t x = s.find_first_of("xX");
-    const int w = x == std::string::npos ? -1 : digits(0, x);
-    const int h = x == std::string::npos ? -1 : digits(x + 1, s.size());
-    if (w < 0 || h < 0)
-        throw InputError(fmt::format("--size {} is not allowed: use WIDTHxHEIGHT in pixels, e.g. 1280x720", s));
-    return {w, h};
-}
 
 struct End {
     double time;
@@ -158,7 +138,10 @@ void register_video(CLI::App& app, Registry& reg) {
         // and leave no file.
         const VideoFormat format = video_format_for(opt->out);
         VideoOptions vo;
-        std::tie(vo.width, vo.height) = parse_size(opt->size);
+        // (--width is the scenario's board width, so the picture's size is an option of its own.)
+        const PictureSize size = parse_picture_size(opt->size, kMaxVideoSide);
+        vo.width = size.width;
+        vo.height = size.height;
         vo.fps = opt->fps;
         vo.crf = opt->crf;
         vo.preset = opt->preset;
@@ -191,6 +174,10 @@ void register_video(CLI::App& app, Registry& reg) {
         const bool turn = s.path.kind == PathKind::turnaround;
         const double from = opt->from.value_or(turn ? -100.0 : 0.0);
         const End end = resolve_to(opt->to, sim, from);
+        // An empty range named by both flags (the library names it "time range").
+        if (std::isfinite(from) && std::isfinite(end.time) && !(end.time > from))
+            throw InputError(fmt::format("time range --from {} --to {} is empty: --to must be after --from", from,
+                                         end.time));
         Clip clip{from, end.time, opt->speedup, opt->hold.value_or(end.mark ? 1.0 : 0.0)};
         FilmLook look;
         look.legend = !opt->no_legend;

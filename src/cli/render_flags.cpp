@@ -1,10 +1,10 @@
 #include "cli/render_flags.hpp"
 
 #include <cmath>
-#include <cstdio>
 
 #include <fmt/format.h>
 
+#include "dragon/picture_size.hpp"
 #include "dragon/scenario.hpp"
 
 namespace dragon::cli {
@@ -40,13 +40,8 @@ void RenderFlags::add_to(CLI::App* sub, bool with_view) {
 }
 
 std::pair<int, int> RenderFlags::size() const {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(size_.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
-        throw InputError(fmt::format("--size {} is not allowed: use WxH in pixels, e.g. 1920x1080", size_));
-    if (w < 16 || h < 16 || w > 16384 || h > 16384)
-        throw InputError(fmt::format("--size {} is not allowed: each side must be 16..16384 px", size_));
-    return {w, h};
+    const PictureSize size = parse_picture_size(size_);
+    return {size.width, size.height};
 }
 
 SceneOptions RenderFlags::scene_options() const {

@@ -15,8 +15,8 @@ namespace {
 using film::ShotPlan;
 using film::ViewPlan;
 
-// Far beyond any film one would watch (an hour at 240 fps is 864 000 frames).
-constexpr long max_frames = 1'000'000;
+// As for any film (an hour at 240 fps is 864 000 frames).
+constexpr long max_frames = kMaxFilmFrames;
 // Where a run's first contact is searched from: the start of the motion (the contest's window
 // on the turnaround), or the shot's own start when it is earlier.
 double search_start(const Simulation& sim, const ShotView& v) {

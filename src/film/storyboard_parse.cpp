@@ -238,7 +238,13 @@ Storyboard parse_storyboard(const std::string& toml_text, const std::string& fil
         if (!t) top.fail("film", "must be a table: [film]");
         film::check_keys(top, *t, {"size", "fps", "theme", "scenario"}, "[film]");
         if (const toml::node* n = t->get("size")) std::tie(board.film.width, board.film.height) = film::size(top, *n, "size");
-        if (const toml::node* n = t->get("fps")) board.film.fps = film::positive(top, *n, "fps", 240);
+        if (const toml::node* n = t->get("fps")) {
+            // The video's range, checked here so that the error names this key.
+            board.film.fps = film::number(top, *n, "fps");
+            if (!(board.film.fps >= kMinVideoFps && board.film.fps <= kMaxVideoFps))
+                top.fail("fps", fmt::format("= {} is not allowed: use a rate from {} to {} frames per second",
+                                            board.film.fps, kMinVideoFps, kMaxVideoFps));
+        }
         if (const toml::node* n = t->get("theme")) board.film.theme = film::text(top, *n, "theme");
         if (const toml::node* n = t->get("scenario")) cx.default_scenario = film::text(top, *n, "scenario");
     }

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "dragon/picture_size.hpp"
+
 namespace dragon::film {
 
 void Where::fail(const std::string& key, const std::string& why) const { throw StoryboardError(file, shot, name, key, why); }
@@ -130,12 +132,12 @@ CameraMove camera(const Where& w, const toml::node& n, const std::string& key) {
 
 std::pair<int, int> size(const Where& w, const toml::node& n, const std::string& key) {
     const std::string s = text(w, n, key);
-    int width = 0, height = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(s.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || (x != 'x' && x != 'X') || width < 16 ||
-        height < 16 || width > 8192 || height > 8192)
-        w.fail(key, fmt::format("'{}' is not allowed: use WIDTHxHEIGHT, each 16 to 8192 pixels", s));
-    return {width, height};
+    try {
+        const PictureSize size = parse_picture_size(s, kMaxVideoSide);  // a film is a video
+        return {size.width, size.height};
+    } catch (const InputError& e) {
+        w.fail(key, fmt::format("'{}' is not allowed: {}", s, e.allowed()));
+    }
 }
 
 }  // namespace dragon::film

@@ -15,67 +15,23 @@
 #include <png.h>
 
 #include "dragon/atomic_file.hpp"
+#include "render/median_cut.hpp"
 
 namespace dragon::render {
 
 namespace {
 
-struct Swatch {
-    std::uint32_t rgb;
-    std::uint32_t count;
-};
-
 int channel(std::uint32_t rgb, int c) { return static_cast<int>((rgb >> (16 - 8 * c)) & 0xff); }
 
-// Median cut on the image's colour histogram. Each box's colour is its most frequent member,
-// not its mean, so the flat colours of a drawing (background, boards) stay exact.
-std::vector<std::uint32_t> median_cut(std::vector<Swatch> colours, std::size_t max_colours) {
-    struct Box {
-        std::size_t begin, end;
-        int widest;       // channel with the largest range
-        int range;
-        std::uint64_t weight;
-    };
-    auto describe = [&](std::size_t b, std::size_t e) {
-        int lo[3] = {255, 255, 255}, hi[3] = {0, 0, 0};
-        std::uint64_t w = 0;
-        for (std::size_t i = b; i < e; ++i) {
-            for (int c = 0; c < 3; ++c) {
-                lo[c] = std::min(lo[c], channel(colours[i].rgb, c));
-                hi[c] = std::max(hi[c], channel(colours[i].rgb, c));
-            }
-            w += colours[i].count;
-        }
-        Box box{b, e, 0, -1, w};
-        for (int c = 0; c < 3; ++c)
-            if (hi[c] - lo[c] > box.range) box.range = hi[c] - lo[c], box.widest = c;
-        return box;
-    };
-    std::vector<Box> boxes{describe(0, colours.size())};
-    while (boxes.size() < max_colours) {
-        // Split the box whose spread matters most: range weighted by how many pixels it holds.
-        auto it = std::max_element(boxes.begin(), boxes.end(), [](const Box& a, const Box& b) {
-            return double(a.range) * std::sqrt(double(a.weight)) < double(b.range) * std::sqrt(double(b.weight));
-        });
-        if (it->range <= 0 || it->end - it->begin < 2) break;
-        const Box box = *it;
-        const int c = box.widest;
-        std::sort(colours.begin() + box.begin, colours.begin() + box.end,
-                  [c](const Swatch& a, const Swatch& b) { return channel(a.rgb, c) < channel(b.rgb, c); });
-        std::uint64_t acc = 0;
-        std::size_t cut = box.begin + 1;
-        for (std::size_t i = box.begin; i < box.end - 1; ++i) {
-            acc += colours[i].count;
-            cut = i + 1;
-            if (2 * acc >= box.weight) break;
-        }
-        *it = describe(box.begin, cut);
-        boxes.push_back(describe(cut, box.end));
-    }
+// Median cut on the image's exact colours, each weighing its pixel count (render/median_cut.hpp).
+// Each box's colour is its most frequent member, not its mean, so the flat colours of a drawing
+// (background, boards) stay exact.
+std::vector<std::uint32_t> palette_of(std::vector<ColourCount> colours, std::size_t max_colours) {
     std::vector<std::uint32_t> palette;
-    for (const Box& b : boxes) {
-        auto best = std::max_element(colours.begin() + b.begin, colours.begin() + b.end,
-                                     [](const Swatch& x, const Swatch& y) { return x.count < y.count; });
+    for (const ColourBox& b : median_cut(colours, max_colours, CutWeight::pixels, BoxOrder::lower_in_place)) {
+        auto best = std::max_element(colours.begin() + static_cast<std::ptrdiff_t>(b.begin),
+                                     colours.begin() + static_cast<std::ptrdiff_t>(b.end),
+                                     [](const ColourCount& x, const ColourCount& y) { return x.pixels < y.pixels; });
         palette.push_back(best->rgb);
     }
     return palette;
@@ -103,11 +59,11 @@ void write_png8(cairo_surface_t* surface, const std::string& path, int max_colou
     std::unordered_map<std::uint32_t, std::uint32_t> histogram;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) ++histogram[pixel(x, y)];
-    std::vector<Swatch> colours;
+    std::vector<ColourCount> colours;
     colours.reserve(histogram.size());
     for (auto [rgb, n] : histogram) colours.push_back({rgb, n});
     const std::vector<std::uint32_t> palette =
-        median_cut(std::move(colours), static_cast<std::size_t>(std::clamp(max_colours, 2, 256)));
+        palette_of(std::move(colours), static_cast<std::size_t>(std::clamp(max_colours, 2, 256)));
 
     std::unordered_map<std::uint32_t, std::uint8_t> index;
     for (auto& [rgb, n] : histogram) {

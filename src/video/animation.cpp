@@ -12,8 +12,6 @@ namespace dragon {
 
 namespace {
 
-// Far beyond any sensible film (an hour at 240 fps is 864 000); stops a typo from running for days.
-constexpr int max_frames = 1'000'000;
 // A held last moment is drawn once, but every second of it is still encoded (about 700 frames/s
 // of a still 720p picture here): an hour is the longest still a film can sensibly end on.
 constexpr double max_hold = 3600.0;  // s
@@ -70,28 +68,26 @@ std::string scenario_line(const Scenario& s) {
 Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions scene,
                      std::optional<CollisionMark> end_mark, FilmLook look)
     : sim_(&sim), clip_(clip), fps_(fps), scene_(std::move(scene)), end_mark_(end_mark), look_(std::move(look)) {
+    // Named in the library's terms (the CLI words them with its flags: cli/error_words.cpp).
+    const std::string range = fmt::format("{}..{} s", clip.from, clip.to);
     if (!std::isfinite(clip.from) || !std::isfinite(clip.to))
-        throw InputError(fmt::format("time range {} .. {} is not allowed: both ends must be finite seconds",
-                                     clip.from, clip.to));
-    if (!(clip.to > clip.from))
-        throw InputError(fmt::format("time range --from {} --to {} is empty: --to must be after --from",
-                                     clip.from, clip.to));
+        throw InputError("time range", range, "both ends must be finite seconds");
+    if (!(clip.to > clip.from)) throw InputError("time range", range, "its end must come after its start");
     // A film never shows a moment past the end of the valid motion (nor past the path's end).
     sim.require_valid(clip.from, "time range start");
     sim.require_valid(clip.to, "time range end");
-    if (!(fps > 0.0) || !std::isfinite(fps))
-        throw InputError(fmt::format("--fps {} is not allowed: use a rate above 0", fps));
+    if (!(fps > 0.0) || !std::isfinite(fps)) throw InputError("frame rate", error_value(fps), "use a rate above 0");
     if (!(clip.speedup > 0.0) || !std::isfinite(clip.speedup))
-        throw InputError(fmt::format("--speedup {} is not allowed: use simulated seconds per video second above 0",
-                                     clip.speedup));
+        throw InputError("speedup", error_value(clip.speedup), "use simulated seconds per video second above 0");
     if (!(clip.hold >= 0.0 && clip.hold <= max_hold))
-        throw InputError(fmt::format("--hold {} is not allowed: use 0..{:g} seconds", clip.hold, max_hold));
+        throw InputError("hold", error_value(clip.hold), fmt::format("use 0..{:g} seconds", max_hold));
 
     const double steps = (clip.to - clip.from) * fps / clip.speedup;
     const double hold_frames = std::round(clip.hold * fps);
-    if (steps + hold_frames + 1 > max_frames)
-        throw InputError(fmt::format("the film would have {:.3g} frames, more than {}: raise --speedup or "
-                                     "lower --fps", steps + hold_frames + 1, max_frames));
+    if (steps + hold_frames + 1 > kMaxFilmFrames)
+        throw InputError("film frame count", fmt::format("{:.3g}", steps + hold_frames + 1),
+                         fmt::format("a film has at most {} frames; use fewer frames per second or more simulated "
+                                     "seconds per second of film", kMaxFilmFrames));
     // Tolerate float noise: 10 s at 30 fps is 300 steps, not 301.
     moving_frames_ = static_cast<int>(std::ceil(steps - 1e-9)) + 1;
     frame_count_ = moving_frames_ + static_cast<int>(hold_frames);

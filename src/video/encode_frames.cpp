@@ -1,21 +1,29 @@
-// Drawing and encoding at once: render threads paint frames into a small ring of reusable
-// surfaces while this thread hands the finished ones, in order, to the encoder (whose codec
-// runs its own threads). Drawing a frame costs more than encoding it, so there is one render
-// thread per core: whichever core the encoder leaves idle draws. Memory stays at a few frames
+// Drawing and encoding at once, on the caller's executor: its workers paint frames into a small
+// ring of reusable surfaces, and whichever worker finds the next frame in order drawn hands it
+// (and the ones after it that are ready) to the encoder, whose codec runs threads of its own.
+// Drawing a frame costs more than encoding it, so every worker draws, and the encoding moves to
+// whoever is free, rather than one thread waiting on the others. Memory stays at a few frames
 // whatever the clip's length.
+//
+// The executor runs one item per worker, each drawing frames until none are left. No item ever
+// waits on one that has not started: a worker waits only for a slot of the ring to be encoded,
+// and the frame holding it up was claimed (so is being drawn) by a running item, whose worker
+// then encodes it. So any executor works, an InlineExecutor or a nested parallel_for too (one
+// worker draws and encodes in turn), and a failure on one worker stops the others.
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "render/cairo_handles.hpp"
+#include "dragon/executor.hpp"
 #include "dragon/scenario.hpp"
 #include "dragon/video.hpp"
 
@@ -39,55 +47,92 @@ void paint_into(cairo_surface_t* surface, int index, const PaintFn& paint) {
     cairo_surface_flush(surface);
 }
 
-// Frame i is drawn into slot i % size. A render thread may start frame i once frame i - size
-// has been encoded (its slot is free); the encoder takes frame i once it is drawn. Workers take
-// the next index in order, so at most `size` frames exist at any time.
+// Frame i is drawn into slot i % size. A worker may start frame i once frame i - size has been
+// encoded (its slot is free). Workers claim frames in order, so at most `size` exist at once,
+// and the frame the encoder waits for is always claimed by a running worker. The encoder is a
+// role, not a thread: the worker that draws the next frame to encode takes it, if nobody holds
+// it, and encodes frames in order as long as they are drawn.
 class FrameRing {
 public:
-    FrameRing(int size, int width, int height) : drawn_(static_cast<size_t>(size), -1) {
+    using EncodeFn = std::function<void(int index, cairo_surface_t* surface)>;
+
+    FrameRing(int size, int width, int height, int frame_count)
+        : drawn_(static_cast<size_t>(size), -1), frame_count_(frame_count) {
         for (int i = 0; i < size; ++i) surfaces_.push_back(make_surface(width, height));
     }
     int size() const { return static_cast<int>(surfaces_.size()); }
     cairo_surface_t* surface(int index) { return surfaces_[static_cast<size_t>(index % size())].get(); }
+    int encoded() const { return encoded_; }  // once the workers are done
 
+    // One worker's share: draws frames until none are left, encoding in turn. On an error it
+    // stops every worker and rethrows.
+    void work(const PaintFn& paint, const EncodeFn& encode) {
+        try {
+            while (const std::optional<int> index = claim()) {
+                paint_into(surface(*index), *index, paint);
+                if (mark_drawn(*index)) encode_in_order(encode);
+            }
+        } catch (...) {
+            stop();
+            throw;
+        }
+    }
+
+private:
     // The next frame to draw, once its slot is free; nullopt when all are taken or on stop.
-    std::optional<int> claim(int frame_count) {
+    std::optional<int> claim() {
         std::unique_lock lock(mutex_);
-        if (stopped_ || next_ >= frame_count) return std::nullopt;
+        if (stopped_ || next_ >= frame_count_) return std::nullopt;
         const int index = next_++;
-        changed_.wait(lock, [&] { return stopped_ || encoded_ > index - size(); });
+        encoded_changed_.wait(lock, [&] { return stopped_ || encoded_ > index - size(); });
         if (stopped_) return std::nullopt;
         return index;
     }
-    void mark_drawn(int index) {
+    bool ready_locked() const {
+        return encoded_ < frame_count_ && drawn_[static_cast<size_t>(encoded_ % size())] == encoded_;
+    }
+    // Records the frame drawn; true if this worker is to encode now (the role was free and the
+    // next frame to encode is drawn).
+    bool mark_drawn(int index) {
         std::lock_guard lock(mutex_);
         drawn_[static_cast<size_t>(index % size())] = index;
-        changed_.notify_all();
+        if (encoding_ || stopped_ || !ready_locked()) return false;
+        encoding_ = true;
+        return true;
     }
-    // Waits until frame `index` is drawn; false on stop.
-    bool wait_drawn(int index) {
-        std::unique_lock lock(mutex_);
-        changed_.wait(lock, [&] { return stopped_ || drawn_[static_cast<size_t>(index % size())] == index; });
-        return drawn_[static_cast<size_t>(index % size())] == index;
-    }
-    void mark_encoded(int index) {
-        std::lock_guard lock(mutex_);
-        encoded_ = index + 1;
-        changed_.notify_all();
+    // Holding the role: encodes frames while the next one is drawn, then gives the role up
+    // (checked under the lock that mark_drawn takes, so no drawn frame is left behind).
+    void encode_in_order(const EncodeFn& encode) {
+        for (;;) {
+            int index = 0;
+            {
+                std::lock_guard lock(mutex_);
+                if (stopped_ || !ready_locked()) {
+                    encoding_ = false;
+                    return;
+                }
+                index = encoded_;
+            }
+            encode(index, surface(index));
+            std::lock_guard lock(mutex_);
+            encoded_ = index + 1;
+            encoded_changed_.notify_all();
+        }
     }
     void stop() {
         std::lock_guard lock(mutex_);
         stopped_ = true;
-        changed_.notify_all();
+        encoded_changed_.notify_all();
     }
 
-private:
     std::vector<cairo::Surface> surfaces_;
     std::vector<int> drawn_;  // per slot: the frame it holds, -1 if none yet
+    const int frame_count_;
     std::mutex mutex_;
-    std::condition_variable changed_;
-    int next_ = 0;     // next frame to hand to a render thread
+    std::condition_variable encoded_changed_;
+    int next_ = 0;     // next frame to hand to a worker
     int encoded_ = 0;  // frames 0 .. encoded_ - 1 are encoded (their slots are free)
+    bool encoding_ = false;  // a worker holds the encoder role
     bool stopped_ = false;
 };
 
@@ -105,9 +150,11 @@ EncodeStats encode_frames(const std::string& path, const VideoOptions& opt, int 
     };
     VideoWriter writer(path, opt);
 
-    const int workers = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 8);
-    // Two slots per render thread: one being drawn, one done and waiting for the encoder.
-    FrameRing ring(2 * workers, opt.width, opt.height);
+    Executor& executor = executor_or_default(opt.executor);
+    // At most 8 workers draw: more would hold more frames than they gain (the encoder is one).
+    const int workers = std::clamp(executor.workers(), 1, 8);
+    // Two slots per worker: one being drawn, one done and waiting for the encoder.
+    FrameRing ring(2 * workers, opt.width, opt.height, painted);
 
     if (writer.format() == VideoFormat::gif) {
         // One palette for the whole clip, from its start, middle and end (the end is where a
@@ -119,48 +166,20 @@ EncodeStats encode_frames(const std::string& path, const VideoOptions& opt, int 
         }
     }
 
-    std::mutex error_mutex;
-    std::exception_ptr render_error;
-    std::vector<std::thread> renderers;
-    for (int w = 0; w < workers; ++w) {
-        renderers.emplace_back([&] {
-            try {
-                while (const std::optional<int> index = ring.claim(painted)) {
-                    paint_into(ring.surface(*index), *index, paint);
-                    ring.mark_drawn(*index);
-                }
-            } catch (...) {
-                std::lock_guard lock(error_mutex);
-                if (!render_error) render_error = std::current_exception();
-                ring.stop();
-            }
-        });
-    }
-    const auto join_all = [&] {
-        for (auto& t : renderers) t.join();
+    // Called by one worker at a time, in frame order (the encoder role passes under the ring's lock).
+    const FrameRing::EncodeFn encode = [&](int index, cairo_surface_t* surface) {
+        writer.write(surface);
+        if (progress) progress({index + 1, frame_count, elapsed()});
     };
-
-    try {
-        for (int index = 0; index < painted; ++index) {
-            if (!ring.wait_drawn(index)) break;  // a render thread failed
-            writer.write(ring.surface(index));
-            ring.mark_encoded(index);
-            if (progress) progress({index + 1, frame_count, elapsed()});
-        }
-        // The held frames: no render thread claims past `painted`, so nothing draws over the
-        // last painted frame's slot; the writer sends its converted picture again.
-        if (writer.frames_written() == painted)
-            for (int index = painted; index < frame_count; ++index) {
-                writer.repeat();
-                if (progress) progress({index + 1, frame_count, elapsed()});
-            }
-    } catch (...) {
-        ring.stop();
-        join_all();
-        throw;
+    executor.parallel_for(static_cast<std::size_t>(workers),
+                          [&](std::size_t, int) { ring.work(paint, encode); });
+    if (ring.encoded() != painted) throw std::logic_error("encode_frames: frames went missing");
+    // The held frames: nothing draws over the last painted frame's slot now; the writer sends
+    // its converted picture again.
+    for (int index = painted; index < frame_count; ++index) {
+        writer.repeat();
+        if (progress) progress({index + 1, frame_count, elapsed()});
     }
-    join_all();
-    if (render_error) std::rethrow_exception(render_error);
     if (writer.frames_written() != frame_count) throw std::logic_error("encode_frames: frames went missing");
     writer.finish();
     return {frame_count, elapsed()};

@@ -5,46 +5,21 @@
 #include <cstring>
 #include <limits>
 
+#include "render/median_cut.hpp"
+
 namespace dragon::video {
 
 namespace {
 
 int channel(int bin, int c) { return (bin >> (palette_bits * (2 - c))) & 0x1f; }  // c: 0 r, 1 g, 2 b
 
-// A bin's say in where boxes split: the square root of its pixel count, so a small but
-// distinct patch (the head, the tail, a marked collision) wins its own entry against the
-// thousands of background and body pixels, while those still get the most entries.
-template <class Bin>
-double weight(const Bin& b) { return std::sqrt(static_cast<double>(b.count)); }
-
-struct Box {
-    std::vector<int> bins;  // non-empty bins inside
-    double weight = 0;
-    std::uint64_t count = 0;
-    int widest = 0;         // channel with the largest range
-    int range = 0;          // that range, in bins
-};
-
-template <class Hist>
-Box make_box(std::vector<int> bins, const Hist& hist) {
-    Box box;
-    int lo[3] = {31, 31, 31}, hi[3] = {0, 0, 0};
-    for (int b : bins) {
-        box.count += hist[static_cast<size_t>(b)].count;
-        box.weight += weight(hist[static_cast<size_t>(b)]);
-        for (int c = 0; c < 3; ++c) {
-            lo[c] = std::min(lo[c], channel(b, c));
-            hi[c] = std::max(hi[c], channel(b, c));
-        }
-    }
-    for (int c = 0; c < 3; ++c) {
-        if (hi[c] - lo[c] > box.range) {
-            box.range = hi[c] - lo[c];
-            box.widest = c;
-        }
-    }
-    box.bins = std::move(bins);
-    return box;
+// A bin as median cut sees it: its 5-bit channels as the colour, its pixels, and back.
+render::ColourCount colour_of(int bin, std::uint64_t pixels) {
+    return {static_cast<std::uint32_t>(channel(bin, 0) << 16 | channel(bin, 1) << 8 | channel(bin, 2)), pixels};
+}
+int bin_of_colour(std::uint32_t rgb) {
+    return static_cast<int>(((rgb >> 16) & 0x1fu) << (2 * palette_bits) | ((rgb >> 8) & 0x1fu) << palette_bits |
+                            (rgb & 0x1fu));
 }
 
 }  // namespace
@@ -65,58 +40,34 @@ void PaletteBuilder::add(const std::uint8_t* argb32, int width, int height, int 
 }
 
 Palette PaletteBuilder::build(int max_colours) const {
-    std::vector<int> seen;
+    // Median cut on the seen bins (render/median_cut.hpp). A bin's say in where boxes split is
+    // the square root of its pixel count, so a small but distinct patch (the head, the tail, a
+    // marked collision) wins its own entry against the thousands of background and body pixels,
+    // while those still get the most entries.
+    std::vector<render::ColourCount> colours;
     for (int b = 0; b < palette_bins; ++b)
-        if (hist_[static_cast<size_t>(b)].count > 0) seen.push_back(b);
-    std::vector<Box> boxes;
-    if (!seen.empty()) boxes.push_back(make_box(std::move(seen), hist_));
-
-    while (static_cast<int>(boxes.size()) < max_colours) {
-        auto best = boxes.end();
-        double best_score = 0.0;
-        for (auto it = boxes.begin(); it != boxes.end(); ++it) {
-            if (it->bins.size() < 2) continue;
-            const double score = it->weight * it->range;
-            if (score > best_score) {
-                best_score = score;
-                best = it;
-            }
-        }
-        if (best == boxes.end()) break;
-        Box box = std::move(*best);
-        boxes.erase(best);
-        const int c = box.widest;
-        std::sort(box.bins.begin(), box.bins.end(),
-                  [c](int a, int b) { return channel(a, c) < channel(b, c); });
-        // Split at the weighted median, but never leave a side empty.
-        double acc = 0;
-        size_t cut = 1;
-        for (size_t i = 0; i + 1 < box.bins.size(); ++i) {
-            acc += weight(hist_[static_cast<size_t>(box.bins[i])]);
-            cut = i + 1;
-            if (2 * acc >= box.weight) break;
-        }
-        std::vector<int> left(box.bins.begin(), box.bins.begin() + static_cast<std::ptrdiff_t>(cut));
-        std::vector<int> right(box.bins.begin() + static_cast<std::ptrdiff_t>(cut), box.bins.end());
-        boxes.push_back(make_box(std::move(left), hist_));
-        boxes.push_back(make_box(std::move(right), hist_));
-    }
+        if (hist_[static_cast<size_t>(b)].count > 0) colours.push_back(colour_of(b, hist_[static_cast<size_t>(b)].count));
+    const std::vector<render::ColourBox> boxes =
+        render::median_cut(colours, static_cast<std::size_t>(std::max(max_colours, 0)), render::CutWeight::sqrt_pixels,
+                           render::BoxOrder::both_last);
 
     Palette pal;
     pal.colours.fill(0xff000000u);
     pal.size = std::max<int>(1, static_cast<int>(boxes.size()));
     std::vector<bool> assigned(palette_bins, false);
     for (size_t i = 0; i < boxes.size(); ++i) {
-        std::uint64_t r = 0, g = 0, b = 0;
-        for (int bin : boxes[i].bins) {
+        std::uint64_t r = 0, g = 0, b = 0, n = 0;
+        for (std::size_t k = boxes[i].begin; k < boxes[i].end; ++k) {
+            const int bin = bin_of_colour(colours[k].rgb);
             const Bin& h = hist_[static_cast<size_t>(bin)];
+            n += h.count;
             r += h.r;
             g += h.g;
             b += h.b;
             pal.lut[static_cast<size_t>(bin)] = static_cast<std::uint8_t>(i);
             assigned[static_cast<size_t>(bin)] = true;
         }
-        const std::uint64_t n = boxes[i].count, half = n / 2;
+        const std::uint64_t half = n / 2;
         pal.colours[i] = 0xff000000u | static_cast<std::uint32_t>(((r + half) / n) << 16) |
                          static_cast<std::uint32_t>(((g + half) / n) << 8) |
                          static_cast<std::uint32_t>((b + half) / n);

@@ -39,11 +39,12 @@ public:
     // Counts the colours of an opaque ARGB32 picture (rows `stride` bytes apart).
     void add(const std::uint8_t* argb32, int width, int height, int stride);
     bool empty() const { return pixels_ == 0; }
-    // Median cut: the box with the largest weight times its widest channel range is split at
-    // its weighted median along that channel, until there are `max_colours` boxes or none can
-    // be split. A bin weighs the square root of its pixel count, so small distinct patches
-    // (head, tail, a collision's mark) keep their own colours. Each entry is its box's mean colour (a flat colour alone in its bin comes back
-    // exactly). Seen bins map to their box; unseen ones to the entry nearest their centre.
+    // Median cut (render/median_cut.hpp): the box with the largest weight times its widest
+    // channel range is split at its weighted median along that channel, until there are
+    // `max_colours` boxes or none can be split. A bin weighs the square root of its pixel count,
+    // so small distinct patches (head, tail, a collision's mark) keep their own colours. Each
+    // entry is its box's mean colour (a flat colour alone in its bin comes back exactly). Seen
+    // bins map to their box; unseen ones to the entry nearest their centre.
     Palette build(int max_colours = 256) const;
 
 private:

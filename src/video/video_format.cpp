@@ -16,11 +16,6 @@ constexpr std::array<std::string_view, 10> x264_presets = {
     "ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow", "placebo"};
 constexpr std::array<std::string_view, 9> x264_tunes = {"none",     "film",     "animation",  "grain",      "stillimage",
                                                         "psnr",     "ssim",     "fastdecode", "zerolatency"};
-constexpr double max_fps = 240.0;
-// A frame at most every 100 s: GIF stores a frame's delay in 1/100 s in 16 bits (655 s at
-// most), and the MP4 muxer refuses the durations of rates below ~1e-5.
-constexpr double min_fps = 0.01;
-constexpr int max_side = 8192;  // px; memory and the codecs' limits, not taste
 // H.264's largest level (6.2) allows 139,264 macroblocks of 16x16 pixels in a frame (8192 x 4352,
 // say); decoders refuse more, so a bigger MP4 would be a file no player opens.
 constexpr long h264_max_macroblocks = 139264;
@@ -45,49 +40,51 @@ const char* to_string(VideoFormat f) {
     return "?";
 }
 
+// Each value named in the library's terms, with what is allowed (the CLI words them with its
+// flags: cli/error_words.cpp). The quality's field names the codec, whose scale it is.
 void validate(const VideoOptions& opt, VideoFormat format) {
-    if (opt.width < 2 || opt.height < 2 || opt.width > max_side || opt.height > max_side)
-        throw InputError(fmt::format("video size {}x{} is not allowed: each side must be 2 to {} pixels",
-                                     opt.width, opt.height, max_side));
+    const std::string size = fmt::format("{}x{}", opt.width, opt.height);
+    if (opt.width < 2 || opt.height < 2 || opt.width > kMaxVideoSide || opt.height > kMaxVideoSide)
+        throw InputError("video size", size, fmt::format("each side must be 2 to {} pixels", kMaxVideoSide));
     if (format != VideoFormat::gif && (opt.width % 2 != 0 || opt.height % 2 != 0))
-        throw InputError(fmt::format("video size {}x{} is not allowed for {}: yuv420p needs an even width "
-                                     "and height", opt.width, opt.height, to_string(format)));
-    if (!(opt.fps >= min_fps) || !(opt.fps <= max_fps))
-        throw InputError(fmt::format("--fps {} is not allowed: use a rate from {} to {} frames per second", opt.fps,
-                                     min_fps, max_fps));
+        throw InputError(fmt::format("video size {} is not allowed for {}: yuv420p needs an even width and height",
+                                     size, to_string(format)));
+    if (!(opt.fps >= kMinVideoFps) || !(opt.fps <= kMaxVideoFps))
+        throw InputError("frame rate", error_value(opt.fps),
+                         fmt::format("use a rate from {} to {} frames per second", kMinVideoFps, kMaxVideoFps));
     if (format == VideoFormat::mp4) {
         const long mbs = static_cast<long>((opt.width + 15) / 16) * ((opt.height + 15) / 16);
         if (mbs > h264_max_macroblocks)
-            throw InputError(fmt::format("video size {}x{} is not allowed for mp4: H.264 allows at most {} macroblocks "
+            throw InputError(fmt::format("video size {} is not allowed for mp4: H.264 allows at most {} macroblocks "
                                          "of 16x16 pixels a frame (8192x4352, say), this size has {}",
-                                         opt.width, opt.height, h264_max_macroblocks, mbs));
+                                         size, h264_max_macroblocks, mbs));
     }
     if (opt.crf && format == VideoFormat::gif)
-        throw InputError(fmt::format("--crf {} is not allowed for .gif: a GIF has no quality setting (--colours "
-                                     "sets its palette)", *opt.crf));
+        throw InputError("GIF quality (crf)", std::to_string(*opt.crf),
+                         "a GIF has no quality setting (VideoOptions::colours sets its palette)");
     if (opt.crf && format == VideoFormat::mp4 && (*opt.crf < 0 || *opt.crf > 51))
-        throw InputError(fmt::format("--crf {} is not allowed for H.264: use 0 (lossless) to 51", *opt.crf));
+        throw InputError("H.264 quality (crf)", std::to_string(*opt.crf), "use 0 (lossless) to 51");
     if (opt.crf && format == VideoFormat::webm && (*opt.crf < 0 || *opt.crf > 63))
-        throw InputError(fmt::format("--crf {} is not allowed for VP9: use 0 to 63", *opt.crf));
+        throw InputError("VP9 quality (crf)", std::to_string(*opt.crf), "use 0 to 63");
     if (format == VideoFormat::mp4) {
         bool known = false;
         for (auto p : x264_presets) known = known || p == opt.preset;
         if (!known)
-            throw InputError(fmt::format("--preset {} is not allowed: use one of ultrafast, superfast, veryfast, "
-                                         "faster, fast, medium, slow, slower, veryslow", opt.preset));
+            throw InputError("encoder preset", opt.preset, "use one of ultrafast, superfast, veryfast, faster, fast, "
+                                                           "medium, slow, slower, veryslow");
         known = false;
         for (auto t : x264_tunes) known = known || t == opt.tune;
         if (!known)
-            throw InputError(fmt::format("--tune {} is not allowed: use one of animation, film, stillimage, grain, "
-                                         "psnr, ssim, fastdecode, zerolatency or none", opt.tune));
+            throw InputError("encoder tune", opt.tune, "use one of animation, film, stillimage, grain, psnr, ssim, "
+                                                       "fastdecode, zerolatency or none");
     }
     if (!(opt.keyframe_seconds > 0.0 && opt.keyframe_seconds <= max_keyframe_seconds))
-        throw InputError(fmt::format("key frame interval {} s is not allowed: use more than 0, up to {:g} s",
-                                     opt.keyframe_seconds, max_keyframe_seconds));
+        throw InputError("key frame interval", fmt::format("{} s", opt.keyframe_seconds),
+                         fmt::format("use more than 0, up to {:g} s", max_keyframe_seconds));
     if (opt.colours < 2 || opt.colours > 256)
-        throw InputError(fmt::format("--colours {} is not allowed: a GIF palette has 2 to 256 colours", opt.colours));
+        throw InputError("palette colours", std::to_string(opt.colours), "a GIF palette has 2 to 256 colours");
     if (opt.threads < 0 || opt.threads > 64)
-        throw InputError(fmt::format("--threads {} is not allowed: use 0 (automatic) to 64", opt.threads));
+        throw InputError("encoder threads", std::to_string(opt.threads), "use 0 (automatic) to 64");
 }
 
 }  // namespace dragon

@@ -123,6 +123,14 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{"bad_path", ok_shot + "path = \"circle\"\n", "key 'path': 'circle' is not a path"},
         Bad{"caption_without_text", ok_shot + "captions = [{ at = 3 }]\n", "key 'captions[1]': must be a table with text"},
         Bad{"bad_size", "[film]\nsize = \"big\"\n" + ok_shot, "[film] size: 'big' is not allowed"},
+        // The sizes and rates a video can take, named by the storyboard's key, not a flag.
+        Bad{"small_size", "[film]\nsize = \"8x8\"\n" + ok_shot,
+            "[film] size: '8x8' is not allowed: each side must be 16..8192 px"},
+        Bad{"huge_size", "[film]\nsize = \"9000x9000\"\n" + ok_shot,
+            "[film] size: '9000x9000' is not allowed: each side must be 16..8192 px"},
+        Bad{"slow_fps", "[film]\nfps = 0.005\n" + ok_shot,
+            "[film] fps: = 0.005 is not allowed: use a rate from 0.01 to 240 frames per second"},
+        Bad{"fast_fps", "[film]\nfps = 300\n" + ok_shot, "[film] fps: = 300 is not allowed"},
         Bad{"not_toml", "[[shot]\n", "is not valid TOML"}),
     [](const auto& info) { return std::string(info.param.name); });
 
