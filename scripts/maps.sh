@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The README's two maps: each sweep's rows (renders/*_map.csv) and its picture (renders/*_map.png),
-# from the sweep files in assets/sweeps/, timed. About 3 minutes on 2 cores.
+# from the sweep files in assets/sweeps/, timed. About 40 s on 2 cores.
 #
 #   bash scripts/maps.sh [path/to/dragon]
 set -euo pipefail

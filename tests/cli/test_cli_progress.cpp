@@ -67,11 +67,11 @@ TEST(Progress, TheLineSaysHowFarHowFastAndHowLong) {
 }
 
 TEST(Progress, ShownOnATerminalAndErasedAtTheEnd) {
-    // 2001 runs of the dragon to the turning space: a few seconds, well past the half second
-    // before the line first appears.
-    const PtyRun r = run_on_terminal("min-pitch --grid 0.0001");
+    // 4001 runs of the dragon to the turning space: about 2.7 s on two cores, well past the
+    // half second before the line first appears.
+    const PtyRun r = run_on_terminal("min-pitch --grid 0.00005");
     ASSERT_EQ(r.code, 0) << r.err;
-    EXPECT_TRUE(contains(r.err, "/2001 pitches")) << r.err;
+    EXPECT_TRUE(contains(r.err, "/4001 pitches")) << r.err;
     EXPECT_TRUE(contains(r.err, " left")) << r.err;
     // The last thing on the terminal erases the line, for the answers that follow.
     const std::string erase = "\r\x1b[K";
