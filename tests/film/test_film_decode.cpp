@@ -150,12 +150,7 @@ freeze = { seconds = 1, zoom = 3 }
     cairo::Surface s(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 480, 270));
     {
         cairo::Context cr = cairo::make_context(s.get());
-        cairo_font_options_t* fo = cairo_font_options_create();
-        cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
-        cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
-        cairo_font_options_set_antialias(fo, CAIRO_ANTIALIAS_GRAY);
-        cairo_set_font_options(cr.get(), fo);
-        cairo_font_options_destroy(fo);
+        test::outline_fonts(cr.get());
         film.paint(film.frame_count() - 1, cr.get());
     }
     const Scene last = film.scene_at(0, film.spans()[0].count - 1);

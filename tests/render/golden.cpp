@@ -101,4 +101,13 @@ GoldenResult compare_golden(cairo_surface_t* actual, const std::string& name, co
     return r;
 }
 
+void outline_fonts(cairo_t* cr) {
+    cairo_font_options_t* fo = cairo_font_options_create();
+    cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
+    cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
+    cairo_font_options_set_antialias(fo, CAIRO_ANTIALIAS_GRAY);
+    cairo_set_font_options(cr, fo);
+    cairo_font_options_destroy(fo);
+}
+
 }  // namespace dragon::test

@@ -27,4 +27,8 @@ struct GoldenResult {
 GoldenResult compare_golden(cairo_surface_t* actual, const std::string& name,
                             const GoldenTolerance& tol = {});
 
+// Text drawn from the glyphs' outlines alone, for pictures compared with a golden image: hinting
+// snaps glyphs to the pixel grid by rules a font library may change between versions.
+void outline_fonts(cairo_t* cr);
+
 }  // namespace dragon::test

@@ -18,13 +18,7 @@ Theme light() { return load_theme("light", std::string(DRAGON_SOURCE_DIR) + "/as
 cairo::Surface drawn(const Scene& scene, int w, int h) {
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h));
     cairo::Context cr = cairo::make_context(surface.get());
-    // Hinting snaps glyphs to the pixel grid by rules a font library may change: outlines only.
-    cairo_font_options_t* fo = cairo_font_options_create();
-    cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
-    cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
-    cairo_font_options_set_antialias(fo, CAIRO_ANTIALIAS_GRAY);
-    cairo_set_font_options(cr.get(), fo);
-    cairo_font_options_destroy(fo);
+    test::outline_fonts(cr.get());
     draw(cr.get(), scene, w, h);
     EXPECT_EQ(cairo_status(cr.get()), CAIRO_STATUS_SUCCESS);
     cairo_surface_flush(surface.get());

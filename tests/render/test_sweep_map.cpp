@@ -79,6 +79,7 @@ TEST(GoldenMap, SmallHeatMapWithEveryKindOfCell) {
     constexpr int w = 480, h = 320;
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h));
     cairo::Context cr = cairo::make_context(surface.get());
+    test::outline_fonts(cr.get());
     draw_sweep_map(cr.get(), map, w, h);
     ASSERT_EQ(cairo_status(cr.get()), CAIRO_STATUS_SUCCESS);
     const auto r = test::compare_golden(surface.get(), "sweep_heat_map_7x5_jam_refused_novalue_mark_480x320.png");
