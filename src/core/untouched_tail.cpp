@@ -113,7 +113,9 @@ int benches_that_may_touch(const Spiral& spiral, const BenchSpec& spec, const Fr
         if (turns > kMaxTurnsApart) return n;
         for (int m = 0; m <= static_cast<int>(turns); ++m) {
             const double shift = kTwoPi * m;
-            const double widest = ri.angle + angle_from[j0];
+            // The widest the two spans' margins can be, with the comparisons' slack (which is
+            // largest for the outermost handle).
+            const double widest = ri.angle + angle_from[j0] + kSlack * (1.0 + tl.back());
             // Candidates: theta_{j-1} - theta_i <= shift + widest at the first frame, and
             // theta_j - theta_{i-1} >= shift - widest at the last frame.
             const double top_theta = tf[ki] + shift + widest;
