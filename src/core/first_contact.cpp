@@ -53,9 +53,6 @@ Contact make_contact(const Simulation& sim, double t, int steps, double time_tol
     return {t, c.bench_a, c.bench_b, head_radius(f), c.point, std::move(f), steps, std::max(time_tol, rounding)};
 }
 
-// The search over one range. `stop()` is asked once per step: true abandons the search (a
-// contact was found in an earlier range). `steps` counts the evaluations; `ws` is this
-// search's own scratch.
 // The search over one stretch, stepping `watched` (the benches that may touch) and reporting
 // the contact with the whole chain of `sim`; `steps` grows by the evaluations it makes.
 template <class Stop>
