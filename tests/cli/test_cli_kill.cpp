@@ -17,9 +17,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/cli_run.hpp"
 #include "support/scratch.hpp"
-
-extern char** environ;
 
 namespace {
 
@@ -33,23 +32,7 @@ std::vector<fs::path> temp_files(const fs::path& dir) {
     return out;
 }
 
-// Starts dragon with stdout and stderr sent to /dev/null; returns its pid.
-pid_t spawn_dragon(const std::vector<std::string>& args) {
-    std::vector<char*> argv;
-    std::string exe = DRAGON_EXE;
-    argv.push_back(exe.data());
-    std::vector<std::string> copy = args;
-    for (std::string& a : copy) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-    pid_t pid = -1;
-    const int err = posix_spawn(&pid, DRAGON_EXE, &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    return err == 0 ? pid : -1;
-}
+using dragon_test::spawn_dragon;
 
 // Waits until a temporary file with some bytes in it appears (the encoder is mid-file), or
 // the time limit passes or the process ends first. Sanitized builds are several times slower,

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -18,8 +19,6 @@
 #include <gtest/gtest.h>
 
 #include "sweep_support.hpp"
-
-extern char** environ;
 
 namespace fs = std::filesystem;
 using dragon_test::contains;
@@ -35,20 +34,10 @@ const std::string kSlow = "--vary bench-count=60:130:15 --vary arc-ratio=1.5,2 -
 const std::string kQuick = "--vary bench-count=20:40:6 --vary arc-ratio=1.5,2 --measure max-speed -q";
 
 pid_t spawn_sweep(const std::string& out) {
-    std::vector<std::string> args = {DRAGON_EXE, "sweep", "-o", out};
+    std::vector<std::string> args = {"sweep", "-o", out};
     std::string word;
     for (std::istringstream in(kSlow); in >> word;) args.push_back(word);
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-    pid_t pid = -1;
-    const int err = posix_spawn(&pid, DRAGON_EXE, &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    return err == 0 ? pid : -1;
+    return dragon_test::spawn_dragon(args);
 }
 
 // The rows a file holds, its first two lines aside.

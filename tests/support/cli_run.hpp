@@ -2,6 +2,8 @@
 // test's own scratch folder (tests run in parallel).
 #pragma once
 
+#include <fcntl.h>
+#include <spawn.h>
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -9,10 +11,31 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "support/scratch.hpp"
 
+extern char** environ;
+
 namespace dragon_test {
+
+// Starts dragon with these arguments, stdout and stderr sent to /dev/null, without waiting for
+// it (a test that kills it midway); its pid, or -1.
+inline pid_t spawn_dragon(const std::vector<std::string>& args) {
+    std::vector<std::string> words = {DRAGON_EXE};
+    words.insert(words.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& w : words) argv.push_back(w.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+    pid_t pid = -1;
+    const int err = posix_spawn(&pid, DRAGON_EXE, &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    return err == 0 ? pid : -1;
+}
 
 struct CliRun {
     int code;
