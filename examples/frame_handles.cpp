@@ -9,7 +9,7 @@ int main() {
     const dragon::Frame frame = sim.frame(300.0);
     for (std::size_t i : {0u, 1u, 51u, 101u, 151u, 201u, 223u}) {
         const dragon::Handle& h = frame.handles[i];
-        std::printf("handle %3zu  x %10.6f  y %10.6f  speed %.6f m/s\n", i, h.pos.x, h.pos.y, h.speed);
+        std::printf("handle %3zu  x %10.6f  y %10.6f  speed %.6f m/s\n", i, h.pos.x(), h.pos.y(), h.speed);
     }
     // Where the motion ends: past this moment a handle would have to jump.
     const dragon::ValidRange valid = sim.valid_range();

@@ -27,7 +27,7 @@ struct Contact {
     double time;
     int bench_a, bench_b;
     double head_radius;
-    Vec2 point;     // contact witness point
+    Vec2 point = Vec2::Zero();  // contact witness point
     Frame frame;    // the whole chain at that moment
     int steps = 0;  // clearance evaluations the search used
     // How closely `time` is known, s: tol::contact_time, finer for a head faster than 1 m/s

@@ -14,8 +14,8 @@
 namespace dragon {
 
 struct Handle {
-    Vec2 pos;
-    Vec2 tangent;   // unit tangent of the path at the handle, direction of travel
+    Vec2 pos = Vec2::Zero();
+    Vec2 tangent = Vec2::Zero();  // unit tangent of the path at the handle, direction of travel
     double speed;   // m/s, exact (rigid-link projection)
     Place place;
 };

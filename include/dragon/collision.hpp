@@ -14,9 +14,10 @@ namespace dragon {
 // The distance is exact Euclidean distance when apart (corner-to-corner gaps included).
 struct Separation {
     double distance;
-    Vec2 axis;
-    Vec2 point;  // a witness: the point of b nearest to a (apart), or the corner of either board
-                 // deepest inside the other (overlapping)
+    Vec2 axis = Vec2::Zero();
+    // A witness: the point of b nearest to a (apart), or the corner of either board deepest inside
+    // the other (overlapping).
+    Vec2 point = Vec2::Zero();
 };
 Separation separation(const Rect& a, const Rect& b);
 
@@ -32,8 +33,8 @@ struct Clearance {
     double distance;
     int bench_a = 0;
     int bench_b = 0;
-    Vec2 axis;
-    Vec2 point;
+    Vec2 axis = Vec2::Zero();
+    Vec2 point = Vec2::Zero();
 };
 
 // Broad phase: every pair of non-adjacent benches whose rectangles might be within `margin` of

@@ -40,7 +40,7 @@ struct TimeRef {
 struct Window {
     enum class Kind { fit, head, fixed, contact };
     Kind kind = Kind::fit;
-    Vec2 centre;          // fixed
+    Vec2 centre = Vec2::Zero();  // fixed
     double extent = 0.0;  // head, fixed, contact: metres across
 };
 

@@ -3,38 +3,31 @@
 
 #include <cmath>
 
+#include <Eigen/Core>
+
 namespace dragon {
 
-struct Vec2 {
-    double x = 0.0;
-    double y = 0.0;
-};
+// Points and directions are Eigen's fixed-size 2-vectors, so a caller's Eigen code takes them as
+// they are. Eigen leaves a default-constructed vector uninitialised: every Vec2 here is given its
+// value where it is declared (the sanitized test build fills defaults with NaN to keep it so).
+using Vec2 = Eigen::Vector2d;
 
-constexpr Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
-constexpr Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
-constexpr Vec2 operator-(Vec2 a) { return {-a.x, -a.y}; }
-constexpr Vec2 operator*(double k, Vec2 a) { return {k * a.x, k * a.y}; }
-constexpr Vec2 operator*(Vec2 a, double k) { return {k * a.x, k * a.y}; }
-constexpr Vec2 operator/(Vec2 a, double k) { return {a.x / k, a.y / k}; }
-constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+// The few operations the geometry is written in, named as a reader of the maths says them.
+inline double dot(const Vec2& a, const Vec2& b) { return a.dot(b); }
 // z component of the 3-D cross product: positive when b is counter-clockwise of a.
-constexpr double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 // a turned by +90 degrees (counter-clockwise).
-constexpr Vec2 perp(Vec2 a) { return {-a.y, a.x}; }
-// Plain sqrt, not std::hypot: lengths here are metres, far from overflow, and hypot is ~10x slower.
-inline double norm(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
-inline double distance(Vec2 a, Vec2 b) { return norm(a - b); }
-inline Vec2 normalized(Vec2 a) { return a / norm(a); }
-// Rotation by angle phi (radians, counter-clockwise).
-inline Vec2 rotated(Vec2 a, double phi) {
-    const double c = std::cos(phi), s = std::sin(phi);
-    return {c * a.x - s * a.y, s * a.x + c * a.y};
-}
+inline Vec2 perp(const Vec2& a) { return {-a.y(), a.x()}; }
+// Eigen's norm is a plain sqrt of the squared sum, not std::hypot: lengths here are metres, far
+// from overflow, and hypot is ~10x slower.
+inline double norm(const Vec2& a) { return a.norm(); }
+inline double distance(const Vec2& a, const Vec2& b) { return norm(a - b); }
+inline Vec2 normalized(const Vec2& a) { return a / norm(a); }
 
 // An oriented rectangle: a bench board seen from above.
 struct Rect {
-    Vec2 centre;
-    Vec2 axis;             // unit vector along the long side (from the rear handle to the front one)
+    Vec2 centre = Vec2::Zero();
+    Vec2 axis = Vec2::Zero();  // unit vector along the long side (from the rear handle to the front one)
     double half_length = 0;  // along axis
     double half_width = 0;   // across axis
 };
@@ -45,7 +38,7 @@ inline double half_diagonal(const Rect& r) { return std::sqrt(r.half_length * r.
 // The distance from p to rectangle r (0 inside it) and the point of r nearest p.
 struct PointToRect {
     double distance;
-    Vec2 nearest;
+    Vec2 nearest = Vec2::Zero();
 };
 inline PointToRect point_to_rect(Vec2 p, const Rect& r) {
     const Vec2 n = perp(r.axis);

@@ -38,8 +38,8 @@ struct ChordMemo {
 // A place with its point and unit tangent (pointing in the direction of travel).
 struct Located {
     Place place;
-    Vec2 pos;
-    Vec2 tangent;
+    Vec2 pos = Vec2::Zero();
+    Vec2 tangent = Vec2::Zero();
     ChordMemo memo{};
 };
 

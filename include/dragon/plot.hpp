@@ -27,7 +27,7 @@ struct PlotSeries {
 
 // Text at a data point, offset in pixels; a small dot marks the point if `dot`.
 struct PlotLabel {
-    Vec2 at;
+    Vec2 at = Vec2::Zero();
     std::string text;
     Rgba colour;
     double dx_px = 6, dy_px = -6;

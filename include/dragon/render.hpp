@@ -63,13 +63,13 @@ struct Camera {
         follow_head,  // centred on the head front handle, extent as given
     };
     Mode mode = Mode::fit_dragon;
-    Vec2 centre;          // fixed mode
+    Vec2 centre = Vec2::Zero();  // fixed mode
     double extent = 0.0;  // fixed / follow_head: width and height of the square that must fit, m
     double margin = 0.04; // fit_dragon: fraction of the box added on every side
 
     static Camera fit() { return {}; }
     static Camera at(Vec2 c, double extent_m) { return {Mode::fixed, c, extent_m}; }
-    static Camera follow(double extent_m) { return {Mode::follow_head, {}, extent_m}; }
+    static Camera follow(double extent_m) { return {Mode::follow_head, Vec2::Zero(), extent_m}; }
 };
 
 // The views a picture can mean. Narrower than kMinViewExtent, or with pixels finer than
@@ -93,7 +93,7 @@ double narrowest_view(Vec2 centre, int width_px, int height_px);
 struct CollisionMark {
     int bench_a = 0;  // 1..N
     int bench_b = 0;
-    Vec2 point;
+    Vec2 point = Vec2::Zero();
 };
 
 struct SceneOptions {
@@ -138,7 +138,7 @@ struct Polyline {
     bool arrow = false;  // an arrowhead at the last point
 };
 struct Marker {
-    Vec2 pos;
+    Vec2 pos = Vec2::Zero();
     Rgba colour;
     double radius_px = 4.0;
     bool ring = false;  // an open circle instead of a dot
@@ -149,7 +149,7 @@ struct Marker {
 // the lines drawn and of every bench but the one it names; a label set away from its point
 // gets a leader line to it.
 struct Label {
-    Vec2 pos;
+    Vec2 pos = Vec2::Zero();
     std::string text;
     Rgba colour;
     double size_px = 13.0;
@@ -179,7 +179,7 @@ struct Scene {
 
     Theme theme;
     // The view: world box that must fit (centre, extent in x and y).
-    Vec2 view_centre;
+    Vec2 view_centre = Vec2::Zero();
     double view_width = 1.0, view_height = 1.0;
 
     std::vector<Bench> benches;  // bench k at index k-1

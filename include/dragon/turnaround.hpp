@@ -26,14 +26,14 @@ struct SCurve {
     double entry_radius = 0;  // |A|, m
     double entry_theta = 0;   // polar angle of A on the coil-in spiral r = b theta (and of B on the coil-out one)
     double ratio = 0;         // r1 / r2
-    Vec2 entry;               // A
-    Vec2 exit;                // B = -A
-    Vec2 direction;           // unit direction of travel at A; the same at B (the spirals are point-symmetric)
-    Vec2 c1, c2;
+    Vec2 entry = Vec2::Zero();  // A
+    Vec2 exit = Vec2::Zero();  // B = -A
+    Vec2 direction = Vec2::Zero();  // unit direction of travel at A; the same at B (the spirals are point-symmetric)
+    Vec2 c1 = Vec2::Zero(), c2 = Vec2::Zero();
     double r1 = 0, r2 = 0;
     double angle1 = 0;        // clockwise angle arc 1 sweeps, rad
     double angle2 = 0;        // counter-clockwise angle arc 2 sweeps, rad
-    Vec2 joint;               // where arc 1 meets arc 2
+    Vec2 joint = Vec2::Zero();  // where arc 1 meets arc 2
     double length1 = 0, length2 = 0, length = 0;  // arc lengths and their sum, m
     double max_radius = 0;    // farthest point of the S-curve from the centre, m
 };

@@ -31,7 +31,7 @@ struct Jam {
     double head_arc = 0.0;   // m: the head's arc position then
     int handle = 0;          // 1..N: the handle that would have to jump; its link's front is handle - 1
     JamKind kind = JamKind::root_vanishes;
-    Vec2 point;              // where the circle of the link's length about handle - 1 touches the path
+    Vec2 point = Vec2::Zero();  // where the circle of the link's length about handle - 1 touches the path
     double tolerance = 0.0;  // s: the motion stops within this much of `time`, on the far side of it
 };
 

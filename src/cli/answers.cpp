@@ -12,7 +12,7 @@ namespace dragon::cli {
 
 namespace {
 
-Json point(Vec2 p) { return {p.x, p.y}; }
+Json point(Vec2 p) { return {p.x(), p.y()}; }
 
 Json rows_json(const std::vector<TurnStudyRow>& rows) {
     Json out = Json::array();
@@ -83,7 +83,7 @@ Json collide_answer(const CollideSearch& r, bool with_handles) {
         Json handles = c ? Json::array() : Json(nullptr);
         if (c)
             for (const Handle& h : c->frame.handles)
-                handles.push_back({{"x", round6(h.pos.x)}, {"y", round6(h.pos.y)}, {"speed", round6(h.speed)}});
+                handles.push_back({{"x", round6(h.pos.x())}, {"y", round6(h.pos.y())}, {"speed", round6(h.speed)}});
         answer["handles"] = handles;
     }
     return answer;

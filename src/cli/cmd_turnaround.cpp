@@ -43,13 +43,13 @@ void print_text(const TurnaroundStudy& st, const std::optional<RunClearance>& cl
     const SCurve& d = st.design;
     fmt::print("Turnaround S-curve (pitch {} m, turning space radius {} m, r1/r2 = {})\n", d.pitch,
                d.entry_radius, d.ratio);
-    fmt::print("  entry A   ({:.6f}, {:.6f})    exit B ({:.6f}, {:.6f})\n", d.entry.x, d.entry.y,
-               d.exit.x, d.exit.y);
+    fmt::print("  entry A   ({:.6f}, {:.6f})    exit B ({:.6f}, {:.6f})\n", d.entry.x(), d.entry.y(),
+               d.exit.x(), d.exit.y());
     fmt::print("  arc 1     centre ({:.6f}, {:.6f})  r1 = {:.6f} m  {:.6f} rad ({:.2f} deg)  {:.6f} m\n",
-               d.c1.x, d.c1.y, d.r1, d.angle1, d.angle1 * kDegrees, d.length1);
+               d.c1.x(), d.c1.y(), d.r1, d.angle1, d.angle1 * kDegrees, d.length1);
     fmt::print("  arc 2     centre ({:.6f}, {:.6f})  r2 = {:.6f} m  {:.6f} rad ({:.2f} deg)  {:.6f} m\n",
-               d.c2.x, d.c2.y, d.r2, d.angle2, d.angle2 * kDegrees, d.length2);
-    fmt::print("  joint     ({:.6f}, {:.6f})\n", d.joint.x, d.joint.y);
+               d.c2.x(), d.c2.y(), d.r2, d.angle2, d.angle2 * kDegrees, d.length2);
+    fmt::print("  joint     ({:.6f}, {:.6f})\n", d.joint.x(), d.joint.y());
     fmt::print("  length    {:.6f} m (farthest from the centre: {:.6f} m)\n", d.length, d.max_radius);
     if (st.design_jam) fmt::print("  this dragon cannot follow it: {}\n", jam_sentence(*st.design_jam));
     fmt::print("\nCan the turning curve be shorter? (and can this dragon follow it?)\n");

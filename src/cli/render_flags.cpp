@@ -20,7 +20,7 @@ void require_zoom_resolves(const Scene& scene, int w, int h, double zoom) {
     if (check_view(c, scene.view_width, scene.view_height, w, h) == ViewError::none) return;
     throw InputError(fmt::format("--zoom {} is not allowed about ({:g}, {:g}) at {}x{} px: doubles cannot resolve "
                                  "its pixels there; use --zoom {:.3g} or more",
-                                 zoom, c.x, c.y, w, h, narrowest_view(c, w, h)));
+                                 zoom, c.x(), c.y(), w, h, narrowest_view(c, w, h)));
 }
 
 void RenderFlags::add_to(CLI::App* sub, bool with_view) {

@@ -33,9 +33,9 @@ void print_frame_table(const std::string& title, const std::vector<const Frame*>
     for (int h : summary_handles(n)) {
         const std::string name = handle_name(h, n);
         fmt::print("{:<18}", name + " x (m)");
-        for (const Frame* f : frames) fmt::print(" {:>11.6f}", round6(f->handles[static_cast<size_t>(h)].pos.x));
+        for (const Frame* f : frames) fmt::print(" {:>11.6f}", round6(f->handles[static_cast<size_t>(h)].pos.x()));
         fmt::print("\n{:<18}", name + " y (m)");
-        for (const Frame* f : frames) fmt::print(" {:>11.6f}", round6(f->handles[static_cast<size_t>(h)].pos.y));
+        for (const Frame* f : frames) fmt::print(" {:>11.6f}", round6(f->handles[static_cast<size_t>(h)].pos.y()));
         fmt::print("\n");
     }
     for (int h : summary_handles(n)) {
@@ -50,8 +50,8 @@ void print_single_frame(const std::string& title, const Frame& frame) {
     fmt::print("{}\n{:<14} {:>11} {:>11} {:>11}\n", title, "", "x (m)", "y (m)", "speed (m/s)");
     for (int h : summary_handles(n)) {
         const Handle& hd = frame.handles[static_cast<size_t>(h)];
-        fmt::print("{:<14} {:>11.6f} {:>11.6f} {:>11.6f}\n", handle_name(h, n), round6(hd.pos.x),
-                   round6(hd.pos.y), round6(hd.speed));
+        fmt::print("{:<14} {:>11.6f} {:>11.6f} {:>11.6f}\n", handle_name(h, n), round6(hd.pos.x()),
+                   round6(hd.pos.y()), round6(hd.speed));
     }
 }
 
@@ -73,7 +73,7 @@ Json jam_json(const std::optional<Jam>& j) {
     return Json{{"time", j->time},
                 {"handle", j->handle},
                 {"kind", to_string(j->kind)},
-                {"point", {j->point.x, j->point.y}},
+                {"point", {j->point.x(), j->point.y()}},
                 {"tolerance", j->tolerance}};
 }
 
@@ -99,7 +99,7 @@ std::string handles_json(const Frame& frame) {
     for (size_t i = 0; i < frame.handles.size(); ++i) {
         const Handle& h = frame.handles[i];
         out += fmt::format("{}{{\"x\": {:.6f}, \"y\": {:.6f}, \"speed\": {:.6f}}}", i ? ", " : "",
-                           round6(h.pos.x), round6(h.pos.y), round6(h.speed));
+                           round6(h.pos.x()), round6(h.pos.y()), round6(h.speed));
     }
     return out + "]";
 }

@@ -23,8 +23,8 @@
 namespace dragon {
 
 struct PieceSample {
-    Vec2 p;   // P(u)
-    Vec2 du;  // P'(u)
+    Vec2 p = Vec2::Zero();  // P(u)
+    Vec2 du = Vec2::Zero();  // P'(u)
 };
 
 // eval(u) -> PieceSample; bound(ua, ub) -> max over [min, max] of |P'|^2 and |P''| as

@@ -29,7 +29,7 @@ const std::vector<std::pair<int, int>>& BroadPhase::candidate_pairs(const Frame&
     const size_t n = f.benches.size();
     // Sorted by the left edge of the box; then the sweep reads plain arrays in order, which is
     // most of the broad phase's time.
-    auto half_x = [](const Rect& r) { return r.half_length * std::abs(r.axis.x) + r.half_width * std::abs(r.axis.y); };
+    auto half_x = [](const Rect& r) { return r.half_length * std::abs(r.axis.x()) + r.half_width * std::abs(r.axis.y()); };
     // The order of the last call is kept: successive frames of a search differ little, so it is
     // nearly sorted already and insertion sort finishes it in about n steps.
     std::vector<std::pair<double, int>>& order = order_;
@@ -39,7 +39,7 @@ const std::vector<std::pair<int, int>>& BroadPhase::candidate_pairs(const Frame&
         order.resize(n);
         for (size_t i = 0; i < n; ++i) order[i].second = static_cast<int>(i);
     }
-    for (auto& [key, i] : order) key = f.benches[static_cast<size_t>(i)].centre.x - half_x(f.benches[static_cast<size_t>(i)]);
+    for (auto& [key, i] : order) key = f.benches[static_cast<size_t>(i)].centre.x() - half_x(f.benches[static_cast<size_t>(i)]);
     for (size_t k = 1; k < n; ++k) {
         const auto item = order[k];
         size_t j = k;
@@ -52,8 +52,8 @@ const std::vector<std::pair<int, int>>& BroadPhase::candidate_pairs(const Frame&
         const int i = order[k].second;
         const Rect& r = f.benches[static_cast<size_t>(i)];
         rad[k] = half_diagonal(r);
-        x[k] = r.centre.x;
-        y[k] = r.centre.y;
+        x[k] = r.centre.x();
+        y[k] = r.centre.y();
         lo[k] = x[k] - half_x(r) - 0.5 * margin;
         hi[k] = x[k] + half_x(r) + 0.5 * margin;
         index[k] = i;
@@ -95,7 +95,7 @@ Clearance clearance(const Frame& f, double cutoff) {
 }
 
 Clearance clearance(const Frame& f, double cutoff, BroadPhase& scratch) {
-    Clearance best{std::numeric_limits<double>::infinity(), 0, 0, {}, {}};
+    Clearance best{std::numeric_limits<double>::infinity(), 0, 0, Vec2::Zero(), Vec2::Zero()};
     if (f.benches.size() < 3) return best;
     // Every pair closer than `margin` is a candidate, so a best candidate within the margin is
     // the true minimum; otherwise all pairs are farther apart than the margin.
@@ -120,7 +120,7 @@ Clearance clearance(const Frame& f, double cutoff, BroadPhase& scratch) {
 }
 
 Clearance clearance_all_pairs(const Frame& f) {
-    Clearance best{std::numeric_limits<double>::infinity(), 0, 0, {}, {}};
+    Clearance best{std::numeric_limits<double>::infinity(), 0, 0, Vec2::Zero(), Vec2::Zero()};
     const int n = static_cast<int>(f.benches.size());
     for (int i = 0; i < n; ++i)
         for (int j = i + 2; j < n; ++j) consider(best, f, i, j);

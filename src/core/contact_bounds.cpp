@@ -45,7 +45,7 @@ double radial_step(const Radial& a, const Radial& b) {
 
 namespace {
 struct Group {
-    Vec2 centre;
+    Vec2 centre = Vec2::Zero();
     double radius;  // bounding circle of the members' rectangles
     double rate;    // w_G
     double speed;   // V_G
@@ -66,8 +66,8 @@ double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, co
         int rated = 0;
         for (size_t k = g0; k < g1; ++k) {
             const Vec2 c = motion[k].centre;
-            lo = {std::min(lo.x, c.x), std::min(lo.y, c.y)};
-            hi = {std::max(hi.x, c.x), std::max(hi.y, c.y)};
+            lo = {std::min(lo.x(), c.x()), std::min(lo.y(), c.y())};
+            hi = {std::max(hi.x(), c.x()), std::max(hi.y(), c.y())};
             const double r2 = dot(c, c);
             if (r2 > 0.0) rate += cross(c, motion[k].v_centre) / r2, ++rated;
         }

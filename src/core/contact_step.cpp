@@ -144,7 +144,7 @@ void closest_pair(const Frame& f, const std::vector<std::pair<int, int>>& pairs,
 
 Approach approach(const Frame& f, double t, double max_step, const Memory& memory, Memory& next, bool check,
                   Workspace& ws) {
-    Approach a{{INFINITY, 0, 0, {}, {}}, INFINITY, 0.0, false, INFINITY};
+    Approach a{{INFINITY, 0, 0, Vec2::Zero(), Vec2::Zero()}, INFINITY, 0.0, false, INFINITY};
     if (f.benches.size() < 3) return a;
     // The search's own scratch (a search evaluates hundreds of frames).
     bench_motions_into(f, ws.motion);

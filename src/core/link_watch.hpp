@@ -67,8 +67,8 @@ LinkCheck check_link(const Path& path, const Handle& front, const Handle& rear, 
 struct Tangency {
     double arc = 0.0;
     double excess = 0.0;
-    Vec2 point;
-    Vec2 dir;
+    Vec2 point = Vec2::Zero();
+    Vec2 dir = Vec2::Zero();
 };
 std::optional<Tangency> watch_tangency(const Path& path, Vec2 q, double chord, double seed, double window);
 

@@ -26,7 +26,7 @@ void bench_motions_into(const Frame& f, std::vector<BenchMotion>& out) {
 double separation_rate_bound(const Rect& a, const BenchMotion& ma, const BenchMotion& mb, double gap) {
     const Corners c = corners(a);
     double worst = 0.0;
-    for (const Vec2 p : c.p) worst = std::max(worst, norm(mb.at(p) - ma.at(p)));
+    for (const Vec2& p : c.p) worst = std::max(worst, norm(mb.at(p) - ma.at(p)));
     return worst + std::abs(mb.omega) * std::max(gap, 0.0);
 }
 

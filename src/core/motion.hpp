@@ -9,8 +9,8 @@ namespace dragon {
 
 // v(x) = v_centre + omega * perp(x - centre) for every point x of the bench.
 struct BenchMotion {
-    Vec2 centre;
-    Vec2 v_centre;
+    Vec2 centre = Vec2::Zero();
+    Vec2 v_centre = Vec2::Zero();
     double omega;
     Vec2 at(Vec2 x) const { return v_centre + omega * perp(x - centre); }
 };

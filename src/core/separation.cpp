@@ -7,11 +7,6 @@
 
 namespace dragon {
 
-namespace {
-
-
-}  // namespace
-
 // Separating-axis test for two oriented rectangles. The candidate axes are the two edge normals
 // of each rectangle; two convex polygons are disjoint iff some edge normal separates their
 // projections, and when they overlap the smallest projected overlap over those normals is the
@@ -24,7 +19,7 @@ Separation separation(const Rect& a, const Rect& b) {
     if (sat.gap > 0.0) {
         const Corners ca = corners(a), cb = corners(b);
         double dmin = INFINITY;
-        Vec2 from{}, to{};
+        Vec2 from = Vec2::Zero(), to = Vec2::Zero();
         for (int k = 0; k < 4; ++k) {
             const PointToRect pb = point_to_rect(ca.p[k], b);  // corner of a to b
             if (pb.distance < dmin) { dmin = pb.distance; from = ca.p[k]; to = pb.nearest; }
@@ -58,9 +53,9 @@ Separation separation(const Rect& a, const Rect& b) {
 Vec2 contact_point(const Rect& a, const Rect& b) {
     Vec2 best = a.centre;
     double best_d = INFINITY;
-    for (const Vec2 p : corners(a).p)
+    for (const Vec2& p : corners(a).p)
         if (const double d = point_to_rect(p, b).distance; d < best_d) best_d = d, best = p;
-    for (const Vec2 p : corners(b).p)
+    for (const Vec2& p : corners(b).p)
         if (const double d = point_to_rect(p, a).distance; d < best_d) best_d = d, best = p;
     return best;
 }

@@ -229,7 +229,7 @@ std::optional<Located> Spiral::behind_within_half_turn(const Located& from, doub
     const double cp = h.c * (1.0 - 0.5 * step * step) - h.s * step;
     const double sp = h.s * (1.0 - 0.5 * step * step) + h.c * step;
     const double r0 = b_ * th;
-    const double c0 = from.pos.x / r0, s0 = from.pos.y / r0;
+    const double c0 = from.pos.x() / r0, s0 = from.pos.y() / r0;
     const double c2 = c0 * cp - s0 * sp, s2 = s0 * cp + c0 * sp;
     const double r2 = b_ * th2;
     const double inv = 1.0 / std::sqrt(1.0 + th2 * th2);

@@ -23,9 +23,9 @@ constexpr double kJoinSlack = 1e-12;
 
 TurnaroundPath::TurnaroundPath(const SCurve& design)
     : design_(design), coil_in_(design.pitch), length_at_entry_(coil_in_.length_to(design.entry_theta)) {
-    u1_start_ = std::atan2(design_.entry.y - design_.c1.y, design_.entry.x - design_.c1.x);
+    u1_start_ = std::atan2(design_.entry.y() - design_.c1.y(), design_.entry.x() - design_.c1.x());
     u1_end_ = u1_start_ - design_.angle1;
-    u2_start_ = std::atan2(design_.c1.y - design_.c2.y, design_.c1.x - design_.c2.x);
+    u2_start_ = std::atan2(design_.c1.y() - design_.c2.y(), design_.c1.x() - design_.c2.x());
     u2_end_ = u2_start_ + design_.angle2;
 }
 
@@ -188,7 +188,7 @@ std::optional<Located> TurnaroundPath::behind_on_arc(int piece, const Located& f
         const double r_minus_x = (chord - e) * (chord + e) / (2.0 * dist);
         const double x = r - r_minus_x;
         const double y2 = r_minus_x * (2.0 * r - r_minus_x);
-        psi = std::atan2(w.y, w.x);
+        psi = std::atan2(w.y(), w.x());
         beta = std::atan2(std::sqrt(std::max(y2, 0.0)), x);
     }
 

@@ -49,7 +49,7 @@ struct Bracket {
     double valid = 0.0, past = 0.0;
     int link = 0;
     JamKind kind = JamKind::root_vanishes;
-    Vec2 point;
+    Vec2 point = Vec2::Zero();
 };
 
 class JamSearch {
@@ -172,7 +172,7 @@ private:
     JamSearchStats& stats_;
     jam::Calm calm_head_, calm_body_;  // for the head's link and the others
     Frame scratch_;
-    Vec2 last_point_;
+    Vec2 last_point_ = Vec2::Zero();
 };
 
 Jam make_jam(const Bracket& b, double start_arc, double head_speed, double dir) {

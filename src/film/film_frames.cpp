@@ -23,7 +23,7 @@ double ease(Ease e, double u) {
 }
 
 struct View2 {
-    Vec2 centre;
+    Vec2 centre = Vec2::Zero();
     double extent;
 };
 
@@ -32,7 +32,7 @@ View2 resolve(const Window& w, const ViewPlan& v, const Frame& f) {
     case Window::Kind::fit: return {v.fit.centre, v.fit.extent};
     case Window::Kind::head: return {f.handles.front().pos, w.extent};
     case Window::Kind::fixed: return {w.centre, w.extent};
-    case Window::Kind::contact: return {v.contact ? v.contact->point : Vec2{}, w.extent};
+    case Window::Kind::contact: return {v.contact ? v.contact->point : Vec2::Zero(), w.extent};
     }
     return {v.fit.centre, v.fit.extent};
 }

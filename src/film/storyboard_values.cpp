@@ -91,7 +91,7 @@ Window window(const Where& w, const toml::node& n, const std::string& key) {
     if (n.is_string()) {
         const std::string s = *n.value<std::string>();
         if (s == "fit") return {};
-        if (s == "head") return {Window::Kind::head, {}, 12.0};
+        if (s == "head") return {Window::Kind::head, Vec2::Zero(), 12.0};
         w.fail(key, fmt::format("'{}' is not a window: use \"fit\", \"head\", {{follow = M}}, {{centre = [X, Y], "
                                 "extent = M}} or {{contact = M}}", s));
     }
@@ -99,11 +99,11 @@ Window window(const Where& w, const toml::node& n, const std::string& key) {
     if (!t) w.fail(key, "must be \"fit\", \"head\" or a table ({follow = M}, {centre = [X, Y], extent = M}, {contact = M})");
     if (const toml::node* f = t->get("follow")) {
         check_keys(w, *t, {"follow"}, "a followed window", key + ".");
-        return {Window::Kind::head, {}, extent(w, *f, key + ".follow")};
+        return {Window::Kind::head, Vec2::Zero(), extent(w, *f, key + ".follow")};
     }
     if (const toml::node* c = t->get("contact")) {
         check_keys(w, *t, {"contact"}, "a window about the contact", key + ".");
-        return {Window::Kind::contact, {}, extent(w, *c, key + ".contact")};
+        return {Window::Kind::contact, Vec2::Zero(), extent(w, *c, key + ".contact")};
     }
     check_keys(w, *t, {"centre", "extent"}, "a fixed window", key + ".");
     const toml::array* c = t->get_as<toml::array>("centre");
@@ -111,7 +111,7 @@ Window window(const Where& w, const toml::node& n, const std::string& key) {
     if (!c || c->size() != 2 || !e) w.fail(key, "a fixed window needs centre = [X, Y] and extent = M (metres)");
     Window out{Window::Kind::fixed, {number(w, *c->get(0), key + ".centre"), number(w, *c->get(1), key + ".centre")},
                extent(w, *e, key + ".extent")};
-    if (std::max(std::abs(out.centre.x), std::abs(out.centre.y)) > kMaxViewCentre)
+    if (std::max(std::abs(out.centre.x()), std::abs(out.centre.y())) > kMaxViewCentre)
         w.fail(key + ".centre", fmt::format("is not allowed: each coordinate within {:g} m", kMaxViewCentre));
     return out;
 }

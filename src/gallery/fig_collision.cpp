@@ -52,7 +52,7 @@ void broad_phase(const Context& c, const std::string& path) {
     const Rect& r = f.benches[focus - 1];
     // The sweep band: the bench's bounding box on x, widened by half the margin each side (as in
     // candidate_pairs; a bench whose own band overlaps it goes on to the circle test).
-    const double reach = r.half_length * std::abs(r.axis.x) + r.half_width * std::abs(r.axis.y) + 0.5 * margin;
+    const double reach = r.half_length * std::abs(r.axis.x()) + r.half_width * std::abs(r.axis.y()) + 0.5 * margin;
     // Twice the circle of bench + margin across: the candidates and their neighbours.
     const double extent = 4.0 * (bounding_radius(r) + margin);
 
@@ -76,9 +76,9 @@ void broad_phase(const Context& c, const std::string& path) {
 
     // The sweep on x, then the circle test: a candidate's bounding circle comes within the
     // margin of the focus bench's.
-    const double x0 = r.centre.x - reach, x1 = r.centre.x + reach;
+    const double x0 = r.centre.x() - reach, x1 = r.centre.x() + reach;
     for (double x : {x0, x1})
-        s.polylines.push_back(segment({x, r.centre.y - extent}, {x, r.centre.y + extent}, th.text, 1.2, true));
+        s.polylines.push_back(segment({x, r.centre.y() - extent}, {x, r.centre.y() + extent}, th.text, 1.2, true));
     for (int bench : candidates) {
         const Rect& b = f.benches[bench - 1];
         s.polylines.push_back(circle(b.centre, bounding_radius(b), with_alpha(th.highlight, 0.45), 1.0));
@@ -87,7 +87,7 @@ void broad_phase(const Context& c, const std::string& path) {
     s.polylines.push_back(circle(r.centre, bounding_radius(r), th.head, 1.6));
     s.labels.push_back(label(r.centre + Vec2{0, bounding_radius(r) + margin},
                              fmt::format("bench {}'s bounding circle + margin", focus), th.head, 14, 6, -8));
-    s.labels.push_back(label({x1, r.centre.y - 0.42 * extent}, "sweep band on x", th.text, 14, 6, 0));
+    s.labels.push_back(label({x1, r.centre.y() - 0.42 * extent}, "sweep band on x", th.text, 14, 6, 0));
     write_scene(c, s, c.px(900), c.px(900), path);
 }
 
@@ -155,7 +155,7 @@ void first_contact_zoom(const Context& c, const std::string& path) {
                              th.text, 13, 16, 26));
     // The handles in view, numbered; a number may lie on the bench the handle ends.
     for (std::size_t i = 0; i < f.handles.size(); ++i)
-        if (const Vec2 d = f.handles[i].pos - p; std::abs(d.x) < 0.5 * extent && std::abs(d.y) < 0.5 * extent) {
+        if (const Vec2 d = f.handles[i].pos - p; std::abs(d.x()) < 0.5 * extent && std::abs(d.y()) < 0.5 * extent) {
             Label l = label(f.handles[i].pos, fmt::format("{}", i), with_alpha(th.text, 0.7), 12, 8, 14);
             l.bench = std::max(1, static_cast<int>(i));  // handle i joins benches i and i + 1
             l.benches = i == 0 ? 1 : 2;
@@ -216,7 +216,7 @@ void pitch_states(const Context& c, const std::string& path) {
     double reach = 0;
     for (const Scene& p : panels)
         for (const Scene::Bench& b : p.benches)
-            for (Vec2 q : corners(b.rect).p) reach = std::max({reach, std::abs(q.x), std::abs(q.y)});
+            for (Vec2 q : corners(b.rect).p) reach = std::max({reach, std::abs(q.x()), std::abs(q.y())});
     for (Scene& p : panels) {
         p.view_centre = {0, 0};
         p.view_width = p.view_height = 2.06 * reach;
@@ -274,7 +274,7 @@ void clearance_over_time(const Context& c, const std::string& path) {
     p.y_label = "clearance (m)";
     p.legend = Plot::Legend::none;
     PlotSeries s{"", {}, series_colour(p.theme, 0), 1.6};
-    Clearance least{std::numeric_limits<double>::infinity(), 0, 0, {}, {}};
+    Clearance least{std::numeric_limits<double>::infinity(), 0, 0, Vec2::Zero(), Vec2::Zero()};
     double least_t = span.from;
     Frame f;
     auto add = [&](double t) {
@@ -311,7 +311,7 @@ void clearance_over_time(const Context& c, const std::string& path) {
     p.x_min = 0;
     p.x_max = std::ceil(span.to / tick) * tick;
     double top = 0;
-    for (Vec2 q : s.points) top = std::max(top, q.y);
+    for (Vec2 q : s.points) top = std::max(top, q.y());
     p.y_min = -0.1 * (top > 0 ? top : 0.2);
     if (s.points.empty()) p.y_max = 1.0;
     write_plot(c, p, c.px(1000), c.px(600), path);

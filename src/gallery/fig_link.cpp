@@ -62,8 +62,8 @@ void link_geometry(const Context& c, const std::string& path) {
     // Frame the two links, the velocity arrows and the circle of roots.
     const double k = 1.3;  // metres of arrow per m/s
     const Vec2 tip0 = h0 + k * f.handles[0].speed * f.handles[0].tangent;
-    double x0 = std::min({h0.x, h2.x, tip0.x, h0.x - d1}), x1 = std::max({h0.x, h2.x, tip0.x, h0.x + d1});
-    double y0 = std::min({h0.y, h2.y, tip0.y, h0.y - d1}), y1 = std::max({h0.y, h2.y, tip0.y, h0.y + d1});
+    double x0 = std::min({h0.x(), h2.x(), tip0.x(), h0.x() - d1}), x1 = std::max({h0.x(), h2.x(), tip0.x(), h0.x() + d1});
+    double y0 = std::min({h0.y(), h2.y(), tip0.y(), h0.y() - d1}), y1 = std::max({h0.y(), h2.y(), tip0.y(), h0.y() + d1});
     SceneOptions so;
     so.theme = th;
     so.title_band = true;  // a title hides nothing

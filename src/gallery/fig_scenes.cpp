@@ -22,7 +22,7 @@ void dragon_at_300s(const Context& c, const std::string& path) {
     so.colour_by_speed = true;
     const Vec2 head = f.handles.front().pos;
     so.annotation = fmt::format("t = {} s{}   head front at x = {:.6f} m, y = {:.6f} m   pitch {:g} m", seconds(t),
-                                why, head.x, head.y, c.base.coil_pitch());
+                                why, head.x(), head.y(), c.base.coil_pitch());
     Scene s = make_scene(sim, f, so);
     Label h = label(head, "head", c.opt.theme.text, 14, 8, -8);
     h.bench = 1;

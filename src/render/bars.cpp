@@ -76,7 +76,7 @@ Box draw_inset(cairo_t* cr, const Scene& s, const Units& un, double right, Vec2 
     inset.show_text = false;
     const double side = std::round(0.3 * std::min(un.w, un.h));
     // Two pixels wide whatever the inset's size (a polyline's width scales with its picture).
-    Polyline box{{lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}, s.theme.collision, 2.0 / Units::of(side, side).u};
+    Polyline box{{lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}}, s.theme.collision, 2.0 / Units::of(side, side).u};
     box.closed = true;
     inset.polylines.push_back(std::move(box));
     const double x = std::round(right - 10 * un.u - side), y = std::round(un.h - 10 * un.u - side);

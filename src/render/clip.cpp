@@ -15,10 +15,10 @@ constexpr double pi = std::numbers::pi;
 // work whatever the input.
 constexpr int max_arc_points = 1 << 16;
 
-std::array<Vec2, 4> corners_of(const Box& b) { return {b.lo, Vec2{b.hi.x, b.lo.y}, b.hi, Vec2{b.lo.x, b.hi.y}}; }
+std::array<Vec2, 4> corners_of(const Box& b) { return {b.lo, Vec2{b.hi.x(), b.lo.y()}, b.hi, Vec2{b.lo.x(), b.hi.y()}}; }
 
 double distance_to_box(const Box& b, Vec2 p) {
-    return std::hypot(std::max({b.lo.x - p.x, 0.0, p.x - b.hi.x}), std::max({b.lo.y - p.y, 0.0, p.y - b.hi.y}));
+    return std::hypot(std::max({b.lo.x() - p.x(), 0.0, p.x() - b.hi.x()}), std::max({b.lo.y() - p.y(), 0.0, p.y() - b.hi.y()}));
 }
 
 double farthest_corner(const Box& b, Vec2 p) {
@@ -32,10 +32,10 @@ double farthest_corner(const Box& b, Vec2 p) {
 std::pair<double, double> angles_over(Vec2 c, const Box& box) {
     if (box.holds(c)) return {0.0, 2 * pi};
     const Vec2 mid = 0.5 * (box.lo + box.hi);
-    const double base = std::atan2(mid.y - c.y, mid.x - c.x);
+    const double base = std::atan2(mid.y() - c.y(), mid.x() - c.x());
     double lo = pi, hi = -pi;
     for (Vec2 q : corners_of(box)) {
-        double a = std::atan2(q.y - c.y, q.x - c.x) - base;
+        double a = std::atan2(q.y() - c.y(), q.x() - c.x()) - base;
         a = std::remainder(a, 2 * pi);
         lo = std::min(lo, a);
         hi = std::max(hi, a);
@@ -61,10 +61,10 @@ std::vector<Vec2> arc_points(Vec2 c, double r, double a0, double a1, double tole
 
 std::vector<Vec2> clip_polygon(std::vector<Vec2> polygon, const Box& box) {
     // Each side as a linear function, >= 0 inside.
-    const std::array<std::pair<Vec2, double>, 4> sides{{{{1, 0}, -box.lo.x},
-                                                        {{-1, 0}, box.hi.x},
-                                                        {{0, 1}, -box.lo.y},
-                                                        {{0, -1}, box.hi.y}}};
+    const std::array<std::pair<Vec2, double>, 4> sides{{{{1, 0}, -box.lo.x()},
+                                                        {{-1, 0}, box.hi.x()},
+                                                        {{0, 1}, -box.lo.y()},
+                                                        {{0, -1}, box.hi.y()}}};
     for (const auto& [n, k] : sides) {
         if (polygon.empty()) break;
         std::vector<Vec2> out;
@@ -92,7 +92,7 @@ std::vector<std::vector<Vec2>> clip_polyline(const std::vector<Vec2>& line, bool
         double t0 = 0, t1 = 1;
         bool keep = true;
         const std::array<std::pair<double, double>, 4> limits{
-            {{-d.x, p.x - box.lo.x}, {d.x, box.hi.x - p.x}, {-d.y, p.y - box.lo.y}, {d.y, box.hi.y - p.y}}};
+            {{-d.x(), p.x() - box.lo.x()}, {d.x(), box.hi.x() - p.x()}, {-d.y(), p.y() - box.lo.y()}, {d.y(), box.hi.y() - p.y()}}};
         for (auto [pk, qk] : limits) {
             if (pk == 0) {
                 keep = keep && qk >= 0;

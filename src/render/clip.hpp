@@ -15,10 +15,10 @@ namespace dragon::render {
 
 // An axis-aligned box: world metres for the guides, pixels for the cuts below.
 struct Box {
-    Vec2 lo, hi;
-    double extent() const { return std::max(hi.x - lo.x, hi.y - lo.y); }
-    bool holds(Vec2 p) const { return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y; }
-    Box grown(double by) const { return {{lo.x - by, lo.y - by}, {hi.x + by, hi.y + by}}; }
+    Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
+    double extent() const { return std::max(hi.x() - lo.x(), hi.y() - lo.y()); }
+    bool holds(Vec2 p) const { return p.x() >= lo.x() && p.x() <= hi.x() && p.y() >= lo.y() && p.y() <= hi.y(); }
+    Box grown(double by) const { return {{lo.x() - by, lo.y() - by}, {hi.x() + by, hi.y() + by}}; }
 };
 
 // The part of a convex polygon inside the box (Sutherland-Hodgman, one side at a time); empty

@@ -25,7 +25,7 @@ std::vector<std::vector<Vec2>> contour_lines(const std::vector<double>& xs, cons
     // Where the level crosses the edge from node p (value zp) to node q (value zq).
     const auto cross = [&](EdgeId e, Vec2 p, double zp, Vec2 q, double zq) {
         const double t = (level - zp) / (zq - zp);
-        crossing.emplace(e, Vec2{p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)});
+        crossing.emplace(e, Vec2{p.x() + t * (q.x() - p.x()), p.y() + t * (q.y() - p.y())});
         return e;
     };
     std::vector<std::pair<EdgeId, EdgeId>> segments;

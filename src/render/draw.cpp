@@ -31,7 +31,7 @@ View make_view(const Scene& s, double w, double h, double right_room, double top
     const double avail = std::max(1.0, w - right_room), avail_h = std::max(1.0, h - top_room);
     const double scale = std::min(avail / s.view_width, avail_h / s.view_height);
     const render::Box picture{{0, 0}, {w, h}};
-    return {s.view_centre.x, s.view_centre.y, scale, 0.5 * avail, top_room + 0.5 * avail_h,
+    return {s.view_centre.x(), s.view_centre.y(), scale, 0.5 * avail, top_room + 0.5 * avail_h,
             picture.grown(4 * (w + h)), picture.grown(32 * u)};
 }
 
@@ -109,10 +109,10 @@ void draw_guides(cairo_t* cr, const Scene& s, const View& v, double u, double w,
                 for (std::size_t k = 0; k < segments; ++k) {
                     if (k % run == 0) {
                         const Vec2 p = v.px(z[3 * k]);
-                        cairo_move_to(cr, p.x, p.y);
+                        cairo_move_to(cr, p.x(), p.y());
                     }
                     const Vec2 p1 = v.px(z[3 * k + 1]), p2 = v.px(z[3 * k + 2]), p3 = v.px(z[3 * k + 3]);
-                    cairo_curve_to(cr, p1.x, p1.y, p2.x, p2.y, p3.x, p3.y);
+                    cairo_curve_to(cr, p1.x(), p1.y(), p2.x(), p2.y(), p3.x(), p3.y());
                     if (k % run == run - 1 || k + 1 == segments) cairo_stroke(cr);
                 }
             }
@@ -126,7 +126,7 @@ void draw_guides(cairo_t* cr, const Scene& s, const View& v, double u, double w,
 bool on_screen(const View& v, const Rect& r, double w, double h) {
     const Vec2 c = v.px(r.centre);
     const double reach = (r.half_length + r.half_width) * v.scale;
-    return c.x + reach >= 0 && c.x - reach <= w && c.y + reach >= 0 && c.y - reach <= h;
+    return c.x() + reach >= 0 && c.x() - reach <= w && c.y() + reach >= 0 && c.y() - reach <= h;
 }
 
 Rect inset(Rect r, double by) {
@@ -209,7 +209,7 @@ void draw_handles(cairo_t* cr, const Scene& s, const View& v, double u) {
             if (off_picture(v, c, r)) continue;
             for (int i = 0; i < 8; ++i) {
                 const double a = (i + 0.5) * std::numbers::pi / 4;
-                const double x = c.x + r * std::cos(a), y = c.y + r * std::sin(a);
+                const double x = c.x() + r * std::cos(a), y = c.y() + r * std::sin(a);
                 if (i == 0) cairo_move_to(cr, x, y);
                 else cairo_line_to(cr, x, y);
             }
@@ -258,17 +258,17 @@ void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
     // The furniture, each piece keeping clear of the ones before; labels then keep clear of all.
     const render::Box bar = render::draw_scale_bar(cr, s, un, v.scale);
     const render::Box clock = render::draw_clock(cr, s, un, w - right);
-    render::draw_colour_bar(cr, s, un, right, std::max(clock.hi.y, top));
+    render::draw_colour_bar(cr, s, un, right, std::max(clock.hi.y(), top));
     const render::Box shown = world_box(v, w - right, h, 0.0);
     const render::Box inset = render::draw_inset(cr, s, un, w - right, shown.lo, shown.hi);
     // A title band spans the picture; an annotation over the drawing keeps clear of the clock.
-    const render::Box note = render::draw_annotation(cr, s, un, s.title_band ? w : clock.lo.x);
-    const render::Box legend = render::draw_legend(cr, s, un, std::max(note.hi.y, 2 * u));
+    const render::Box note = render::draw_annotation(cr, s, un, s.title_band ? w : clock.lo.x());
+    const render::Box legend = render::draw_legend(cr, s, un, std::max(note.hi.y(), 2 * u));
     const render::Box strip{{w - right, 0}, {w, h}};
     render::draw_labels(cr, s, un, [&v](Vec2 p) { return v.px(p); }, {bar, clock, inset, note, legend, strip},
                         {{0, top}, {w, h}});
     const double scale_top = s.show_scale_bar ? h - 48 * un.ut : h;
-    render::draw_captions(cr, s, un, bar.hi.x, inset.lo.x, std::min(scale_top, inset.lo.y));
+    render::draw_captions(cr, s, un, bar.hi.x(), inset.lo.x(), std::min(scale_top, inset.lo.y()));
     cairo_restore(cr);
 }
 

@@ -134,11 +134,11 @@ struct Box {
 // The point `fraction` of the way along a polyline (in device units).
 Vec2 along(const std::vector<Vec2>& pts, double fraction) {
     double total = 0;
-    for (std::size_t k = 1; k < pts.size(); ++k) total += std::hypot(pts[k].x - pts[k - 1].x, pts[k].y - pts[k - 1].y);
+    for (std::size_t k = 1; k < pts.size(); ++k) total += std::hypot(pts[k].x() - pts[k - 1].x(), pts[k].y() - pts[k - 1].y());
     double left = fraction * total;
     for (std::size_t k = 1; k < pts.size(); ++k) {
-        const double d = std::hypot(pts[k].x - pts[k - 1].x, pts[k].y - pts[k - 1].y);
-        if (d >= left && d > 0) return {pts[k - 1].x + (pts[k].x - pts[k - 1].x) * left / d, pts[k - 1].y + (pts[k].y - pts[k - 1].y) * left / d};
+        const double d = std::hypot(pts[k].x() - pts[k - 1].x(), pts[k].y() - pts[k - 1].y());
+        if (d >= left && d > 0) return pts[k - 1] + (pts[k] - pts[k - 1]) * left / d;
         left -= d;
     }
     return pts.back();
@@ -149,7 +149,7 @@ void draw_contours(cairo_t* cr, const Theme& th, const Sorted& s, const std::vec
                    const PlotArea& a, double u, std::vector<Box> taken) {
     const Rgba line{th.text.r, th.text.g, th.text.b, 0.75};
     struct Pending {
-        Vec2 at;
+        Vec2 at = Vec2::Zero();
         std::string text;
     };
     std::vector<Pending> labels;
@@ -158,13 +158,13 @@ void draw_contours(cairo_t* cr, const Theme& th, const Sorted& s, const std::vec
             std::vector<Vec2> px;
             double length = 0;
             for (const Vec2& q : l) {
-                px.push_back({a.px(q.x), a.py(q.y)});
-                if (px.size() > 1) length += std::hypot(px.back().x - px[px.size() - 2].x, px.back().y - px[px.size() - 2].y);
+                px.push_back({a.px(q.x()), a.py(q.y())});
+                if (px.size() > 1) length += std::hypot(px.back().x() - px[px.size() - 2].x(), px.back().y() - px[px.size() - 2].y());
             }
             set_colour(cr, line);
             cairo_set_line_width(cr, 1.1 * u);
             cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-            for (std::size_t k = 0; k < px.size(); ++k) (k ? cairo_line_to : cairo_move_to)(cr, px[k].x, px[k].y);
+            for (std::size_t k = 0; k < px.size(); ++k) (k ? cairo_line_to : cairo_move_to)(cr, px[k].x(), px[k].y());
             cairo_stroke(cr);
             if (length < 90 * u) continue;  // too short to carry its value
             // Neighbouring levels try different places first, so parallel lines' labels step apart.
@@ -173,7 +173,7 @@ void draw_contours(cairo_t* cr, const Theme& th, const Sorted& s, const std::vec
             for (double f : {0.5, 0.3, 0.7, 0.15, 0.85, 0.4, 0.6}) {
                 const double shifted = n % 2 ? 1.0 - f : f;
                 const Vec2 at = along(px, shifted);
-                const Box box{at.x - 0.5 * w, at.y - 0.5 * h, at.x + 0.5 * w, at.y + 0.5 * h};
+                const Box box{at.x() - 0.5 * w, at.y() - 0.5 * h, at.x() + 0.5 * w, at.y() + 0.5 * h};
                 if (box.x0 < a.x0 || box.x1 > a.x1 || box.y0 < a.y0 || box.y1 > a.y1) continue;
                 if (std::any_of(taken.begin(), taken.end(), [&](const Box& b) { return b.overlaps(box); })) continue;
                 taken.push_back(box);
@@ -183,7 +183,7 @@ void draw_contours(cairo_t* cr, const Theme& th, const Sorted& s, const std::vec
         }
     }
     for (const Pending& p : labels)
-        halo_text(cr, th.font, 11 * u, p.at.x, p.at.y + 4 * u, p.text, th.text, th.background, 3 * u, 0.5);
+        halo_text(cr, th.font, 11 * u, p.at.x(), p.at.y() + 4 * u, p.text, th.text, th.background, 3 * u, 0.5);
 }
 
 // Where the contest's dragon is marked, and the box its label takes (none if it is not shown).

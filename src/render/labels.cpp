@@ -18,19 +18,19 @@ namespace dragon::render {
 namespace {
 
 double overlap(const Box& a, const Box& b) {
-    const double w = std::min(a.hi.x, b.hi.x) - std::max(a.lo.x, b.lo.x);
-    const double h = std::min(a.hi.y, b.hi.y) - std::max(a.lo.y, b.lo.y);
+    const double w = std::min(a.hi.x(), b.hi.x()) - std::max(a.lo.x(), b.lo.x());
+    const double h = std::min(a.hi.y(), b.hi.y()) - std::max(a.lo.y(), b.lo.y());
     return w > 0 && h > 0 ? w * h : 0.0;
 }
 
-double area(const Box& b) { return (b.hi.x - b.lo.x) * (b.hi.y - b.lo.y); }
+double area(const Box& b) { return (b.hi.x() - b.lo.x()) * (b.hi.y() - b.lo.y()); }
 
 // Does segment pq cross the box (or lie in it)? Liang-Barsky on its parameter.
 bool crosses(const Box& b, Vec2 p, Vec2 q) {
     double t0 = 0, t1 = 1;
     const Vec2 d = q - p;
-    const double pp[4] = {-d.x, d.x, -d.y, d.y};
-    const double qq[4] = {p.x - b.lo.x, b.hi.x - p.x, p.y - b.lo.y, b.hi.y - p.y};
+    const double pp[4] = {-d.x(), d.x(), -d.y(), d.y()};
+    const double qq[4] = {p.x() - b.lo.x(), b.hi.x() - p.x(), p.y() - b.lo.y(), b.hi.y() - p.y()};
     for (int i = 0; i < 4; ++i) {
         if (pp[i] == 0) {
             if (qq[i] < 0) return false;
@@ -76,8 +76,8 @@ Obstacles gather(const Scene& s, const std::function<Vec2(Vec2)>& px, const Box&
         Box b{{1e300, 1e300}, {-1e300, -1e300}};
         for (int i = 0; i < 4; ++i) {
             q.p[static_cast<std::size_t>(i)] = px(c.p[static_cast<std::size_t>(i)]);
-            b.lo = {std::min(b.lo.x, q.p[static_cast<std::size_t>(i)].x), std::min(b.lo.y, q.p[static_cast<std::size_t>(i)].y)};
-            b.hi = {std::max(b.hi.x, q.p[static_cast<std::size_t>(i)].x), std::max(b.hi.y, q.p[static_cast<std::size_t>(i)].y)};
+            b.lo = {std::min(b.lo.x(), q.p[static_cast<std::size_t>(i)].x()), std::min(b.lo.y(), q.p[static_cast<std::size_t>(i)].y())};
+            b.hi = {std::max(b.hi.x(), q.p[static_cast<std::size_t>(i)].x()), std::max(b.hi.y(), q.p[static_cast<std::size_t>(i)].y())};
         }
         q.box = b;
         if (overlap(b, seen) <= 0) continue;
@@ -103,7 +103,7 @@ double cost_of(const Box& b, const Label& l, const Obstacles& o, const Box& worl
     int under = 0;
     for (int i = 0; i < 7; ++i)
         for (int j = 0; j < 3; ++j) {
-            const Vec2 q{b.lo.x + (b.hi.x - b.lo.x) * (i + 0.5) / 7, b.lo.y + (b.hi.y - b.lo.y) * (j + 0.5) / 3};
+            const Vec2 q{b.lo.x() + (b.hi.x() - b.lo.x()) * (i + 0.5) / 7, b.lo.y() + (b.hi.y() - b.lo.y()) * (j + 0.5) / 3};
             for (std::size_t k = 0; k < o.benches.size(); ++k)
                 if ((o.numbers[k] < l.bench || o.numbers[k] >= l.bench + l.benches) && o.benches[k].holds(q)) {
                     ++under;
@@ -130,43 +130,43 @@ void draw_labels(cairo_t* cr, const Scene& s, const Units& un, const std::functi
         const double asc = 0.76 * size, desc = 0.24 * size, pad = 2 * un.u;
         // A box with its baseline's left end at (x, y).
         const auto at = [&](double x, double y) { return Box{{x - pad, y - asc - pad}, {x + tw + pad, y + desc + pad}}; };
-        const Vec2 want{p.x + l.dx_px * un.u, p.y + l.dy_px * un.u};
-        Placed best{at(want.x, want.y), std::numeric_limits<double>::infinity()};
+        const Vec2 want{p.x() + l.dx_px * un.u, p.y() + l.dy_px * un.u};
+        Placed best{at(want.x(), want.y()), std::numeric_limits<double>::infinity()};
         const auto consider = [&](double x, double y) {
-            const double moved = std::hypot(x - want.x, y - want.y) / un.u;
+            const double moved = std::hypot(x - want.x(), y - want.y()) / un.u;
             const Box b = at(x, y);
             const double c = cost_of(b, l, o, world, moved);
             if (c < best.cost) best = {b, c};
         };
-        consider(want.x, want.y);
+        consider(want.x(), want.y());
         for (double r : {6.0, 14.0, 26.0, 44.0, 70.0, 110.0}) {
             const double d = r * un.u, e = 0.7 * d;
-            consider(p.x + d, p.y + 0.5 * (asc - desc));     // right
-            consider(p.x - d - tw, p.y + 0.5 * (asc - desc)); // left
-            consider(p.x - 0.5 * tw, p.y - d - desc);         // above
-            consider(p.x - 0.5 * tw, p.y + d + asc);          // below
-            consider(p.x + e, p.y - e - desc);                // above right
-            consider(p.x - e - tw, p.y - e - desc);           // above left
-            consider(p.x + e, p.y + e + asc);                 // below right
-            consider(p.x - e - tw, p.y + e + asc);            // below left
+            consider(p.x() + d, p.y() + 0.5 * (asc - desc));     // right
+            consider(p.x() - d - tw, p.y() + 0.5 * (asc - desc)); // left
+            consider(p.x() - 0.5 * tw, p.y() - d - desc);         // above
+            consider(p.x() - 0.5 * tw, p.y() + d + asc);          // below
+            consider(p.x() + e, p.y() - e - desc);                // above right
+            consider(p.x() - e - tw, p.y() - e - desc);           // above left
+            consider(p.x() + e, p.y() + e + asc);                 // below right
+            consider(p.x() - e - tw, p.y() + e + asc);            // below left
         }
         const Box& b = best.box;
         // A leader line when the label sits away from its point.
-        const Vec2 near{std::clamp(p.x, b.lo.x, b.hi.x), std::clamp(p.y, b.lo.y, b.hi.y)};
-        if (std::hypot(near.x - p.x, near.y - p.y) > 16 * un.u) {
+        const Vec2 near{std::clamp(p.x(), b.lo.x(), b.hi.x()), std::clamp(p.y(), b.lo.y(), b.hi.y())};
+        if (std::hypot(near.x() - p.x(), near.y() - p.y()) > 16 * un.u) {
             Rgba c = l.colour;
             c.a *= 0.7;
             set_colour(cr, c);
             cairo_set_line_width(cr, un.u);
-            cairo_move_to(cr, p.x, p.y);
-            cairo_line_to(cr, near.x, near.y);
+            cairo_move_to(cr, p.x(), p.y());
+            cairo_line_to(cr, near.x(), near.y());
             cairo_stroke(cr);
             o.lines.push_back({p, near});
         }
         // Where no clear place was near enough, a backdrop under the text keeps it legible on
         // whatever it covers (a red name on purple benches).
-        if (best.cost >= 1.0) backdrop(cr, s.theme, b.lo.x, b.lo.y, b.hi.x - b.lo.x, b.hi.y - b.lo.y, 0.85);
-        halo_text(cr, s.theme.font, size, b.lo.x + pad, b.hi.y - desc - pad, l.text, l.colour, s.theme.background,
+        if (best.cost >= 1.0) backdrop(cr, s.theme, b.lo.x(), b.lo.y(), b.hi.x() - b.lo.x(), b.hi.y() - b.lo.y(), 0.85);
+        halo_text(cr, s.theme.font, size, b.lo.x() + pad, b.hi.y() - desc - pad, l.text, l.colour, s.theme.background,
                   3.0 * un.ut);
         o.boxes.push_back(b);
     }

@@ -37,7 +37,7 @@ void draw_overlays(cairo_t* cr, const Scene& s, const View& v, double u) {
         // With an arrowhead the line stops inside the head, so its square end cannot poke out
         // beside the tip.
         const double head = (4 + 2.5 * pl.width_px) * u;
-        Vec2 tip{}, dir{};
+        Vec2 tip = Vec2::Zero(), dir = Vec2::Zero();
         const bool arrow = pl.arrow && last >= 1 && norm(v.px(pl.points[last]) - v.px(pl.points[last - 1])) > 0;
         if (arrow) {
             tip = v.px(pl.points[last]);
@@ -48,14 +48,14 @@ void draw_overlays(cairo_t* cr, const Scene& s, const View& v, double u) {
         if (arrow) pts[last] = tip - 0.7 * head * dir;
         if (std::all_of(pts.begin(), pts.end(), [&](Vec2 p) { return v.tame.holds(p); })) {
             for (std::size_t i = 0; i <= last; ++i) {
-                if (i == 0) cairo_move_to(cr, pts[i].x, pts[i].y);
-                else cairo_line_to(cr, pts[i].x, pts[i].y);
+                if (i == 0) cairo_move_to(cr, pts[i].x(), pts[i].y());
+                else cairo_line_to(cr, pts[i].x(), pts[i].y());
             }
             if (pl.closed) cairo_close_path(cr);
         } else {
             for (const auto& piece : clip_polyline(pts, pl.closed, v.cut)) {
-                cairo_move_to(cr, piece[0].x, piece[0].y);
-                for (std::size_t i = 1; i < piece.size(); ++i) cairo_line_to(cr, piece[i].x, piece[i].y);
+                cairo_move_to(cr, piece[0].x(), piece[0].y());
+                for (std::size_t i = 1; i < piece.size(); ++i) cairo_line_to(cr, piece[i].x(), piece[i].y());
             }
         }
         set_colour(cr, pl.colour);
@@ -65,9 +65,9 @@ void draw_overlays(cairo_t* cr, const Scene& s, const View& v, double u) {
         if (arrow && !off_picture(v, tip, head)) {
             const Vec2 n = perp(dir);
             const Vec2 a = tip - head * dir + 0.45 * head * n, b = tip - head * dir - 0.45 * head * n;
-            cairo_move_to(cr, tip.x, tip.y);
-            cairo_line_to(cr, a.x, a.y);
-            cairo_line_to(cr, b.x, b.y);
+            cairo_move_to(cr, tip.x(), tip.y());
+            cairo_line_to(cr, a.x(), a.y());
+            cairo_line_to(cr, b.x(), b.y());
             cairo_close_path(cr);
             cairo_fill(cr);
         }

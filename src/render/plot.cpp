@@ -47,8 +47,8 @@ struct Range {
 // Data box: the given limits, else the data's range padded by 4 % (a flat series gets +-1).
 void data_ranges(const Plot& p, Range& xr, Range& yr) {
     for (const auto& s : p.series)
-        for (Vec2 q : s.points) xr.add(q.x), yr.add(q.y);
-    for (const auto& l : p.labels) xr.add(l.at.x), yr.add(l.at.y);
+        for (Vec2 q : s.points) xr.add(q.x()), yr.add(q.y());
+    for (const auto& l : p.labels) xr.add(l.at.x()), yr.add(l.at.y());
     for (const auto& r : p.ref_lines) (r.vertical ? xr : yr).add(r.value);
     auto finish = [](Range& r, std::optional<double> lo, std::optional<double> hi) {
         if (r.empty()) r = {0, 1};
@@ -91,12 +91,12 @@ void draw_series(cairo_t* cr, const Frame2& f, const PlotSeries& s, double u) {
     if (s.line && s.points.size() > 1) {
         bool pen = false;
         for (Vec2 q : s.points) {
-            if (!std::isfinite(q.x) || !std::isfinite(q.y)) {
+            if (!std::isfinite(q.x()) || !std::isfinite(q.y())) {
                 pen = false;
                 continue;
             }
-            if (pen) cairo_line_to(cr, f.px(q.x), f.py(q.y));
-            else cairo_move_to(cr, f.px(q.x), f.py(q.y));
+            if (pen) cairo_line_to(cr, f.px(q.x()), f.py(q.y()));
+            else cairo_move_to(cr, f.px(q.x()), f.py(q.y()));
             pen = true;
         }
         cairo_set_line_width(cr, s.width_px * u);
@@ -107,9 +107,9 @@ void draw_series(cairo_t* cr, const Frame2& f, const PlotSeries& s, double u) {
     }
     if (s.markers) {
         for (Vec2 q : s.points) {
-            if (!std::isfinite(q.y)) continue;
+            if (!std::isfinite(q.y())) continue;
             cairo_new_sub_path(cr);
-            cairo_arc(cr, f.px(q.x), f.py(q.y), s.marker_px * u, 0, 2 * std::numbers::pi);
+            cairo_arc(cr, f.px(q.x()), f.py(q.y()), s.marker_px * u, 0, 2 * std::numbers::pi);
         }
         cairo_fill(cr);
     }
@@ -230,7 +230,7 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
     }
     for (const auto& s : p.series) draw_series(cr, f, s, u);
     for (const auto& l : p.labels) {
-        const double lx = f.px(l.at.x), ly = f.py(l.at.y);
+        const double lx = f.px(l.at.x()), ly = f.py(l.at.y());
         set_colour(cr, l.colour);
         if (l.dot) {
             cairo_arc(cr, lx, ly, 3.2 * u, 0, 2 * std::numbers::pi);

@@ -17,8 +17,8 @@ struct Box {
     double x0 = std::numeric_limits<double>::infinity(), y0 = x0;
     double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
     void add(Vec2 p) {
-        x0 = std::min(x0, p.x), y0 = std::min(y0, p.y);
-        x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+        x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y());
+        x1 = std::max(x1, p.x()), y1 = std::max(y1, p.y());
     }
 };
 
@@ -46,15 +46,15 @@ void place_camera(Scene& scene, const Frame& frame, const Camera& cam) {
         scene.view_centre = cam.centre;
         break;
     case Camera::Mode::follow_head:
-        scene.view_centre = frame.handles.empty() ? Vec2{} : frame.handles.front().pos;
+        scene.view_centre = frame.handles.empty() ? Vec2::Zero() : frame.handles.front().pos;
         break;
     }
     if (!(cam.extent >= kMinViewExtent && cam.extent <= kMaxViewExtent))
         throw InputError(fmt::format("camera extent {} m is not allowed: use {:g}..{:g} m", cam.extent, kMinViewExtent,
                                      kMaxViewExtent));
-    if (!(std::max(std::abs(scene.view_centre.x), std::abs(scene.view_centre.y)) <= kMaxViewCentre))
+    if (!(std::max(std::abs(scene.view_centre.x()), std::abs(scene.view_centre.y())) <= kMaxViewCentre))
         throw InputError(fmt::format("camera centre ({}, {}) is not allowed: each coordinate must be finite and "
-                                     "within {:g} m", scene.view_centre.x, scene.view_centre.y, kMaxViewCentre));
+                                     "within {:g} m", scene.view_centre.x(), scene.view_centre.y(), kMaxViewCentre));
     scene.view_width = scene.view_height = cam.extent;
 }
 
@@ -92,7 +92,7 @@ void add_guides(Scene& scene, const Simulation& sim, const Frame& frame) {
     const BenchSpec& spec = sim.scenario().bench;
     double chain_length = 0;
     for (int k = 1; k <= spec.bench_count; ++k) chain_length += spec.link_length(k);
-    const Vec2 tail = frame.handles.empty() ? Vec2{} : frame.handles.back().pos;
+    const Vec2 tail = frame.handles.empty() ? Vec2::Zero() : frame.handles.back().pos;
     const double tail_arc = frame.handles.empty() ? frame.head_arc : path.arc(frame.handles.back().place);
     // Out past the tail by one more turn, and on ahead of the head by a dragon's length (to the
     // centre on the plain spiral), so the guide frames the dragon.

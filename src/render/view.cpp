@@ -14,8 +14,8 @@ constexpr double arc_tolerance = 0.1;
 
 void polygon_path(cairo_t* cr, const std::vector<Vec2>& pts) {
     if (pts.empty()) return;
-    cairo_move_to(cr, pts[0].x, pts[0].y);
-    for (std::size_t i = 1; i < pts.size(); ++i) cairo_line_to(cr, pts[i].x, pts[i].y);
+    cairo_move_to(cr, pts[0].x(), pts[0].y());
+    for (std::size_t i = 1; i < pts.size(); ++i) cairo_line_to(cr, pts[i].x(), pts[i].y());
     cairo_close_path(cr);
 }
 
@@ -36,7 +36,7 @@ void circle_path(cairo_t* cr, const View& v, Vec2 p, double r) {
     if (off_picture(v, p, r)) return;
     if (tame_circle(v, p, r)) {
         cairo_new_sub_path(cr);
-        cairo_arc(cr, p.x, p.y, r, 0, 2 * std::numbers::pi);
+        cairo_arc(cr, p.x(), p.y(), r, 0, 2 * std::numbers::pi);
     } else {
         polygon_path(cr, disk_in_box(p, r, v.cut, arc_tolerance));
     }
@@ -47,12 +47,12 @@ void ring_path(cairo_t* cr, const View& v, Vec2 p, double r) {
     if (off_picture(v, p, r)) return;
     if (tame_circle(v, p, r)) {
         cairo_new_sub_path(cr);
-        cairo_arc(cr, p.x, p.y, r, 0, 2 * std::numbers::pi);
+        cairo_arc(cr, p.x(), p.y(), r, 0, 2 * std::numbers::pi);
         return;
     }
     for (const auto& piece : circle_in_box(p, r, v.cut, arc_tolerance)) {
-        cairo_move_to(cr, piece[0].x, piece[0].y);
-        for (std::size_t i = 1; i < piece.size(); ++i) cairo_line_to(cr, piece[i].x, piece[i].y);
+        cairo_move_to(cr, piece[0].x(), piece[0].y());
+        for (std::size_t i = 1; i < piece.size(); ++i) cairo_line_to(cr, piece[i].x(), piece[i].y());
     }
 }
 

@@ -17,7 +17,7 @@ namespace dragon::render {
 struct View {
     double cx, cy, scale, ox, oy;
     Box tame, cut;
-    Vec2 px(Vec2 p) const { return {ox + (p.x - cx) * scale, oy - (p.y - cy) * scale}; }
+    Vec2 px(Vec2 p) const { return {ox + (p.x() - cx) * scale, oy - (p.y() - cy) * scale}; }
 };
 
 void polygon_path(cairo_t* cr, const std::vector<Vec2>& pts);

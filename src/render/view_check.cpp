@@ -11,17 +11,17 @@
 namespace dragon {
 
 namespace {
-double radius(Vec2 c) { return std::hypot(c.x, c.y); }
+double radius(Vec2 c) { return std::hypot(c.x(), c.y()); }
 }  // namespace
 
 ViewError check_view(Vec2 centre, double view_width, double view_height, int width_px, int height_px) {
-    if (!std::isfinite(centre.x) || !std::isfinite(centre.y) || !std::isfinite(view_width) ||
+    if (!std::isfinite(centre.x()) || !std::isfinite(centre.y()) || !std::isfinite(view_width) ||
         !std::isfinite(view_height))
         return ViewError::not_finite;
     const double extent = std::max(view_width, view_height);
     if (!(std::min(view_width, view_height) > 0) || extent < kMinViewExtent) return ViewError::too_narrow;
     if (extent > kMaxViewExtent) return ViewError::too_wide;
-    if (std::max(std::abs(centre.x), std::abs(centre.y)) > kMaxViewCentre) return ViewError::too_far;
+    if (std::max(std::abs(centre.x()), std::abs(centre.y())) > kMaxViewCentre) return ViewError::too_far;
     // draw() fits the view inside the picture: the pixel is the larger of the two ratios.
     const double pixel = std::max(view_width / std::max(width_px, 1), view_height / std::max(height_px, 1));
     if (pixel < kMinPixelOverRadius * radius(centre)) return ViewError::too_fine;
@@ -34,7 +34,7 @@ double narrowest_view(Vec2 centre, int width_px, int height_px) {
 
 void require_drawable(const Scene& s, int w, int h) {
     const Vec2 c = s.view_centre;
-    const std::string view = fmt::format("a view {:g} x {:g} m about ({:g}, {:g})", s.view_width, s.view_height, c.x, c.y);
+    const std::string view = fmt::format("a view {:g} x {:g} m about ({:g}, {:g})", s.view_width, s.view_height, c.x(), c.y());
     switch (check_view(c, s.view_width, s.view_height, w, h)) {
     case ViewError::none: return;
     case ViewError::not_finite:

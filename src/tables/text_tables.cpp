@@ -40,8 +40,8 @@ bool put_csv(const std::vector<Frame>& frames, std::FILE* f, int digits) {
         const std::string t = format_time(fr.time);
         for (size_t i = 0; i < fr.handles.size(); ++i) {
             const Handle& h = fr.handles[i];
-            fmt::format_to(std::back_inserter(buf), "{},{},{},{},{}\n", t, i, format_fixed(h.pos.x, digits),
-                           format_fixed(h.pos.y, digits), format_fixed(h.speed, digits));
+            fmt::format_to(std::back_inserter(buf), "{},{},{},{},{}\n", t, i, format_fixed(h.pos.x(), digits),
+                           format_fixed(h.pos.y(), digits), format_fixed(h.speed, digits));
         }
         if (buf.size() > (1u << 20) && !flush_to(buf, f)) return false;
     }
@@ -90,9 +90,9 @@ void write_json(const std::vector<Frame>& frames, const std::string& path, int d
                 put("{}{}", i ? ", " : "", format_fixed(value(fr.handles[i]), digits));
         };
         put("  {{\"t\": {}, \"x\": [", format_time(fr.time));
-        list([](const Handle& h) { return h.pos.x; });
+        list([](const Handle& h) { return h.pos.x(); });
         put("], \"y\": [");
-        list([](const Handle& h) { return h.pos.y; });
+        list([](const Handle& h) { return h.pos.y(); });
         put("], \"speed\": [");
         list([](const Handle& h) { return h.speed; });
         put("]}}{}\n", k + 1 < frames.size() ? "," : "");

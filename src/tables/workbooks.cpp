@@ -173,11 +173,11 @@ void write_result_xlsx(const std::vector<Frame>& frames, AtomicFile& out) {
         put(worksheet_write_string(pos, x_row, 0, (label + "x (m)").c_str(), nullptr), out, x_row, 0);
         for (size_t k = 0; k < frames.size(); ++k)
             put(worksheet_write_number(pos, x_row, static_cast<lxw_col_t>(k + 1),
-                                   round6(frames[k].handles[static_cast<size_t>(i)].pos.x), nullptr), out, x_row, static_cast<lxw_col_t>(k + 1));
+                                   round6(frames[k].handles[static_cast<size_t>(i)].pos.x()), nullptr), out, x_row, static_cast<lxw_col_t>(k + 1));
         put(worksheet_write_string(pos, y_row, 0, (label + "y (m)").c_str(), nullptr), out, y_row, 0);
         for (size_t k = 0; k < frames.size(); ++k)
             put(worksheet_write_number(pos, y_row, static_cast<lxw_col_t>(k + 1),
-                                   round6(frames[k].handles[static_cast<size_t>(i)].pos.y), nullptr), out, y_row, static_cast<lxw_col_t>(k + 1));
+                                   round6(frames[k].handles[static_cast<size_t>(i)].pos.y()), nullptr), out, y_row, static_cast<lxw_col_t>(k + 1));
         // The template has two spaces before "(m/s)" for body and tail rows, one for the head
         // and the tail's rear handle.
         const bool one_space = (i == 0 || i == n - 1);
@@ -200,8 +200,8 @@ void write_result2_xlsx(const Frame& frame, AtomicFile& out) {
         const Handle& h = frame.handles[static_cast<size_t>(i)];
         const auto row = static_cast<lxw_row_t>(1 + i);
         put(worksheet_write_string(ws, row, 0, handle_label(i, n).c_str(), nullptr), out, row, 0);
-        put(worksheet_write_number(ws, row, 1, round6(h.pos.x), nullptr), out, row, 1);
-        put(worksheet_write_number(ws, row, 2, round6(h.pos.y), nullptr), out, row, 2);
+        put(worksheet_write_number(ws, row, 1, round6(h.pos.x()), nullptr), out, row, 1);
+        put(worksheet_write_number(ws, row, 2, round6(h.pos.y()), nullptr), out, row, 2);
         put(worksheet_write_number(ws, row, 3, round6(h.speed), nullptr), out, row, 3);
     }
     close_workbook(std::move(wb), out);

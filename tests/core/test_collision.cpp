@@ -61,7 +61,7 @@ double poly_distance(const Poly& a, const Poly& b) {
     for (int pass = 0; pass < 2; ++pass) {
         const Poly& p = pass ? b : a;
         const Poly& q = pass ? a : b;
-        for (const Vec2 v : p)
+        for (const Vec2& v : p)
             for (size_t k = 0; k < q.size(); ++k) d = std::min(d, point_segment(v, q[k], q[(k + 1) % q.size()]));
     }
     return d;
@@ -140,8 +140,8 @@ TEST(Separation, WitnessPointIsWhereTheBoardsMeet) {
             EXPECT_NEAR(point_polygon(s.point, pa), s.distance, 1e-12) << "pair " << k;
         } else if (s.distance < -1e-9) {
             bool corner_inside = false;
-            for (const Vec2 c : pa) corner_inside |= point_polygon(c, pb) == 0.0;
-            for (const Vec2 c : pb) corner_inside |= point_polygon(c, pa) == 0.0;
+            for (const Vec2& c : pa) corner_inside |= point_polygon(c, pb) == 0.0;
+            for (const Vec2& c : pb) corner_inside |= point_polygon(c, pa) == 0.0;
             if (!corner_inside) continue;
             ++with_corner_inside;
             EXPECT_NEAR(point_polygon(s.point, pa), 0.0, 1e-12) << "pair " << k;
@@ -184,7 +184,7 @@ Frame chain_on_circle(double radius, int benches) {
     Frame f;
     for (int k = 0; k <= benches; ++k) {
         const double a = -step * k;
-        f.handles.push_back({{radius * std::cos(a), radius * std::sin(a)}, {}, 1.0, {}});
+        f.handles.push_back({{radius * std::cos(a), radius * std::sin(a)}, Vec2::Zero(), 1.0, {}});
     }
     for (int k = 1; k <= benches; ++k)
         f.benches.push_back(bench_rect(spec, k, f.handles[static_cast<size_t>(k - 1)].pos, f.handles[static_cast<size_t>(k)].pos));
@@ -255,19 +255,19 @@ TEST(ContactPoint, TheCornerThatTouches) {
     const Vec2 corner{0.3, 0.25};
     const Vec2 centre = corner + 1.0 * axis + 0.25 * perp(axis);
     const Rect b{centre, axis, 1.0, 0.25};
-    ASSERT_NEAR(std::min({corners(b).p[0].y, corners(b).p[1].y, corners(b).p[2].y, corners(b).p[3].y}), 0.25, 1e-12);
+    ASSERT_NEAR(std::min({corners(b).p[0].y(), corners(b).p[1].y(), corners(b).p[2].y(), corners(b).p[3].y()}), 0.25, 1e-12);
     const Vec2 p = contact_point(a, b);
-    EXPECT_NEAR(p.x, 0.3, 1e-12);
-    EXPECT_NEAR(p.y, 0.25, 1e-12);
+    EXPECT_NEAR(p.x(), 0.3, 1e-12);
+    EXPECT_NEAR(p.y(), 0.25, 1e-12);
     EXPECT_NEAR(point_to_rect(p, a).distance, 0.0, 1e-12);
     // The same from the other side: the point does not depend on the order.
     const Vec2 q = contact_point(b, a);
-    EXPECT_EQ(q.x, p.x);
-    EXPECT_EQ(q.y, p.y);
+    EXPECT_EQ(q.x(), p.x());
+    EXPECT_EQ(q.y(), p.y());
     // Apart: the corner nearest the other board, lifted with b.
     Rect lifted = b;
     lifted.centre = b.centre + Vec2{0.0, 0.1};
     const Vec2 r = contact_point(a, lifted);
-    EXPECT_NEAR(r.y, 0.35, 1e-12);
+    EXPECT_NEAR(r.y(), 0.35, 1e-12);
     EXPECT_NEAR(point_to_rect(r, a).distance, 0.1, 1e-12);
 }

@@ -99,7 +99,7 @@ TEST(Executor, AnswersDoNotDependOnTheExecutor) {
         ASSERT_EQ(a.size(), b.size());
         for (std::size_t k = 0; k < a.size(); ++k)
             for (std::size_t i = 0; i < a[k].handles.size(); ++i) {
-                ASSERT_EQ(a[k].handles[i].pos.x, b[k].handles[i].pos.x);
+                ASSERT_EQ(a[k].handles[i].pos.x(), b[k].handles[i].pos.x());
                 ASSERT_EQ(a[k].handles[i].speed, b[k].handles[i].speed);
             }
     }

@@ -29,7 +29,7 @@ const Published kAtZero[] = {
 
 // Angle of p reduced to be within pi of theta.
 double unwrap_to(Vec2 p, double theta) {
-    double a = std::atan2(p.y, p.x);
+    double a = std::atan2(p.y(), p.x());
     return a + kTwoPi * std::round((theta - a) / kTwoPi);
 }
 
@@ -57,8 +57,8 @@ TEST(Q1, PublishedValuesAtZero) {
     ASSERT_EQ(f.handles.size(), 224u);
     for (const Published& p : kAtZero) {
         const Handle& h = f.handles[static_cast<size_t>(p.handle)];
-        EXPECT_NEAR(h.pos.x, p.x, 5e-7) << "handle " << p.handle;
-        EXPECT_NEAR(h.pos.y, p.y, 5e-7) << "handle " << p.handle;
+        EXPECT_NEAR(h.pos.x(), p.x, 5e-7) << "handle " << p.handle;
+        EXPECT_NEAR(h.pos.y(), p.y, 5e-7) << "handle " << p.handle;
         EXPECT_NEAR(h.speed, p.speed, 5e-7) << "handle " << p.handle;
     }
 }
@@ -66,8 +66,8 @@ TEST(Q1, PublishedValuesAtZero) {
 TEST(Q1, PublishedHeadAt300) {
     const Simulation sim(Scenario{});
     const Frame f = sim.frame(300.0);
-    EXPECT_NEAR(f.handles[0].pos.x, 4.420274, 5e-7);
-    EXPECT_NEAR(f.handles[0].pos.y, 2.320429, 5e-7);
+    EXPECT_NEAR(f.handles[0].pos.x(), 4.420274, 5e-7);
+    EXPECT_NEAR(f.handles[0].pos.y(), 2.320429, 5e-7);
 }
 
 TEST(Spiral, ArcLengthRoundTrips) {
@@ -228,7 +228,7 @@ TEST(Chain, DeterministicFinalState) {
         const Frame f = Simulation(Scenario{}).frame(412.0);
         double acc = 0.0;
         for (size_t i = 0; i < f.handles.size(); ++i)
-            acc += (static_cast<double>(i) + 1.0) * (f.handles[i].pos.x + 3.0 * f.handles[i].pos.y + 7.0 * f.handles[i].speed);
+            acc += (static_cast<double>(i) + 1.0) * (f.handles[i].pos.x() + 3.0 * f.handles[i].pos.y() + 7.0 * f.handles[i].speed);
         return acc;
     };
     EXPECT_EQ(digest(), digest());

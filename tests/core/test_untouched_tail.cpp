@@ -57,6 +57,13 @@ double tail_clearance(const Frame& f, int watched) {
     return best;
 }
 
+// The search with nothing left out, to check the shortcut against.
+ContactSearchOptions watch_every_bench() {
+    ContactSearchOptions o;
+    o.skip_untouched_tail = false;
+    return o;
+}
+
 }  // namespace
 
 TEST(UntouchedTail, EveryBoardPointLiesWithinItsBenchsReach) {
@@ -143,7 +150,7 @@ TEST(UntouchedTail, TheTailStaysApartOverEveryStretch) {
         double end = c.to_boundary ? boundary_time(sim) : sim.valid_end();
         end = std::min(end, sim.valid_end());
         if (!c.to_boundary) {
-            if (const auto hit = first_contact(sim, 0.0, end, {.skip_untouched_tail = false})) end = hit->time;
+            if (const auto hit = first_contact(sim, 0.0, end, watch_every_bench())) end = hit->time;
         }
         const int n = c.s.bench.bench_count;
         for (double a = 0.0; a < end; a += 10.0) {
@@ -203,7 +210,7 @@ TEST(UntouchedTail, TheSearchFindsWhatWatchingEveryBenchFinds) {
         const Simulation sim(s);
         const double end = end_kind < 0.0 ? sim.valid_end() : std::min(sim.valid_end(), boundary_time(sim));
         const auto quick = first_contact(sim, 0.0, end);
-        const auto every = first_contact(sim, 0.0, end, {.skip_untouched_tail = false});
+        const auto every = first_contact(sim, 0.0, end, watch_every_bench());
         const std::string name = "pitch " + std::to_string(s.path.pitch) + ", " + std::to_string(s.bench.bench_count) +
                                  " benches of width " + std::to_string(s.bench.width);
         ASSERT_EQ(quick.has_value(), every.has_value()) << name;
@@ -254,8 +261,8 @@ TEST(UntouchedTail, LeadingBenchesAreTheWholeChainsFirstOnes) {
         ASSERT_EQ(part.handles.size(), 31u);
         ASSERT_EQ(part.benches.size(), 30u);
         for (size_t k = 0; k < part.handles.size(); ++k) {
-            EXPECT_EQ(part.handles[k].pos.x, all.handles[k].pos.x);
-            EXPECT_EQ(part.handles[k].pos.y, all.handles[k].pos.y);
+            EXPECT_EQ(part.handles[k].pos.x(), all.handles[k].pos.x());
+            EXPECT_EQ(part.handles[k].pos.y(), all.handles[k].pos.y());
             EXPECT_EQ(part.handles[k].speed, all.handles[k].speed);
         }
     }

@@ -84,7 +84,7 @@ std::string describe(const Scenario& s) {
     return text;
 }
 
-bool finite(Vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+bool finite(Vec2 v) { return std::isfinite(v.x()) && std::isfinite(v.y()); }
 
 // How well a handle's coordinates can be known: a few ulps of its distance from the centre, times
 // the size of its path parameter (on a spiral the angle theta: cos and sin of theta carry
@@ -102,8 +102,8 @@ void check_frame(const Simulation& sim, const Frame& f) {
     for (size_t i = 0; i < f.handles.size(); ++i) {
         const Handle& h = f.handles[i];
         FUZZ_CHECK(finite(h.pos) && finite(h.tangent) && std::isfinite(h.speed),
-                   "handle %zu at (%g, %g), tangent (%g, %g), speed %g", i, h.pos.x, h.pos.y,
-                   h.tangent.x, h.tangent.y, h.speed);
+                   "handle %zu at (%g, %g), tangent (%g, %g), speed %g", i, h.pos.x(), h.pos.y(),
+                   h.tangent.x(), h.tangent.y(), h.speed);
         FUZZ_CHECK(std::abs(norm(h.tangent) - 1.0) < 1e-9, "handle %zu tangent length %.17g", i, norm(h.tangent));
         const Located on = path.at(h.place);
         // On the plain spiral each handle's cos and sin come from the one before by the angle-sum
@@ -194,9 +194,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const Rect ra = consume_rect(p), rb = consume_rect(p);
     char text[400];
     std::snprintf(text, sizeof text, "rectangles centre (%.17g, %.17g) axis (%.17g, %.17g) half %.17g x %.17g "
-                  "and centre (%.17g, %.17g) axis (%.17g, %.17g) half %.17g x %.17g", ra.centre.x, ra.centre.y,
-                  ra.axis.x, ra.axis.y, ra.half_length, ra.half_width, rb.centre.x, rb.centre.y, rb.axis.x,
-                  rb.axis.y, rb.half_length, rb.half_width);
+                  "and centre (%.17g, %.17g) axis (%.17g, %.17g) half %.17g x %.17g", ra.centre.x(), ra.centre.y(),
+                  ra.axis.x(), ra.axis.y(), ra.half_length, ra.half_width, rb.centre.x(), rb.centre.y(), rb.axis.x(),
+                  rb.axis.y(), rb.half_length, rb.half_width);
     fuzz_context() = text;
     check_separation(ra, rb);
     fuzz_context() = describe(s);

@@ -46,9 +46,9 @@ void write_file(const std::string& path, const std::string& text) {
 void check_frame(const Frame& f, const Scenario& s) {
     FUZZ_CHECK(f.handles.size() == static_cast<size_t>(s.bench.handle_count()), "handle count");
     for (const Handle& h : f.handles) {
-        FUZZ_CHECK(std::isfinite(h.pos.x) && std::isfinite(h.pos.y) && std::isfinite(h.speed),
-                   "handle at (%g, %g) speed %g", h.pos.x, h.pos.y, h.speed);
-        FUZZ_CHECK(std::isfinite(h.tangent.x) && std::isfinite(h.tangent.y), "tangent");
+        FUZZ_CHECK(std::isfinite(h.pos.x()) && std::isfinite(h.pos.y()) && std::isfinite(h.speed),
+                   "handle at (%g, %g) speed %g", h.pos.x(), h.pos.y(), h.speed);
+        FUZZ_CHECK(std::isfinite(h.tangent.x()) && std::isfinite(h.tangent.y()), "tangent");
     }
 }
 

@@ -41,9 +41,9 @@ TEST(Clip, PolylineKeepsOnlyThePiecesInside) {
     // In, out across the top, back in: two pieces, each ending on the box's edge.
     const auto pieces = render::clip_polyline({{2, 5}, {5, 15}, {8, 5}}, false, box);
     ASSERT_EQ(pieces.size(), 2u);
-    EXPECT_NEAR(pieces[0].back().y, 10.0, 1e-12);
-    EXPECT_NEAR(pieces[1].front().y, 10.0, 1e-12);
-    EXPECT_NEAR(pieces[1].back().x, 8.0, 1e-12);
+    EXPECT_NEAR(pieces[0].back().y(), 10.0, 1e-12);
+    EXPECT_NEAR(pieces[1].front().y(), 10.0, 1e-12);
+    EXPECT_NEAR(pieces[1].back().x(), 8.0, 1e-12);
     // A run inside stays one piece with all its points.
     const auto one = render::clip_polyline({{1, 1}, {2, 2}, {3, 1}, {4, 2}}, false, box);
     ASSERT_EQ(one.size(), 1u);
@@ -60,7 +60,7 @@ TEST(Clip, HugeDiskCrossingTheBoxIsCutExactly) {
     ASSERT_FALSE(disk.empty());
     EXPECT_LT(disk.size(), 200u);
     for (Vec2 p : disk) EXPECT_TRUE(inside(box, p));
-    // Below the circle y = c.y + sqrt(r^2 - (x - 50)^2) ~ 50 - (x - 50)^2 / (2 r), over 0..100.
+    // Below the circle y = c.y() + sqrt(r^2 - (x - 50)^2) ~ 50 - (x - 50)^2 / (2 r), over 0..100.
     const double exact = 100 * 50 - (2 * std::pow(50.0, 3) / 3) / (2 * r);
     EXPECT_NEAR(area(disk), exact, 0.1 * 100);  // the tolerance along one 100 px edge at most
     const auto ring = render::circle_in_box(c, r, box, 0.1);
@@ -106,7 +106,7 @@ TEST(Guide, ArcRangesInATinyBoxCoverItAndCostLittle) {
     const CountingPath path(spiral);
     const double box_half = 5e-4;
     const Vec2 centre{0.55 * 15, 0.0};
-    const Box box{{centre.x - box_half, centre.y - box_half}, {centre.x + box_half, centre.y + box_half}};
+    const Box box{{centre.x() - box_half, centre.y() - box_half}, {centre.x() + box_half, centre.y() + box_half}};
     const double s0 = -spiral.length_to(2 * std::numbers::pi * 20), s1 = spiral.s_max();
     const double resolution = 2 * box_half / 40;
     const auto ranges = render::arcs_in_box(path, s0, s1, box, resolution);

@@ -95,7 +95,7 @@ TEST(CloseUp, CamerasOutsideTheDrawableViewsAreInputErrors) {
                               Camera::at({1e9, 0}, 1), Camera::follow(INFINITY)}) {
         SceneOptions o;
         o.camera = cam;
-        EXPECT_THROW(make_scene(sim, f, o), InputError) << cam.centre.x << " " << cam.extent;
+        EXPECT_THROW(make_scene(sim, f, o), InputError) << cam.centre.x() << " " << cam.extent;
     }
     // Drawable alone, but not at 1600 px 8.8 m out: render refuses it before any file.
     SceneOptions o;

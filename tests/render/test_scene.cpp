@@ -30,8 +30,8 @@ TEST(Scene, FitCameraHoldsEveryCorner) {
     const Scene s = make_scene(sim, f, {});
     for (const Rect& r : f.benches)
         for (Vec2 p : corners(r).p) {
-            EXPECT_LE(std::abs(p.x - s.view_centre.x), 0.5 * s.view_width);
-            EXPECT_LE(std::abs(p.y - s.view_centre.y), 0.5 * s.view_height);
+            EXPECT_LE(std::abs(p.x() - s.view_centre.x()), 0.5 * s.view_width);
+            EXPECT_LE(std::abs(p.y() - s.view_centre.y()), 0.5 * s.view_height);
         }
 }
 
@@ -44,7 +44,7 @@ TEST(Scene, CollisionMarkOverridesTheStyleOfBothBenches) {
     const Scene s = make_scene(sim, f, o);
     EXPECT_EQ(s.benches[2].style, Scene::Style::collision);
     EXPECT_EQ(s.benches[19].style, Scene::Style::collision);
-    EXPECT_DOUBLE_EQ(s.view_centre.x, f.handles[0].pos.x);
+    EXPECT_DOUBLE_EQ(s.view_centre.x(), f.handles[0].pos.x());
     EXPECT_DOUBLE_EQ(s.view_width, 5.0);
 }
 
@@ -64,7 +64,7 @@ TEST(Scene, GuideBeziersFollowThePathWithinAMillimetre) {
         // proxy (the spiral's rings are 0.55 m apart).
         const double bb = 0.55 / (2 * std::acos(-1.0));
         const double r = norm(mid);
-        double th = std::atan2(mid.y, mid.x);
+        double th = std::atan2(mid.y(), mid.x());
         if (th < 0) th += 2 * std::acos(-1.0);
         double best = 1e9;
         for (int k = 0; k < 40; ++k) best = std::min(best, std::abs(r - bb * (th + 2 * std::acos(-1.0) * k)));

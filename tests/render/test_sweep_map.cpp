@@ -29,7 +29,7 @@ TEST(Contours, OnAPlaneTheyLieExactlyWhereItHasTheLevel) {
         const auto lines = render::contour_lines(xs, ys, z, level);
         ASSERT_EQ(lines.size(), 1u) << level;  // one open line across the grid
         EXPECT_GE(lines[0].size(), 2u);
-        for (const Vec2& p : lines[0]) EXPECT_NEAR(p.x + 2 * p.y, level, 1e-12) << level;
+        for (const Vec2& p : lines[0]) EXPECT_NEAR(p.x() + 2 * p.y(), level, 1e-12) << level;
     }
     EXPECT_TRUE(render::contour_lines(xs, ys, z, -1.0).empty());
     EXPECT_TRUE(render::contour_lines(xs, ys, z, 9.0).empty());
@@ -43,10 +43,10 @@ TEST(Contours, AroundABowlOneClosedRingAndNoneThroughMissingValues) {
     auto lines = render::contour_lines(xs, ys, z, 0.5);
     ASSERT_EQ(lines.size(), 1u);
     const std::vector<Vec2>& ring = lines[0];
-    EXPECT_EQ(ring.front().x, ring.back().x);
-    EXPECT_EQ(ring.front().y, ring.back().y);
+    EXPECT_EQ(ring.front().x(), ring.back().x());
+    EXPECT_EQ(ring.front().y(), ring.back().y());
     // Linear between samples 0.05 apart: within the interpolation's error of the true circle.
-    for (const Vec2& p : ring) EXPECT_NEAR(std::hypot(p.x, p.y), std::sqrt(0.5), 2e-3);
+    for (const Vec2& p : ring) EXPECT_NEAR(std::hypot(p.x(), p.y()), std::sqrt(0.5), 2e-3);
     // A missing value on the ring's way cuts it open where its four squares are.
     z[30 * 41 + 20] = NAN;  // (0.5, 0): near radius 0.707
     z[20 * 41 + 34] = NAN;  // (0, 0.7)
@@ -56,7 +56,7 @@ TEST(Contours, AroundABowlOneClosedRingAndNoneThroughMissingValues) {
     lines = render::contour_lines(xs, ys, z, 0.5);
     EXPECT_EQ(lines.size(), 2u);
     for (const auto& l : lines)
-        for (const Vec2& p : l) EXPECT_GT(std::hypot(p.x, p.y - 0.7) + std::hypot(p.x - 0.7, p.y), 0.04);
+        for (const Vec2& p : l) EXPECT_GT(std::hypot(p.x(), p.y() - 0.7) + std::hypot(p.x() - 0.7, p.y()), 0.04);
 }
 
 TEST(GoldenMap, SmallHeatMapWithEveryKindOfCell) {

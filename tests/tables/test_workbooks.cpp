@@ -32,8 +32,8 @@ void sample_values(const std::vector<Frame>& frames, const fs::path& csv) {
         const int col = static_cast<int>(rng() % frames.size());
         const int h = static_cast<int>(rng() % static_cast<unsigned>(n));
         const Handle& hd = frames[static_cast<size_t>(col)].handles[static_cast<size_t>(h)];
-        out << fmt::format("位置,{},{},{:.6f}\n", 2 + 2 * h, col + 2, round6(hd.pos.x));
-        out << fmt::format("位置,{},{},{:.6f}\n", 3 + 2 * h, col + 2, round6(hd.pos.y));
+        out << fmt::format("位置,{},{},{:.6f}\n", 2 + 2 * h, col + 2, round6(hd.pos.x()));
+        out << fmt::format("位置,{},{},{:.6f}\n", 3 + 2 * h, col + 2, round6(hd.pos.y()));
         out << fmt::format("速度,{},{},{:.6f}\n", 2 + h, col + 2, round6(hd.speed));
     }
 }
@@ -73,8 +73,8 @@ TEST(Workbooks, Result2MatchesTheContestTemplate) {
     write_result2_xlsx(f, out.string());
     std::ofstream v(values);
     for (size_t h = 0; h < f.handles.size(); h += 17) {
-        v << fmt::format("Sheet1,{},2,{:.6f}\n", h + 2, round6(f.handles[h].pos.x));
-        v << fmt::format("Sheet1,{},3,{:.6f}\n", h + 2, round6(f.handles[h].pos.y));
+        v << fmt::format("Sheet1,{},2,{:.6f}\n", h + 2, round6(f.handles[h].pos.x()));
+        v << fmt::format("Sheet1,{},3,{:.6f}\n", h + 2, round6(f.handles[h].pos.y()));
         v << fmt::format("Sheet1,{},4,{:.6f}\n", h + 2, round6(f.handles[h].speed));
     }
     v.close();
@@ -97,8 +97,8 @@ TEST(Tables, CsvRoundTrips) {
         ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%d,%lf,%lf,%lf", &t, &h, &x, &y, &v), 5) << line;
         const Frame& f = frames[rows / 224];
         EXPECT_DOUBLE_EQ(t, f.time);
-        EXPECT_NEAR(x, f.handles[static_cast<size_t>(h)].pos.x, 5e-7);
-        EXPECT_NEAR(y, f.handles[static_cast<size_t>(h)].pos.y, 5e-7);
+        EXPECT_NEAR(x, f.handles[static_cast<size_t>(h)].pos.x(), 5e-7);
+        EXPECT_NEAR(y, f.handles[static_cast<size_t>(h)].pos.y(), 5e-7);
         EXPECT_NEAR(v, f.handles[static_cast<size_t>(h)].speed, 5e-7);
         ++rows;
     }

@@ -132,7 +132,7 @@ TEST(Animation, ViewStaysFixedWhileTheDragonCoils) {
     const Simulation sim(Scenario{});
     const Animation anim(sim, Clip{0.0, 200.0, 50.0}, 1, SceneOptions{});
     const Scene first = anim.scene_at(0), last = anim.scene_at(anim.frame_count() - 1);
-    EXPECT_EQ(first.view_centre.x, last.view_centre.x);
+    EXPECT_EQ(first.view_centre.x(), last.view_centre.x());
     EXPECT_EQ(first.view_width, last.view_width);
 }
 

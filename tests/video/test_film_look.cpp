@@ -87,7 +87,7 @@ TEST(FilmLook, InsetOnlyForACloseView) {
     ASSERT_TRUE(close.scene_at(0).inset);
     // The inset's view is one for the clip: the same at both ends, and it holds the dragon.
     const Scene a = *close.scene_at(0).inset, b = *close.scene_at(close.frame_count() - 1).inset;
-    EXPECT_EQ(a.view_centre.x, b.view_centre.x);
+    EXPECT_EQ(a.view_centre.x(), b.view_centre.x());
     EXPECT_EQ(a.view_width, b.view_width);
     EXPECT_GT(a.view_width, 16.0);  // the dragon spans about 17.6 m at 100 s
     FilmLook none;
