@@ -114,8 +114,9 @@ void ScenarioFlags::fill(const std::string& scenario_file,
                          const std::vector<std::pair<std::string, std::string>>& values, const std::string& source) {
     if (file_.empty()) file_ = scenario_file;
     for (const auto& [name, text] : values) {
-        const auto f = std::find_if(std::begin(kFlags), std::end(kFlags),
-                                    [&](const FlagInfo& i) { return "--" + name == i.name; });
+        // Named copy: clang 14 (the fuzz build) cannot capture a structured binding.
+        const std::string flag = "--" + name;
+        const auto f = std::find_if(std::begin(kFlags), std::end(kFlags), [&](const FlagInfo& i) { return flag == i.name; });
         if (f == std::end(kFlags))
             throw InputError(fmt::format("{}: {} is not a scenario flag (use the flags' names without their dashes: "
                                          "width, body-length, ...)", source, name));
