@@ -13,7 +13,7 @@ void consider(Clearance& best, const Frame& f, int i, int j) {
     const Rect& a = f.benches[static_cast<size_t>(i)];
     const Rect& b = f.benches[static_cast<size_t>(j)];
     // The projected gap is a lower bound on the distance: skip the exact test when it cannot win.
-    if (sat_gap(a, b).gap >= best.distance) return;
+    if (projected_gap(a, b) >= best.distance) return;
     const Separation s = separation(a, b);
     if (s.distance < best.distance) best = {s.distance, i + 1, j + 1, s.axis, s.point};
 }
@@ -107,8 +107,8 @@ Clearance clearance(const Frame& f, double cutoff, BroadPhase& scratch) {
     gaps.resize(pairs.size());
     size_t seed = 0;
     for (size_t k = 0; k < pairs.size(); ++k) {
-        gaps[k] = sat_gap(f.benches[static_cast<size_t>(pairs[k].first - 1)],
-                          f.benches[static_cast<size_t>(pairs[k].second - 1)]).gap;
+        gaps[k] = projected_gap(f.benches[static_cast<size_t>(pairs[k].first - 1)],
+                                f.benches[static_cast<size_t>(pairs[k].second - 1)]);
         if (gaps[k] < gaps[seed]) seed = k;
     }
     if (!pairs.empty()) consider(best, f, pairs[seed].first - 1, pairs[seed].second - 1);

@@ -44,7 +44,7 @@ size_t screen_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pair
             ws.gaps[k] = INFINITY;
             continue;
         }
-        const double g = sat_gap(f.benches[i], f.benches[j]).gap;  // a lower bound on the distance
+        const double g = projected_gap(f.benches[i], f.benches[j]);  // a lower bound on the distance
         ws.gaps[k] = g;
         if (g < best_gap) best_gap = g, seed = k;
         // Relative velocity field of b seen from a: affine, so within a's rectangle its norm is
