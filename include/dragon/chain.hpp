@@ -36,7 +36,7 @@ void solve_chain(const Path& path, const BenchSpec& spec, double head_arc, doubl
                  Frame& out);
 
 // The rectangle of bench k (1..N) from its two handles.
-Rect bench_rect(const BenchSpec& spec, int bench, Vec2 front, Vec2 rear);
+Rect bench_rect(const BenchSpec& spec, int bench, const Vec2& front, const Vec2& rear);
 
 // The stretch of time over which the dragon follows its path (dragon/valid_motion.hpp).
 struct ValidRange {

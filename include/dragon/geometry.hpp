@@ -42,7 +42,7 @@ struct PointToRect {
     double distance;
     Vec2 nearest = Vec2::Zero();
 };
-inline PointToRect point_to_rect(Vec2 p, const Rect& r) {
+inline PointToRect point_to_rect(const Vec2& p, const Rect& r) {
     const Vec2 n = perp(r.axis);
     const Vec2 w = p - r.centre;
     const double x = dot(w, r.axis), y = dot(w, n);

@@ -68,7 +68,7 @@ struct Camera {
     double margin = 0.04; // fit_dragon: fraction of the box added on every side
 
     static Camera fit() { return {}; }
-    static Camera at(Vec2 c, double extent_m) { return {Mode::fixed, c, extent_m}; }
+    static Camera at(const Vec2& c, double extent_m) { return {Mode::fixed, c, extent_m}; }
     static Camera follow(double extent_m) { return {Mode::follow_head, Vec2::Zero(), extent_m}; }
 };
 
@@ -85,9 +85,9 @@ inline constexpr double kMinPixelOverRadius = 1e-12;  // pixel size over the vie
 enum class ViewError { none, not_finite, too_narrow, too_wide, too_far, too_fine };
 // What is wrong with a view of view_width x view_height metres about `centre`, drawn on
 // width_px x height_px pixels (the view fits inside, aspect ratio kept).
-ViewError check_view(Vec2 centre, double view_width, double view_height, int width_px, int height_px);
+ViewError check_view(const Vec2& centre, double view_width, double view_height, int width_px, int height_px);
 // The narrowest square view about `centre` that check_view takes at this size, m.
-double narrowest_view(Vec2 centre, int width_px, int height_px);
+double narrowest_view(const Vec2& centre, int width_px, int height_px);
 
 // Two benches that touch and where (from first_contact / clearance).
 struct CollisionMark {

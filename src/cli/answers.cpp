@@ -12,7 +12,7 @@ namespace dragon::cli {
 
 namespace {
 
-Json point(Vec2 p) { return {p.x(), p.y()}; }
+Json point(const Vec2& p) { return {p.x(), p.y()}; }
 
 Json rows_json(const std::vector<TurnStudyRow>& rows) {
     Json out = Json::array();

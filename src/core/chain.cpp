@@ -13,7 +13,7 @@
 
 namespace dragon {
 
-Rect bench_rect(const BenchSpec& spec, int bench, Vec2 front, Vec2 rear) {
+Rect bench_rect(const BenchSpec& spec, int bench, const Vec2& front, const Vec2& rear) {
     const Vec2 axis = normalized(front - rear);
     return {0.5 * (front + rear), axis, 0.5 * spec.board_length(bench), 0.5 * spec.width};
 }

@@ -38,7 +38,7 @@ struct PieceSample {
 // tol::max_march steps per max_step of the range: running out of it means a broken bound, a
 // bug, and throws std::logic_error rather than return a point that is not at the chord.
 template <class Eval, class Bound>
-std::optional<double> march_to_chord(Eval eval, Bound bound, Vec2 q, double chord, double u0,
+std::optional<double> march_to_chord(Eval eval, Bound bound, const Vec2& q, double chord, double u0,
                                      double dir, double u_end, double max_step) {
     const double d2 = chord * chord;
     const double allowance = tol::max_march * (1.0 + std::ceil(std::abs(u_end - u0) / max_step));

@@ -8,7 +8,7 @@ namespace dragon {
 namespace {
 
 
-CornerGap gap_of(Vec2 corner, const BenchMotion& own, const Rect& other, const BenchMotion& other_motion) {
+CornerGap gap_of(const Vec2& corner, const BenchMotion& own, const Rect& other, const BenchMotion& other_motion) {
     const PointToRect q = point_to_rect(corner, other);
     if (q.distance <= 0.0) return {0.0, 0.0};
     const Vec2 dir = (corner - q.nearest) / q.distance;

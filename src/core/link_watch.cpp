@@ -184,7 +184,7 @@ LinkCheck check_shape(const Path& path, const Handle& front, const Handle& rear,
 
 }  // namespace
 
-std::optional<Tangency> watch_tangency(const Path& path, Vec2 q, double chord, double seed, double window) {
+std::optional<Tangency> watch_tangency(const Path& path, const Vec2& q, double chord, double seed, double window) {
     const double a = std::max(path.s_min(), seed - window), b = std::min(path.s_max(), seed + window);
     if (!(b > a)) return std::nullopt;
     // f = (P - q) . T = R dR/ds: a local maximum of R is where f falls through zero.

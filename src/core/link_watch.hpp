@@ -70,6 +70,6 @@ struct Tangency {
     Vec2 point = Vec2::Zero();
     Vec2 dir = Vec2::Zero();
 };
-std::optional<Tangency> watch_tangency(const Path& path, Vec2 q, double chord, double seed, double window);
+std::optional<Tangency> watch_tangency(const Path& path, const Vec2& q, double chord, double seed, double window);
 
 }  // namespace dragon::jam

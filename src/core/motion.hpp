@@ -12,7 +12,7 @@ struct BenchMotion {
     Vec2 centre = Vec2::Zero();
     Vec2 v_centre = Vec2::Zero();
     double omega;
-    Vec2 at(Vec2 x) const { return v_centre + omega * perp(x - centre); }
+    Vec2 at(const Vec2& x) const { return v_centre + omega * perp(x - centre); }
 };
 
 // From the handles' exact velocities (speed times unit tangent). Rigidity makes both ends'

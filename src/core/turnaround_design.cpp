@@ -25,12 +25,12 @@ double sweep(double x) {
     return w;
 }
 
-double angle_of(Vec2 v) { return std::atan2(v.y(), v.x()); }
+double angle_of(const Vec2& v) { return std::atan2(v.y(), v.x()); }
 
 // Farthest distance from the origin on the arc about c of radius r that starts at angle u0 and
 // sweeps `angle` (sign = direction): |c| + r if the arc passes the direction of c, else 0
 // (the caller also counts the end points).
-double arc_reach(Vec2 c, double r, double u0, double angle) {
+double arc_reach(const Vec2& c, double r, double u0, double angle) {
     const double towards = angle_of(c);
     const double along = angle > 0.0 ? sweep(towards - u0) : sweep(u0 - towards);
     return along <= std::abs(angle) ? norm(c) + r : 0.0;

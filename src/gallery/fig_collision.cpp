@@ -20,7 +20,7 @@ namespace {
 
 double bounding_radius(const Rect& r) { return std::hypot(r.half_length, r.half_width); }
 
-Polyline segment(Vec2 a, Vec2 b, Rgba colour, double width, bool dashed = false) {
+Polyline segment(const Vec2& a, const Vec2& b, Rgba colour, double width, bool dashed = false) {
     Polyline p;
     p.points = {a, b};
     p.colour = colour;

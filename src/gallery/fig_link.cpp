@@ -15,7 +15,7 @@ namespace {
 
 // Every arc position s (on the given range) where |P(s) - centre| = d: sign changes on a fine
 // grid, then bisection.
-std::vector<Vec2> chord_roots(const Path& path, Vec2 centre, double d, double s0, double s1) {
+std::vector<Vec2> chord_roots(const Path& path, const Vec2& centre, double d, double s0, double s1) {
     std::vector<Vec2> roots;
     auto f = [&](double s) { return distance(path.at_arc(s).pos, centre) - d; };
     const double step = 0.01;
@@ -36,7 +36,7 @@ std::vector<Vec2> chord_roots(const Path& path, Vec2 centre, double d, double s0
     return roots;
 }
 
-Polyline arrow(Vec2 from, Vec2 to, Rgba colour, double width = 2.2) {
+Polyline arrow(const Vec2& from, const Vec2& to, Rgba colour, double width = 2.2) {
     Polyline p;
     p.points = {from, to};
     p.colour = colour;

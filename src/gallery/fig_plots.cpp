@@ -77,7 +77,7 @@ void s_curve_geometry(const Context& c, const std::string& path) {
     p.series.push_back({"", {d.c1, d.entry}, soft, 1.0, true, true});
     p.series.push_back({"", {d.c1, d.joint, d.c2}, soft, 1.0, true, true});
     p.series.push_back({"", {d.c2, d.exit}, soft, 1.0, true, true});
-    auto point = [&](Vec2 at, std::string text, Rgba col, double dx, double dy, double align = 0.0) {
+    auto point = [&](const Vec2& at, std::string text, Rgba col, double dx, double dy, double align = 0.0) {
         PlotLabel l{at, std::move(text), col, dx, dy, 13, true, align};
         p.labels.push_back(l);
     };

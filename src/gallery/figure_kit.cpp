@@ -14,7 +14,7 @@
 
 namespace dragon::fig {
 
-Polyline circle(Vec2 centre, double radius, Rgba colour, double width_px, bool dashed) {
+Polyline circle(const Vec2& centre, double radius, Rgba colour, double width_px, bool dashed) {
     Polyline pl;
     constexpr int n = 144;
     for (int i = 0; i < n; ++i) {
@@ -28,7 +28,7 @@ Polyline circle(Vec2 centre, double radius, Rgba colour, double width_px, bool d
     return pl;
 }
 
-Label label(Vec2 at, std::string text, Rgba colour, double size_px, double dx, double dy) {
+Label label(const Vec2& at, std::string text, Rgba colour, double size_px, double dx, double dy) {
     Label l;
     l.pos = at;
     l.text = std::move(text);

@@ -31,8 +31,8 @@ struct Context {
 };
 
 // A circle as a closed polyline (world units).
-Polyline circle(Vec2 centre, double radius, Rgba colour, double width_px = 1.2, bool dashed = false);
-Label label(Vec2 at, std::string text, Rgba colour, double size_px = 13, double dx = 6, double dy = -6);
+Polyline circle(const Vec2& centre, double radius, Rgba colour, double width_px = 1.2, bool dashed = false);
+Label label(const Vec2& at, std::string text, Rgba colour, double size_px = 13, double dx = 6, double dy = -6);
 Rgba with_alpha(Rgba c, double a);
 // A time for a caption: up to three decimals, no trailing zeros ("300", "412.474").
 std::string seconds(double t);

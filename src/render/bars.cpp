@@ -70,7 +70,7 @@ void draw_colour_bar(cairo_t* cr, const Scene& s, const Units& un, double room, 
     text(cr, s.theme.font, 12 * ut, un.w - 0.5 * room - 3 * ut, y0 - 14 * ut, "speed (m/s)", 0.5);
 }
 
-Box draw_inset(cairo_t* cr, const Scene& s, const Units& un, double right, Vec2 lo, Vec2 hi) {
+Box draw_inset(cairo_t* cr, const Scene& s, const Units& un, double right, const Vec2& lo, const Vec2& hi) {
     if (!s.inset) return {{right, un.h}, {right, un.h}};
     Scene inset = *s.inset;
     inset.show_text = false;

@@ -17,11 +17,11 @@ constexpr int max_arc_points = 1 << 16;
 
 std::array<Vec2, 4> corners_of(const Box& b) { return {b.lo, Vec2{b.hi.x(), b.lo.y()}, b.hi, Vec2{b.lo.x(), b.hi.y()}}; }
 
-double distance_to_box(const Box& b, Vec2 p) {
+double distance_to_box(const Box& b, const Vec2& p) {
     return std::hypot(std::max({b.lo.x() - p.x(), 0.0, p.x() - b.hi.x()}), std::max({b.lo.y() - p.y(), 0.0, p.y() - b.hi.y()}));
 }
 
-double farthest_corner(const Box& b, Vec2 p) {
+double farthest_corner(const Box& b, const Vec2& p) {
     double d = 0;
     for (Vec2 q : corners_of(b)) d = std::max(d, distance(p, q));
     return d;
@@ -29,7 +29,7 @@ double farthest_corner(const Box& b, Vec2 p) {
 
 // The angles of the circle about c that can cross the box: all of them when c is in the box,
 // else the box's angular span seen from c (under pi: the box is convex and c outside it).
-std::pair<double, double> angles_over(Vec2 c, const Box& box) {
+std::pair<double, double> angles_over(const Vec2& c, const Box& box) {
     if (box.holds(c)) return {0.0, 2 * pi};
     const Vec2 mid = 0.5 * (box.lo + box.hi);
     const double base = std::atan2(mid.y() - c.y(), mid.x() - c.x());
@@ -45,7 +45,7 @@ std::pair<double, double> angles_over(Vec2 c, const Box& box) {
 
 // Points on the circle over [a0, a1], each chord within `tolerance` of the arc: a chord
 // spanning angle h strays r (1 - cos(h / 2)) ~ r h^2 / 8 from it.
-std::vector<Vec2> arc_points(Vec2 c, double r, double a0, double a1, double tolerance) {
+std::vector<Vec2> arc_points(const Vec2& c, double r, double a0, double a1, double tolerance) {
     const double step = std::min(pi / 8, std::sqrt(8 * tolerance / r));
     const int n = std::clamp(static_cast<int>(std::ceil((a1 - a0) / step)), 1, max_arc_points);
     std::vector<Vec2> pts;
@@ -114,7 +114,7 @@ std::vector<std::vector<Vec2>> clip_polyline(const std::vector<Vec2>& line, bool
     return pieces;
 }
 
-std::vector<Vec2> disk_in_box(Vec2 c, double r, const Box& box, double tolerance) {
+std::vector<Vec2> disk_in_box(const Vec2& c, double r, const Box& box, double tolerance) {
     if (!(r > distance_to_box(box, c))) return {};
     if (r >= farthest_corner(box, c)) {
         const auto k = corners_of(box);
@@ -127,7 +127,7 @@ std::vector<Vec2> disk_in_box(Vec2 c, double r, const Box& box, double tolerance
     return clip_polygon(std::move(pts), box);
 }
 
-std::vector<std::vector<Vec2>> circle_in_box(Vec2 c, double r, const Box& box, double tolerance) {
+std::vector<std::vector<Vec2>> circle_in_box(const Vec2& c, double r, const Box& box, double tolerance) {
     if (!(r > distance_to_box(box, c)) || r >= farthest_corner(box, c)) return {};
     const auto [a0, a1] = angles_over(c, box);
     return clip_polyline(arc_points(c, r, a0, a1, tolerance), false, box);

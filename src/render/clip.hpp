@@ -17,7 +17,7 @@ namespace dragon::render {
 struct Box {
     Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
     double extent() const { return std::max(hi.x() - lo.x(), hi.y() - lo.y()); }
-    bool holds(Vec2 p) const { return p.x() >= lo.x() && p.x() <= hi.x() && p.y() >= lo.y() && p.y() <= hi.y(); }
+    bool holds(const Vec2& p) const { return p.x() >= lo.x() && p.x() <= hi.x() && p.y() >= lo.y() && p.y() <= hi.y(); }
     Box grown(double by) const { return {{lo.x() - by, lo.y() - by}, {hi.x() + by, hi.y() + by}}; }
 };
 
@@ -32,8 +32,8 @@ std::vector<std::vector<Vec2>> clip_polyline(const std::vector<Vec2>& line, bool
 // The disk of radius r about c, inside the box, as a polygon whose curved edges stay within
 // `tolerance` of the circle. Costs what the box shows: a circle far larger than the box is
 // sampled only over the angles that cross it.
-std::vector<Vec2> disk_in_box(Vec2 c, double r, const Box& box, double tolerance);
+std::vector<Vec2> disk_in_box(const Vec2& c, double r, const Box& box, double tolerance);
 // The circle's outline inside the box, as polylines within `tolerance` of it.
-std::vector<std::vector<Vec2>> circle_in_box(Vec2 c, double r, const Box& box, double tolerance);
+std::vector<std::vector<Vec2>> circle_in_box(const Vec2& c, double r, const Box& box, double tolerance);
 
 }  // namespace dragon::render

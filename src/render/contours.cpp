@@ -23,7 +23,7 @@ std::vector<std::vector<Vec2>> contour_lines(const std::vector<double>& xs, cons
     const auto vertical = [&](std::size_t i, std::size_t j) -> EdgeId { return 2 * (i * ny + j) + 1; };
     std::unordered_map<EdgeId, Vec2> crossing;
     // Where the level crosses the edge from node p (value zp) to node q (value zq).
-    const auto cross = [&](EdgeId e, Vec2 p, double zp, Vec2 q, double zq) {
+    const auto cross = [&](EdgeId e, const Vec2& p, double zp, const Vec2& q, double zq) {
         const double t = (level - zp) / (zq - zp);
         crossing.emplace(e, Vec2{p.x() + t * (q.x() - p.x()), p.y() + t * (q.y() - p.y())});
         return e;

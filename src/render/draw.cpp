@@ -265,7 +265,7 @@ void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
     const render::Box note = render::draw_annotation(cr, s, un, s.title_band ? w : clock.lo.x());
     const render::Box legend = render::draw_legend(cr, s, un, std::max(note.hi.y(), 2 * u));
     const render::Box strip{{w - right, 0}, {w, h}};
-    render::draw_labels(cr, s, un, [&v](Vec2 p) { return v.px(p); }, {bar, clock, inset, note, legend, strip},
+    render::draw_labels(cr, s, un, [&v](const Vec2& p) { return v.px(p); }, {bar, clock, inset, note, legend, strip},
                         {{0, top}, {w, h}});
     const double scale_top = s.show_scale_bar ? h - 48 * un.ut : h;
     render::draw_captions(cr, s, un, bar.hi.x(), inset.lo.x(), std::min(scale_top, inset.lo.y()));

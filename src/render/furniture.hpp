@@ -37,7 +37,7 @@ Box draw_scale_bar(cairo_t* cr, const Scene& s, const Units& un, double px_per_m
 void draw_colour_bar(cairo_t* cr, const Scene& s, const Units& un, double room, double top);
 // The inset in the bottom right corner, left of `right`, with the world box the main picture
 // shows (lo, hi: metres) marked on it.
-Box draw_inset(cairo_t* cr, const Scene& s, const Units& un, double right, Vec2 lo, Vec2 hi);
+Box draw_inset(cairo_t* cr, const Scene& s, const Units& un, double right, const Vec2& lo, const Vec2& hi);
 // Captions at the bottom, centred, between `left` and `right` if they fit there, else above
 // everything at the bottom (whose top is `lift`).
 void draw_captions(cairo_t* cr, const Scene& s, const Units& un, double left, double right, double lift);

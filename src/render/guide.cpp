@@ -29,7 +29,7 @@ double piece_boundary(const Path& path, double lo, double hi) {
 
 }  // namespace
 
-double signed_distance(const Box& box, Vec2 p) {
+double signed_distance(const Box& box, const Vec2& p) {
     const double dx = std::max(box.lo.x() - p.x(), p.x() - box.hi.x()), dy = std::max(box.lo.y() - p.y(), p.y() - box.hi.y());
     if (dx <= 0 && dy <= 0) return std::max(dx, dy);  // inside: the nearer side
     return std::hypot(std::max(dx, 0.0), std::max(dy, 0.0));

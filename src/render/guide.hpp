@@ -14,7 +14,7 @@ namespace dragon::render {
 
 // Distance from p to the box when outside (positive); minus the distance to its boundary when
 // inside.
-double signed_distance(const Box& box, Vec2 p);
+double signed_distance(const Box& box, const Vec2& p);
 
 // The arc ranges within [s0, s1] over which the path may be inside the box, in order and
 // merged: a superset, loose by at most `resolution` at either end of each range. Arc length is

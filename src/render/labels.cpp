@@ -26,7 +26,7 @@ double overlap(const Box& a, const Box& b) {
 double area(const Box& b) { return (b.hi.x() - b.lo.x()) * (b.hi.y() - b.lo.y()); }
 
 // Does segment pq cross the box (or lie in it)? Liang-Barsky on its parameter.
-bool crosses(const Box& b, Vec2 p, Vec2 q) {
+bool crosses(const Box& b, const Vec2& p, const Vec2& q) {
     double t0 = 0, t1 = 1;
     const Vec2 d = q - p;
     const double pp[4] = {-d.x(), d.x(), -d.y(), d.y()};
@@ -48,7 +48,7 @@ bool crosses(const Box& b, Vec2 p, Vec2 q) {
 struct Quad {
     std::array<Vec2, 4> p;
     Box box;
-    bool holds(Vec2 q) const {
+    bool holds(const Vec2& q) const {
         if (!box.holds(q)) return false;
         double sign = 0;
         for (int i = 0; i < 4; ++i) {

@@ -8,7 +8,7 @@
 namespace dragon::render {
 
 namespace {
-void draw_marker(cairo_t* cr, const View& v, const Marker& m, Vec2 p, double u) {
+void draw_marker(cairo_t* cr, const View& v, const Marker& m, const Vec2& p, double u) {
     if (off_picture(v, p, m.radius_px * u)) return;
     set_colour(cr, m.colour);
     if (m.ring) {
@@ -46,7 +46,7 @@ void draw_overlays(cairo_t* cr, const Scene& s, const View& v, double u) {
         std::vector<Vec2> pts;
         for (std::size_t i = 0; i <= last; ++i) pts.push_back(v.px(pl.points[i]));
         if (arrow) pts[last] = tip - 0.7 * head * dir;
-        if (std::all_of(pts.begin(), pts.end(), [&](Vec2 p) { return v.tame.holds(p); })) {
+        if (std::all_of(pts.begin(), pts.end(), [&](const Vec2& p) { return v.tame.holds(p); })) {
             for (std::size_t i = 0; i <= last; ++i) {
                 if (i == 0) cairo_move_to(cr, pts[i].x(), pts[i].y());
                 else cairo_line_to(cr, pts[i].x(), pts[i].y());

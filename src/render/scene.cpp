@@ -16,7 +16,7 @@ namespace {
 struct Box {
     double x0 = std::numeric_limits<double>::infinity(), y0 = x0;
     double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
-    void add(Vec2 p) {
+    void add(const Vec2& p) {
         x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y());
         x1 = std::max(x1, p.x()), y1 = std::max(y1, p.y());
     }

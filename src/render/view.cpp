@@ -23,16 +23,16 @@ void rect_path(cairo_t* cr, const View& v, const Rect& r) {
     const Corners c = corners(r);
     std::vector<Vec2> pts;
     for (Vec2 p : c.p) pts.push_back(v.px(p));
-    if (!std::all_of(pts.begin(), pts.end(), [&](Vec2 p) { return v.tame.holds(p); }))
+    if (!std::all_of(pts.begin(), pts.end(), [&](const Vec2& p) { return v.tame.holds(p); }))
         pts = clip_polygon(std::move(pts), v.cut);
     polygon_path(cr, pts);
 }
 
-bool tame_circle(const View& v, Vec2 p, double r) { return v.tame.grown(-r).holds(p); }
-bool off_picture(const View& v, Vec2 p, double r) { return !v.cut.grown(r).holds(p); }
+bool tame_circle(const View& v, const Vec2& p, double r) { return v.tame.grown(-r).holds(p); }
+bool off_picture(const View& v, const Vec2& p, double r) { return !v.cut.grown(r).holds(p); }
 
 // A disk of radius r px about p, to fill.
-void circle_path(cairo_t* cr, const View& v, Vec2 p, double r) {
+void circle_path(cairo_t* cr, const View& v, const Vec2& p, double r) {
     if (off_picture(v, p, r)) return;
     if (tame_circle(v, p, r)) {
         cairo_new_sub_path(cr);
@@ -43,7 +43,7 @@ void circle_path(cairo_t* cr, const View& v, Vec2 p, double r) {
 }
 
 // The circle's outline, to stroke.
-void ring_path(cairo_t* cr, const View& v, Vec2 p, double r) {
+void ring_path(cairo_t* cr, const View& v, const Vec2& p, double r) {
     if (off_picture(v, p, r)) return;
     if (tame_circle(v, p, r)) {
         cairo_new_sub_path(cr);

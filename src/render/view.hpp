@@ -17,17 +17,17 @@ namespace dragon::render {
 struct View {
     double cx, cy, scale, ox, oy;
     Box tame, cut;
-    Vec2 px(Vec2 p) const { return {ox + (p.x() - cx) * scale, oy - (p.y() - cy) * scale}; }
+    Vec2 px(const Vec2& p) const { return {ox + (p.x() - cx) * scale, oy - (p.y() - cy) * scale}; }
 };
 
 void polygon_path(cairo_t* cr, const std::vector<Vec2>& pts);
 // A bench's rectangle, cut to the picture when it reaches far outside.
 void rect_path(cairo_t* cr, const View& v, const Rect& r);
-bool tame_circle(const View& v, Vec2 p, double r);
-bool off_picture(const View& v, Vec2 p, double r);
+bool tame_circle(const View& v, const Vec2& p, double r);
+bool off_picture(const View& v, const Vec2& p, double r);
 // A disk of radius r px about p, to fill; its outline, to stroke.
-void circle_path(cairo_t* cr, const View& v, Vec2 p, double r);
-void ring_path(cairo_t* cr, const View& v, Vec2 p, double r);
+void circle_path(cairo_t* cr, const View& v, const Vec2& p, double r);
+void ring_path(cairo_t* cr, const View& v, const Vec2& p, double r);
 void set_dash(cairo_t* cr, bool dashed, double u);
 // The part of the world the picture shows, widened by `pad_px` pixels on every side.
 Box world_box(const View& v, double w, double h, double pad_px);

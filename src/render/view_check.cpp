@@ -11,10 +11,10 @@
 namespace dragon {
 
 namespace {
-double radius(Vec2 c) { return std::hypot(c.x(), c.y()); }
+double radius(const Vec2& c) { return std::hypot(c.x(), c.y()); }
 }  // namespace
 
-ViewError check_view(Vec2 centre, double view_width, double view_height, int width_px, int height_px) {
+ViewError check_view(const Vec2& centre, double view_width, double view_height, int width_px, int height_px) {
     if (!std::isfinite(centre.x()) || !std::isfinite(centre.y()) || !std::isfinite(view_width) ||
         !std::isfinite(view_height))
         return ViewError::not_finite;
@@ -28,7 +28,7 @@ ViewError check_view(Vec2 centre, double view_width, double view_height, int wid
     return ViewError::none;
 }
 
-double narrowest_view(Vec2 centre, int width_px, int height_px) {
+double narrowest_view(const Vec2& centre, int width_px, int height_px) {
     return std::max(kMinViewExtent, kMinPixelOverRadius * radius(centre) * std::min(width_px, height_px));
 }
 

@@ -21,7 +21,7 @@ constexpr int camera_samples = 9;
 struct Box {
     double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x;
     double hi_x = -std::numeric_limits<double>::infinity(), hi_y = hi_x;
-    void add(Vec2 p) {
+    void add(const Vec2& p) {
         lo_x = std::min(lo_x, p.x());
         lo_y = std::min(lo_y, p.y());
         hi_x = std::max(hi_x, p.x());

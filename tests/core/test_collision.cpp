@@ -29,7 +29,7 @@ Poly clip(const Poly& subject, const Poly& clipper) {
         const Vec2 a = clipper[e], b = clipper[(e + 1) % clipper.size()];
         const Poly in = out;
         out.clear();
-        auto inside = [&](Vec2 p) { return cross(b - a, p - a) >= 0.0; };
+        auto inside = [&](const Vec2& p) { return cross(b - a, p - a) >= 0.0; };
         for (size_t k = 0; k < in.size(); ++k) {
             const Vec2 p = in[k], q = in[(k + 1) % in.size()];
             const bool pi = inside(p), qi = inside(q);
@@ -49,7 +49,7 @@ double area(const Poly& p) {
     return 0.5 * s;
 }
 
-double point_segment(Vec2 p, Vec2 a, Vec2 b) {
+double point_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
     const Vec2 ab = b - a;
     const double t = std::clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0);
     return distance(p, a + t * ab);
@@ -68,7 +68,7 @@ double poly_distance(const Poly& a, const Poly& b) {
 }
 
 // Distance from a point to a convex polygon (counter-clockwise): 0 inside, else to the nearest edge.
-double point_polygon(Vec2 p, const Poly& q) {
+double point_polygon(const Vec2& p, const Poly& q) {
     bool inside = true;
     double d = INFINITY;
     for (size_t k = 0; k < q.size(); ++k) {
@@ -81,7 +81,7 @@ double point_polygon(Vec2 p, const Poly& q) {
 
 bool overlaps(const Rect& a, const Rect& b) { return area(clip(polygon(a), polygon(b))) > 1e-14; }
 
-Rect shifted(Rect r, Vec2 by) {
+Rect shifted(Rect r, const Vec2& by) {
     r.centre = r.centre + by;
     return r;
 }

@@ -34,7 +34,7 @@ Vec2 point_of(const Rect& r, double u, double w) {
 }
 
 // Distance from the origin to the segment [p, q], independently of the rectangle's frame.
-double distance_to_segment(Vec2 p, Vec2 q) {
+double distance_to_segment(const Vec2& p, const Vec2& q) {
     const Vec2 d = q - p;
     const double s = std::clamp(-dot(p, d) / dot(d, d), 0.0, 1.0);
     return norm(p + s * d);

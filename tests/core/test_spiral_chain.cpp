@@ -28,7 +28,7 @@ const Published kAtZero[] = {
 };
 
 // Angle of p reduced to be within pi of theta.
-double unwrap_to(Vec2 p, double theta) {
+double unwrap_to(const Vec2& p, double theta) {
     double a = std::atan2(p.y(), p.x());
     return a + kTwoPi * std::round((theta - a) / kTwoPi);
 }

@@ -22,7 +22,7 @@ namespace {
 
 // The angle psi of point x unwrapped next to the spiral's angle theta at point `near` (both
 // on the same side of the centre, well within half a turn of each other).
-double unwrapped_angle(const Spiral& sp, Vec2 near, double theta, Vec2 x) {
+double unwrapped_angle(const Spiral& sp, const Vec2& near, double theta, const Vec2& x) {
     // The spiral's angle grows counter-clockwise when a point a little farther out along it
     // lies counter-clockwise of this one.
     const double sense = cross(near, sp.at({0, theta + 1e-3}).pos) > 0.0 ? 1.0 : -1.0;

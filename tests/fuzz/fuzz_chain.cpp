@@ -84,7 +84,7 @@ std::string describe(const Scenario& s) {
     return text;
 }
 
-bool finite(Vec2 v) { return std::isfinite(v.x()) && std::isfinite(v.y()); }
+bool finite(const Vec2& v) { return std::isfinite(v.x()) && std::isfinite(v.y()); }
 
 // How well a handle's coordinates can be known: a few ulps of its distance from the centre, times
 // the size of its path parameter (on a spiral the angle theta: cos and sin of theta carry
@@ -142,18 +142,18 @@ void check_frame(const Simulation& sim, const Frame& f) {
 }
 
 // Distance from p to segment ab.
-double point_segment(Vec2 p, Vec2 a, Vec2 b) {
+double point_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
     const Vec2 ab = b - a;
     const double t = std::clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0);
     return distance(p, a + t * ab);
 }
 
-bool inside(Vec2 p, const Rect& r) {
+bool inside(const Vec2& p, const Rect& r) {
     const Vec2 w = p - r.centre;
     return std::abs(dot(w, r.axis)) <= r.half_length && std::abs(cross(r.axis, w)) <= r.half_width;
 }
 
-bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
     const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
     const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
     return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));

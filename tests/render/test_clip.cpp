@@ -23,7 +23,7 @@ double area(const std::vector<Vec2>& poly) {
     return 0.5 * std::abs(a);
 }
 
-bool inside(const Box& b, Vec2 p, double slack = 1e-9) { return b.grown(slack).holds(p); }
+bool inside(const Box& b, const Vec2& p, double slack = 1e-9) { return b.grown(slack).holds(p); }
 
 TEST(Clip, PolygonIsCutToTheBox) {
     const Box box{{0, 0}, {10, 10}};
