@@ -18,17 +18,6 @@ namespace dragon::fig {
 
 namespace {
 
-double bounding_radius(const Rect& r) { return std::hypot(r.half_length, r.half_width); }
-
-Polyline segment(const Vec2& a, const Vec2& b, Rgba colour, double width, bool dashed = false) {
-    Polyline p;
-    p.points = {a, b};
-    p.colour = colour;
-    p.width_px = width;
-    p.dashed = dashed;
-    return p;
-}
-
 // The last moment the coil-in figures show: the first contact, or with none the end of the run.
 double last_moment(const Context& c, const Simulation& sim) {
     return shown_span(sim, 0.0, sim.end_time(), c.answers->contact()).to;
@@ -54,7 +43,7 @@ void broad_phase(const Context& c, const std::string& path) {
     // candidate_pairs; a bench whose own band overlaps it goes on to the circle test).
     const double reach = r.half_length * std::abs(r.axis.x()) + r.half_width * std::abs(r.axis.y()) + 0.5 * margin;
     // Twice the circle of bench + margin across: the candidates and their neighbours.
-    const double extent = 4.0 * (bounding_radius(r) + margin);
+    const double extent = 4.0 * (half_diagonal(r) + margin);
 
     std::vector<int> candidates;
     for (auto [i, j] : candidate_pairs(f, margin))
@@ -81,11 +70,11 @@ void broad_phase(const Context& c, const std::string& path) {
         s.polylines.push_back(segment({x, r.centre.y() - extent}, {x, r.centre.y() + extent}, th.text, 1.2, true));
     for (int bench : candidates) {
         const Rect& b = f.benches[bench - 1];
-        s.polylines.push_back(circle(b.centre, bounding_radius(b), with_alpha(th.highlight, 0.45), 1.0));
+        s.polylines.push_back(circle(b.centre, half_diagonal(b), with_alpha(th.highlight, 0.45), 1.0));
     }
-    s.polylines.push_back(circle(r.centre, bounding_radius(r) + margin, th.head, 2.2, true));
-    s.polylines.push_back(circle(r.centre, bounding_radius(r), th.head, 1.6));
-    s.labels.push_back(label(r.centre + Vec2{0, bounding_radius(r) + margin},
+    s.polylines.push_back(circle(r.centre, half_diagonal(r) + margin, th.head, 2.2, true));
+    s.polylines.push_back(circle(r.centre, half_diagonal(r), th.head, 1.6));
+    s.labels.push_back(label(r.centre + Vec2{0, half_diagonal(r) + margin},
                              fmt::format("bench {}'s bounding circle + margin", focus), th.head, 14, 6, -8));
     s.labels.push_back(label({x1, r.centre.y() - 0.42 * extent}, "sweep band on x", th.text, 14, 6, 0));
     write_scene(c, s, c.px(900), c.px(900), path);

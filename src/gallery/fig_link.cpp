@@ -37,10 +37,7 @@ std::vector<Vec2> chord_roots(const Path& path, const Vec2& centre, double d, do
 }
 
 Polyline arrow(const Vec2& from, const Vec2& to, Rgba colour, double width = 2.2) {
-    Polyline p;
-    p.points = {from, to};
-    p.colour = colour;
-    p.width_px = width;
+    Polyline p = segment(from, to, colour, width);
     p.arrow = true;
     return p;
 }

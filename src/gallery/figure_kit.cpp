@@ -14,6 +14,15 @@
 
 namespace dragon::fig {
 
+Polyline segment(const Vec2& a, const Vec2& b, Rgba colour, double width_px, bool dashed) {
+    Polyline p;
+    p.points = {a, b};
+    p.colour = colour;
+    p.width_px = width_px;
+    p.dashed = dashed;
+    return p;
+}
+
 Polyline circle(const Vec2& centre, double radius, Rgba colour, double width_px, bool dashed) {
     Polyline pl;
     constexpr int n = 144;

@@ -30,6 +30,8 @@ struct Context {
     void tell(const Plot& plot) const;
 };
 
+// A straight line from a to b (world units).
+Polyline segment(const Vec2& a, const Vec2& b, Rgba colour, double width_px, bool dashed = false);
 // A circle as a closed polyline (world units).
 Polyline circle(const Vec2& centre, double radius, Rgba colour, double width_px = 1.2, bool dashed = false);
 Label label(const Vec2& at, std::string text, Rgba colour, double size_px = 13, double dx = 6, double dy = -6);
