@@ -11,6 +11,7 @@
 #include "dragon/collision.hpp"
 #include "dragon/executor.hpp"
 #include "dragon/progress.hpp"
+#include "dragon/window.hpp"
 
 namespace dragon {
 
@@ -22,20 +23,25 @@ std::vector<Frame> simulate_table(const Simulation& sim, double t0, double t1, d
 void simulate_table_into(const Simulation& sim, double t0, double t1, double dt, std::vector<Frame>& frames,
                          Executor* executor = nullptr);
 
-// Q2: the first moment two non-adjacent benches touch, searched over [t_from, t_to].
+// Q2: the first moment two non-adjacent benches touch. The search runs in head travel, so the
+// contact (its benches, point, head radius, travel) is the same at any head speed and its time
+// is travel / speed.
 struct Contact {
     double time;
     int bench_a, bench_b;
     double head_radius;
     Vec2 point = Vec2::Zero();  // contact witness point
-    Frame frame;    // the whole chain at that moment
+    Frame frame;    // the whole chain at that moment (speeds at the scenario's head speed)
     int steps = 0;  // clearance evaluations the search used
-    // How closely `time` is known, s: tol::contact_time, finer for a head faster than 1 m/s
-    // (at most that many metres of head travel), coarser only where t's own rounding is larger.
+    // How closely `time` is known, s: tol::travel / head speed, coarser only where t's own
+    // rounding is larger.
     double tolerance = 0.0;
+    double travel = 0.0;            // m: the head's travel from t = 0 then
+    double travel_tolerance = 0.0;  // m: how closely `travel` is known (tol::travel)
 };
-// The search runs on the executor's workers, each taking chunks of the time range; the answer
-// does not depend on the number of workers beyond the tolerance.
+// The search takes the range in stretches of head travel cut at fixed places (multiples of
+// 10 m), spread over the executor's workers: the answer, and the work it took, do not depend on
+// the number of workers, nor on which one finished first.
 using StepObserver = std::function<void(double from, double to)>;
 struct ContactSearchOptions {
     // If given, hears of every interval [from, to] the search has declared contact-free by its
@@ -51,6 +57,9 @@ struct ContactSearchOptions {
 // otherwise): clamp `t_to` to valid_range().to to search as far as the dragon can go.
 std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to,
                                      const ContactSearchOptions& options = {});
+// The same over head travel [x_from, x_to], m (both within Simulation::valid_range's travel).
+std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from, double x_to,
+                                            const ContactSearchOptions& options = {});
 
 // When the head front handle reaches the turning space's boundary coiling in: on the plain
 // spiral the moment its radius is the scenario's turn_radius (before t = 0 if it starts inside),

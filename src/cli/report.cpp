@@ -58,8 +58,10 @@ void print_single_frame(const std::string& title, const Frame& frame) {
 std::string format_resolved(double v, double resolution) {
     int decimals = 9;
     if (resolution > 0.0 && std::isfinite(resolution))
-        // A resolution a hair over a power of ten (1.0000001e-10 from a bracket's rounding) counts as it.
-        decimals = std::clamp(static_cast<int>(std::floor(-std::log10(resolution) + 0.01)) - 1, 0, 17);
+        // A resolution a hair over a power of ten (1.0000001e-10 from a bracket's rounding) counts
+        // as it. Nine decimals at most (1e-9 s, the contest's precision): the searches resolve
+        // 1e-11 m of head travel, which is finer than that for any head speed over 1 cm/s.
+        decimals = std::clamp(static_cast<int>(std::floor(-std::log10(resolution) + 0.01)) - 1, 0, 9);
     return fmt::format("{:.{}f}", v, decimals);
 }
 

@@ -29,7 +29,7 @@ std::string json_number(double v);
 // outside 0..kMaxDigits.
 int checked_digits(const std::optional<int>& digits);
 
-// v with as many decimals as `resolution` (how closely v is known) supports: 9 for 1e-10.
+// v with as many decimals as `resolution` (how closely v is known) supports, at most 9: 9 for 1e-10.
 std::string format_resolved(double v, double resolution);
 
 // --json answers: one object, keys in the order written, printed on one line.
