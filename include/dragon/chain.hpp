@@ -149,6 +149,8 @@ std::string describe(const Jam& j);
 // and the jam, for an application to word (allowed() words it in the library's terms).
 struct PastTheValidMotion : InputError {
     PastTheValidMotion(const char* field, double t, const Jam& j);
+    // The same for a value as given ("120 m" of head travel, say).
+    PastTheValidMotion(const char* field, const std::string& value, const Jam& j);
     Jam jam;
     bool ahead;  // jam.ahead: the motion is valid until it, else from it
 };

@@ -44,6 +44,13 @@ struct Jam {
     double travel_tolerance = 0.0;  // m: the same as head travel
 };
 
+// Does the valid motion's own handle race without bound as the jam nears? Yes where the root it
+// follows vanishes there: going forward at a jam ahead (root_vanishes), going back at a jam
+// behind (seen forward, a nearer root is born: the followed root's twin, on the valid side).
+inline bool speed_unbounded_at(const Jam& j) {
+    return j.ahead ? j.kind == JamKind::root_vanishes : j.kind == JamKind::nearer_root;
+}
+
 // How a jam search went (for tests and benchmarks).
 struct JamSearchStats {
     int evaluations = 0;  // chains solved and checked

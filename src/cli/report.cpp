@@ -73,15 +73,24 @@ void print_json(const Json& answer) {
 Json jam_json(const std::optional<Jam>& j) {
     if (!j) return nullptr;
     return Json{{"time", j->time},
+                {"travel", j->travel},
                 {"handle", j->handle},
                 {"kind", to_string(j->kind)},
+                {"ahead", j->ahead},
                 {"point", {j->point.x(), j->point.y()}},
                 {"tolerance", j->tolerance}};
 }
 
-std::string jam_sentence(const Jam& j, bool ahead) {
-    return fmt::format("the dragon can follow its path only {} t = {} s, where {}", ahead ? "until" : "from",
+std::string jam_sentence(const Jam& j) {
+    return fmt::format("the dragon can follow its path only {} t = {} s, where {}", j.ahead ? "until" : "from",
                        format_resolved(j.time, j.tolerance), describe(j));
+}
+
+void add_window(Json& answer, const Searched& w) {
+    answer["from"] = w.from;
+    answer["to"] = w.to;
+    answer["from_travel"] = w.from_travel;
+    answer["to_travel"] = w.to_travel;
 }
 
 int checked_digits(const std::optional<int>& digits) {

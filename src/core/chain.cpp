@@ -209,7 +209,10 @@ Simulation::TravelSpan Simulation::clip_travel(double x0, double x1, const char*
 }
 
 PastTheValidMotion::PastTheValidMotion(const char* field, double t, const Jam& j)
-    : InputError(field, error_value(t),
+    : PastTheValidMotion(field, error_value(t), j) {}
+
+PastTheValidMotion::PastTheValidMotion(const char* field, const std::string& value, const Jam& j)
+    : InputError(field, value,
                  fmt::format("the dragon can follow its path only {} t = {:.9f} s, where {}", j.ahead ? "until" : "from",
                              j.time, describe(j))),
       jam(j),
