@@ -59,7 +59,7 @@ void register_max_speed(CLI::App& app, Registry& reg) {
                    "every {:.4g} m, {} local maxima refined, {} chains solved\n", format_time(m.window.from),
                    format_time(m.window.to), format_time(m.window.from_travel), format_time(m.window.to_travel),
                    s.head_speed, m.scan_travel, m.candidates, m.evaluations);
-        if (m.jam) fmt::print("  the search ends there: {}\n", jam_sentence(*m.jam));
+        fmt::print("{}", window_cuts(m.window, "the search"));
         return 0;
     };
 }
