@@ -1,0 +1,135 @@
+// One dragon, one answer, end to end: the commands' geometric answers do not depend on the head's
+// speed, two commands asked the same question agree, and solve answers every scenario the
+// single commands accept, saying where the valid motion cut a question short.
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_run.hpp"
+
+namespace fs = std::filesystem;
+using dragon_test::contains;
+using dragon_test::run_dragon;
+using dragon_test::slurp;
+using nlohmann::json;
+
+namespace {
+
+json answer(const std::string& args) {
+    const dragon_test::CliRun r = run_dragon(args);
+    EXPECT_EQ(r.code, 0) << args << "\n" << r.err;
+    const json j = json::parse(r.out, nullptr, false);
+    EXPECT_TRUE(j.is_object()) << args << "\n" << r.out;
+    return j;
+}
+
+}  // namespace
+
+TEST(CliOneAnswer, TheLargestHeadSpeedIsTheSameAtEveryHeadSpeed) {
+    // Was 1.799898 m/s at 0.1 m/s and 2.000000 m/s at 0.05 m/s: the window was 100 s, 5 m of path.
+    const json ref = answer("max-speed --json");
+    for (const char* v : {"0.05", "0.1", "5"}) {
+        const json a = answer(std::string("max-speed --json --speed ") + v);
+        EXPECT_EQ(a["max_head_speed"], ref["max_head_speed"]) << v;
+        EXPECT_EQ(a["tied"], ref["tied"]) << v;
+        EXPECT_EQ(a["travel"], ref["travel"]) << v;
+        EXPECT_EQ(a["from_travel"], -100.0) << v;
+        EXPECT_EQ(a["to_travel"], 100.0) << v;
+        EXPECT_DOUBLE_EQ(a["time"].get<double>() * std::stod(v), ref["time"].get<double>()) << v;
+    }
+    // And a sweep over the speed measures the same thing on every row.
+    const dragon_test::CliRun sweep = run_dragon("sweep --vary speed=0.05,0.1,1,5 --measure max-speed --json -q");
+    ASSERT_EQ(sweep.code, 0) << sweep.err;
+    std::istringstream rows(sweep.out);
+    int n = 0;
+    for (std::string line; std::getline(rows, line); ++n) {
+        const json row = json::parse(line);
+        EXPECT_EQ(row["max-speed"]["max_head_speed"], ref["max_head_speed"]) << line;
+        EXPECT_EQ(row["status"], "ok") << line;
+    }
+    EXPECT_EQ(n, 4);
+}
+
+TEST(CliOneAnswer, ASlowHeadDoesNotMakeACollidingTurnCollisionFree) {
+    // At turn pitch 0.5 the benches touch 12.87 m into the turn; 100 s at 0.05 m/s was 5 m.
+    const json fast = answer("turnaround --turn-pitch 0.5 --json");
+    const json slow = answer("turnaround --turn-pitch 0.5 --speed 0.05 --json");
+    ASSERT_TRUE(fast["first_contact"].is_object()) << fast.dump();
+    ASSERT_TRUE(slow["first_contact"].is_object()) << slow.dump();
+    EXPECT_EQ(slow["first_contact"]["travel"], fast["first_contact"]["travel"]);
+    EXPECT_EQ(slow["first_contact"]["benches"], fast["first_contact"]["benches"]);
+    EXPECT_FALSE(slow["clearance"]["collision_free"].get<bool>());
+}
+
+TEST(CliOneAnswer, CollideAndTurnaroundReportOneFirstContact) {
+    const json c = answer("collide --path turnaround --turn-pitch 0.44 --json");
+    const json t = answer("turnaround --turn-pitch 0.44 --json");
+    ASSERT_TRUE(t["first_contact"].is_object());
+    for (const char* key : {"time", "travel", "benches", "point", "head_radius", "tolerance"})
+        EXPECT_EQ(c[key], t["first_contact"][key]) << key;
+    EXPECT_EQ(c["from_travel"], -100.0);
+    EXPECT_EQ(c["to_travel"], 100.0);
+    // A window can be given in seconds or in metres of head travel, and says both.
+    const json seconds = answer("collide --path turnaround --turn-pitch 0.44 --speed 2 --from -50 --to 50 --json");
+    const json metres = answer("collide --path turnaround --turn-pitch 0.44 --speed 2 --json");
+    EXPECT_EQ(seconds["travel"], c["travel"]);
+    EXPECT_EQ(metres["travel"], c["travel"]);
+    EXPECT_EQ(seconds["from"], -50.0);
+    EXPECT_EQ(metres["from"], -50.0);
+    // The smallest clearance is never a negative "clearance" past the contact.
+    EXPECT_EQ(t["clearance"]["distance"], 0.0);
+    EXPECT_EQ(t["clearance"]["time"], c["time"]);
+}
+
+TEST(CliOneAnswer, SolveAnswersWhatTheSingleCommandsAnswer) {
+    const fs::path dir = dragon_test::scratch_dir();
+    // Ratio 3: the S-curve jams 15.15 s into the turn. Every file is written; the text says
+    // where Q4's table and Q5's search end, and the summary says what was left out.
+    const dragon_test::CliRun r = run_dragon("solve --arc-ratio 3 -o " + (dir / "r3").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (const char* f : {"result1.xlsx", "result2.xlsx", "result4.xlsx", "summary.json"})
+        EXPECT_TRUE(fs::exists(dir / "r3" / f)) << f;
+    EXPECT_TRUE(contains(r.out, "85 rows of -100..100 s left out: the dragon can follow its path only until t = "
+                                "15.1477126")) << r.out;
+    EXPECT_TRUE(contains(r.out, "searched only up to the end of the valid motion")) << r.out;
+    const json summary = json::parse(slurp(dir / "r3" / "summary.json"));
+    EXPECT_EQ(summary["q4"]["rows_left_out"], 85);
+    EXPECT_EQ(summary["q4"]["followable"], false);
+    EXPECT_TRUE(summary["q5"]["jam"].is_object());
+    // --only q5 says it too.
+    const dragon_test::CliRun q5 = run_dragon("solve --arc-ratio 3 --only q5 -o " + (dir / "q5").string());
+    ASSERT_EQ(q5.code, 0) << q5.err;
+    EXPECT_TRUE(contains(q5.out, "searched only up to the end of the valid motion")) << q5.out;
+    // Start turn 8: the contest's pitches start the head inside the turning space.
+    const dragon_test::CliRun late = run_dragon("solve --start-turn 8 -o " + (dir / "s8").string());
+    ASSERT_EQ(late.code, 0) << late.err;
+    EXPECT_TRUE(contains(late.out, "below 0.5625 m the head would start inside the turning space")) << late.out;
+    EXPECT_TRUE(fs::exists(dir / "s8" / "result4.xlsx"));
+    // Q3's range can be given, as min-pitch takes it.
+    const dragon_test::CliRun q3 = run_dragon("solve --only q3 --lo 0.44 --hi 0.46 -o " + (dir / "q3").string());
+    ASSERT_EQ(q3.code, 0) << q3.err;
+    EXPECT_TRUE(contains(q3.out, "minimum pitch 0.4503373935 m")) << q3.out;
+}
+
+TEST(CliOneAnswer, OneSentencePerEvent) {
+    // The motion on this S-curve begins 1.388 s before the turn: every command words it so.
+    const dragon_test::CliRun t = run_dragon("turnaround --turn-radius 0.5");
+    const dragon_test::CliRun s = run_dragon("simulate --path turnaround --turn-radius 0.5 --from -10 --to 0");
+    EXPECT_EQ(s.code, 2);
+    const std::string event = "the dragon can follow its path only from t = -1.388073196 s, where handle 1 can no "
+                              "longer follow handle 0";
+    EXPECT_TRUE(contains(t.out, event)) << t.out;
+    EXPECT_TRUE(contains(s.err, event)) << s.err;
+}
+
+TEST(CliOneAnswer, TablesPastTheFirstContactSaySo) {
+    const dragon_test::CliRun r = run_dragon("simulate --from 405 --to 415");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(contains(r.err, "rows after t = 412.473837682 s are past the first contact (bench 1 touches bench 9)"))
+        << r.err;
+    const dragon_test::CliRun before = run_dragon("simulate --from 400 --to 410");
+    EXPECT_TRUE(before.err.empty()) << before.err;
+}
