@@ -76,6 +76,11 @@ struct MinPitch {
     bool below_range = false, above_range = false;
     std::vector<PitchInterval> intervals;  // alternating feasible / infeasible over the range
     double search_lo, search_hi;
+    // The search's range must start above this pitch: the bench width, or where the head
+    // would start on the turning space's edge (turn_radius / start_turn; lowest_is_start),
+    // whichever is larger. A below_range answer lies between it and search_lo.
+    double lowest = 0.0;
+    bool lowest_is_start = false;
     double grid;                           // the first scan's pitch spacing, m
     // The largest pitch probed at which the run cannot reach the boundary because the valid
     // motion ends first (it is infeasible for that reason, not for a collision); none if no
@@ -107,6 +112,11 @@ struct MinPitchOptions {
     WorkProgress progress;         // hears of the first scan's runs, one call per run
     Executor* executor = nullptr;  // runs the pitches in parallel; null: default_executor()
 };
+// The answer and any error are the same whatever the executor and its size (the pitches run
+// are fixed in advance; an error is the one of the smallest pitch that failed). Throws
+// InputError for a range it cannot search: "pitch search range start" (lo puts the head's start
+// inside the turning space), "pitch search range end", "pitch grid", or lo, hi and the width
+// out of order.
 MinPitch min_pitch(const Scenario& s, double lo, double hi, const MinPitchOptions& options = {});
 
 }  // namespace dragon
