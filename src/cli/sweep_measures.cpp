@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "cli/answers.hpp"
+#include "cli/contact_search.hpp"
 #include "cli/scenario_flags.hpp"
 #include "dragon/turnaround.hpp"
 
@@ -145,6 +146,9 @@ MeasureResult run_measure(const MeasureInfo& m, const Scenario& scenario, const 
         std::string jam;
         out.answer = m.answer(s, options, jam);
         if (!jam.empty()) out.state = State::jam, out.note = fmt::format("jam ({}): {}", m.name, jam);
+    } catch (const OverlapAtStart& e) {
+        // The chain collides: a verdict on the scenario, as min-pitch gives it, not a refusal.
+        out = {State::collides, std::nullopt, overlap_note_prefix(m) + e.what()};
     } catch (const InputError& e) {
         out = {State::refused, std::nullopt, fmt::format("refused ({}): {}", m.name, e.what())};
     } catch (const std::exception& e) {
@@ -153,6 +157,8 @@ MeasureResult run_measure(const MeasureInfo& m, const Scenario& scenario, const 
     }
     return out;
 }
+
+std::string overlap_note_prefix(const MeasureInfo& m) { return fmt::format("collides at the start ({}): ", m.name); }
 
 std::vector<std::string> flatten(const Json& answer, const std::vector<std::string>& columns) {
     std::vector<std::string> keys;
