@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "cli/wording.hpp"
 #include "cli/answers.hpp"
 #include "cli/commands.hpp"
 #include "cli/report.hpp"
@@ -47,8 +48,8 @@ void register_max_speed(CLI::App& app, Registry& reg) {
                        m.jam->handle);
             return 0;
         }
-        fmt::print("Largest head speed with every handle at or under {} m/s: {:.6f} m/s\n", opt->limit,
-                   m.max_head_speed);
+        fmt::print("Largest head speed with every handle at or under {} m/s: {} m/s\n", opt->limit,
+                   format_amount(m.max_head_speed));
         fmt::print("  speed ratio (fastest handle / head, by magnitude): {:.9f}\n", m.ratio);
         std::string who = fmt::format("handle {}", m.handle);
         if (m.tied.size() > 1) who = fmt::format("handles {} (equal speeds)", fmt::join(m.tied, ", "));
@@ -57,9 +58,9 @@ void register_max_speed(CLI::App& app, Registry& reg) {
         // The window is in time at the scenario's head speed: say how much of the path that is,
         // since a slow head may never reach the S-curve in it.
         fmt::print("  searched t = {}..{} s (the head from {:.6g} m to {:.6g} m along the path at {} m/s): "
-                   "coarse scan every {:.4g} s, {} local maxima refined, {} chains solved\n", format_time(m.from),
+                   "coarse scan every {:.4g} s, {} refined, {} solved\n", format_time(m.from),
                    format_time(m.to), s.head_speed * m.from, s.head_speed * m.to, s.head_speed, m.scan_step,
-                   m.candidates, m.evaluations);
+                   count_of(m.candidates, "local maximum", "local maxima"), count_of(m.evaluations, "chain"));
         if (m.jam) fmt::print("  the search ends there, short of t = {} s: {}\n", opt->to, jam_sentence(*m.jam));
         return 0;
     };

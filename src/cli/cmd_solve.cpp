@@ -213,7 +213,7 @@ void register_solve(CLI::App& app, Registry& reg) {
                              {"time", v.time},
                              {"jam", jam_json(v.jam)}};
         }
-        write_text(*summary_json, summary.dump(2) + "\n");
+        write_text(*summary_json, json_text(summary, 2) + "\n");
         std::vector<AtomicFile*> set;
         for (const auto& f : files) set.push_back(f.get());
         require_stdout_written();  // the tables all printed, or no file changes

@@ -29,7 +29,7 @@ std::string cell(const Json& v) {
     if (v.is_null()) return "";
     if (v.is_string()) return v.get<std::string>();
     if (v.is_number_float() && !std::isfinite(v.get<double>())) return "";
-    return v.dump(-1, ' ', false, Json::error_handler_t::replace);
+    return json_text(v);
 }
 
 // Every leaf key of `v` under `prefix`: objects are walked, anything else (a null object too)

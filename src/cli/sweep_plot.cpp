@@ -1,3 +1,4 @@
+#include "cli/wording.hpp"
 #include "cli/sweep_plot.hpp"
 
 #include <algorithm>
@@ -53,7 +54,7 @@ std::string fixed_note(const SweepSetup& setup, const std::vector<std::size_t>& 
     }
     const std::string fixed = differ.empty() ? "Everything else as in the contest"
                                              : fmt::format("Fixed: {}; the rest as in the contest", fmt::join(differ, ", "));
-    return fmt::format("{}. {} scenarios.", fixed, setup.grid.size());
+    return fmt::format("{}. {}.", fixed, count_of(static_cast<long long>(setup.grid.size()), "scenario"));
 }
 
 }  // namespace
