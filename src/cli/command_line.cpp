@@ -167,7 +167,7 @@ std::string parser_words(CLI::App& app, const std::string& first, const CLI::Par
     if (dynamic_cast<const CLI::ExcludesError*>(&e)) {
         static const std::regex excludes("(\\S+) excludes (\\S+)");
         if (std::regex_match(what, m, excludes))
-            return fmt::format("{} and {} cannot be given together: each makes the other do nothing", m[1].str(), m[2].str());
+            return fmt::format("{} and {} cannot be given together: give one of the two", m[1].str(), m[2].str());
     }
     if (dynamic_cast<const CLI::RequiredError*>(&e)) {
         static const std::regex required("(\\S+) is required");
