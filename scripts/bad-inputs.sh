@@ -273,14 +273,17 @@ timed() {
   end=$(date +%s%N)
   local line
   if [ "$code" -eq 0 ]; then line="(works) $($pick -n 1 out.txt)"; else line=$(head -n 1 err.txt); fi
-  printf '| `dragon %s` | %s | %s s | %s |\n' "$*" "$code" "$(awk -v ns=$((end - start)) 'BEGIN { printf "%.2g", ns / 1e9 }')" \
+  printf '| `dragon %s` | %s | %s s | %s |\n' "$*" "$code" "$(awk -v ns=$((end - start)) 'BEGIN { t = ns / 1e9; if (t >= 10) printf "%.0f", t; else printf "%.2g", t }')" \
     "${line//|/\\|}"
   rm -rf out.* a.* x.*
 }
 
-printf '\n## Slow inputs, timed\n\nWall time of each run when this file was made (%s cores, %s build), and the answer\n' "$(nproc)" \
-  "$(grep -m1 CMAKE_BUILD_TYPE: "$(dirname "$dragon")/../CMakeCache.txt" 2>/dev/null | cut -d= -f2 || echo unknown)"
-printf 'line it printed.\n\n| Input | Exit | Time | Answer |\n|---|---|---|---|\n'
+build_type=$(grep -m1 CMAKE_BUILD_TYPE: "$(dirname "$dragon")/../CMakeCache.txt" 2>/dev/null | cut -d= -f2 || true)
+printf '\n## Slow inputs, timed\n\nWall time of each run when this file was made, by the %s build on %s cores (load average\n' \
+  "${build_type:-unknown}" "$(nproc)"
+printf '%s as they started: other work on the machine slows them), and the answer line it printed.\n' \
+  "$(cut -d' ' -f1 /proc/loadavg)"
+printf '\n| Input | Exit | Time | Answer |\n|---|---|---|---|\n'
 timed_last turnaround --speed 100
 timed_last turnaround --bench-count 10000
 timed max-speed --bench-count 10000
