@@ -6,11 +6,11 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "cli/wording.hpp"
 #include "cli/answers.hpp"
 #include "cli/commands.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
+#include "cli/wording.hpp"
 #include "dragon/tables.hpp"
 #include "dragon/turnaround.hpp"
 

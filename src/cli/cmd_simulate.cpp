@@ -3,11 +3,11 @@
 
 #include <fmt/format.h>
 
-#include "cli/wording.hpp"
 #include "cli/commands.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
+#include "cli/wording.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/tables.hpp"

@@ -5,13 +5,13 @@
 
 #include <fmt/format.h>
 
-#include "cli/wording.hpp"
 #include "cli/commands.hpp"
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
 #include "cli/sweep_merge.hpp"
 #include "cli/sweep_plot.hpp"
 #include "cli/sweep_run.hpp"
+#include "cli/wording.hpp"
 #include "dragon/atomic_file.hpp"
 
 namespace dragon::cli {

@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "cli/wording.hpp"
 #include "cli/commands.hpp"
 #include "cli/contact_search.hpp"
 #include "cli/report.hpp"
@@ -15,6 +14,7 @@
 #include "cli/render_flags.hpp"
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
+#include "cli/wording.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/path.hpp"

@@ -1,4 +1,3 @@
-#include "cli/wording.hpp"
 #include "cli/sweep_plot.hpp"
 
 #include <algorithm>
@@ -7,6 +6,8 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+
+#include "cli/wording.hpp"
 
 namespace dragon::cli {
 

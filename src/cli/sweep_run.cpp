@@ -1,4 +1,3 @@
-#include "cli/wording.hpp"
 #include "cli/sweep_run.hpp"
 
 #include <cstdio>
@@ -8,6 +7,7 @@
 
 #include "cli/progress.hpp"
 #include "cli/status.hpp"
+#include "cli/wording.hpp"
 #include "dragon/atomic_file.hpp"
 
 namespace dragon::cli {
