@@ -11,6 +11,7 @@
 #include "dragon/collision.hpp"
 #include "dragon/executor.hpp"
 #include "dragon/progress.hpp"
+#include "dragon/window.hpp"
 
 namespace dragon {
 
@@ -22,20 +23,42 @@ std::vector<Frame> simulate_table(const Simulation& sim, double t0, double t1, d
 void simulate_table_into(const Simulation& sim, double t0, double t1, double dt, std::vector<Frame>& frames,
                          Executor* executor = nullptr);
 
-// Q2: the first moment two non-adjacent benches touch, searched over [t_from, t_to].
+// The window an analysis of this path looks at by default: on the plain spiral from t = 0 as far
+// as the dragon can follow it (an open end, +inf m), on the turnaround path kTurnaroundWindow.
+RunWindow default_window(PathKind kind);
+
+// A window cut to the valid motion: the head travel looked at, and where the end of the valid
+// motion cut the window short.
+struct WindowCut {
+    double from = 0.0, to = 0.0;       // m of head travel
+    std::optional<Jam> before, after;  // the jams that cut it at each end
+    Searched searched(double head_speed) const;
+};
+// Throws InputError ("time range start", "time range end": the end as given) for an end that is
+// not a finite number (the end may be +inf: as far as the motion goes, where it ends), a start
+// past the end of the valid motion or an end before its beginning, or a window holding no
+// moment of it.
+WindowCut cut_window(const Simulation& sim, const RunWindow& window);
+
+// Q2: the first moment two non-adjacent benches touch. The search runs in head travel, so the
+// contact (its benches, point, head radius, travel) is the same at any head speed and its time
+// is travel / speed.
 struct Contact {
     double time;
     int bench_a, bench_b;
     double head_radius;
     Vec2 point = Vec2::Zero();  // contact witness point
-    Frame frame;    // the whole chain at that moment
+    Frame frame;    // the whole chain at that moment (speeds at the scenario's head speed)
     int steps = 0;  // clearance evaluations the search used
-    // How closely `time` is known, s: tol::contact_time, finer for a head faster than 1 m/s
-    // (at most that many metres of head travel), coarser only where t's own rounding is larger.
+    // How closely `time` is known, s: tol::travel / head speed, coarser only where t's own
+    // rounding is larger.
     double tolerance = 0.0;
+    double travel = 0.0;            // m: the head's travel from t = 0 then
+    double travel_tolerance = 0.0;  // m: how closely `travel` is known (tol::travel)
 };
-// The search runs on the executor's workers, each taking chunks of the time range; the answer
-// does not depend on the number of workers beyond the tolerance.
+// The search takes the range in stretches of head travel cut at fixed places (multiples of
+// 10 m), spread over the executor's workers: the answer, and the work it took, do not depend on
+// the number of workers, nor on which one finished first.
 using StepObserver = std::function<void(double from, double to)>;
 struct ContactSearchOptions {
     // If given, hears of every interval [from, to] the search has declared contact-free by its
@@ -51,11 +74,40 @@ struct ContactSearchOptions {
 // otherwise): clamp `t_to` to valid_range().to to search as far as the dragon can go.
 std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to,
                                      const ContactSearchOptions& options = {});
+// The same over head travel [x_from, x_to], m (both within Simulation::valid_range's travel).
+std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from, double x_to,
+                                            const ContactSearchOptions& options = {});
+
+// Q2 as `dragon collide` asks it: the first contact over a window, cut to the valid motion.
+struct CollideAnswer {
+    std::optional<Contact> contact;
+    RunWindow asked;   // the window as given
+    Searched window;   // the stretch searched: the window cut to the valid motion
+    // The end of the valid motion where it cut the window short and nothing touched before it.
+    std::optional<Jam> jam;
+};
+// Benches that already overlap where a search for the first contact starts: the chain collides
+// (before that moment), so the window holds no first contact to report. An InputError on the
+// window's start for a command (field "time range start"); a verdict on the scenario for a
+// sweep's map, as min-pitch calls such a pitch "collides".
+struct OverlapAtStart : InputError {
+    OverlapAtStart(const std::string& start, int a, int b, double overlap);
+    int bench_a, bench_b;
+    double depth;  // how deep they overlap, m
+};
+// Throws InputError as cut_window does, and OverlapAtStart when two benches already overlap
+// where the window starts: their first contact lies before it.
+CollideAnswer collide(const Simulation& sim, const RunWindow& window, Executor* executor = nullptr);
+// The motion's first contact: collide over the path's default window (default_window). This is
+// the one event every command reports as the first contact: collide and turnaround by default,
+// the contest's Q2, a picture of the collision, a film's caption.
+CollideAnswer first_contact_of_motion(const Simulation& sim, Executor* executor = nullptr);
 
 // When the head front handle reaches the turning space's boundary coiling in: on the plain
 // spiral the moment its radius is the scenario's turn_radius (before t = 0 if it starts inside),
-// on the turnaround path t = 0 (the turn starts there).
+// on the turnaround path t = 0 (the turn starts there). boundary_travel: the head's travel then, m.
 double boundary_time(const Simulation& sim);
+double boundary_travel(const Simulation& sim);
 
 // Q3: smallest pitch for which the head reaches the turning-space boundary without a collision.
 struct PitchInterval {
@@ -96,10 +148,6 @@ struct BoundaryRun {
     bool feasible() const { return !contact && !jam; }
 };
 BoundaryRun run_to_boundary(Scenario s, double pitch);
-// When the head front handle reaches the turning space's edge: on the plain spiral, where it
-// is turn_radius from the centre (negative if it starts inside); on the turnaround path t = 0,
-// where the turn begins by definition.
-double boundary_time(const Simulation& sim);
 // The first contact of that run (none also when the run jams first).
 std::optional<Contact> contact_before_boundary(Scenario s, double pitch);
 // The first scan's pitch grid, m: feasibility windows narrower than this can slip between two

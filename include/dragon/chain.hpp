@@ -41,12 +41,18 @@ Rect bench_rect(const BenchSpec& spec, int bench, const Vec2& front, const Vec2&
 // The stretch of time over which the dragon follows its path (dragon/valid_motion.hpp).
 struct ValidRange {
     double from = 0.0, to = 0.0;       // s: the motion is continuous on [from, to]
+    double from_travel = 0.0, to_travel = 0.0;  // m of head travel: the same range
     std::optional<Jam> before, after;  // what ends it at each side; nullopt: the path's end, or never
 };
 
 // A scenario made runnable: its path, and the head's arc position as a function of time.
 // The motion is anchored at t = 0: it is valid from there on, forwards and backwards, until a
 // handle would have to jump. Frames are refused outside that range.
+//
+// The chain's shape depends only on how far the head has travelled from where it is at t = 0;
+// the head's speed sets the clock, t = travel / speed. Everything a Simulation searches for (the
+// end of its valid motion here; first contacts, clearances and speed ratios in the analyses) is
+// searched in travel, so it is the same event, bit for bit, at any head speed.
 class Simulation {
 public:
     explicit Simulation(const Scenario& s);
@@ -59,6 +65,13 @@ public:
     // turnaround path the moment the head begins the turn).
     double head_arc(double t) const { return start_arc_ + scenario_.head_speed * t; }
     double start_arc() const { return start_arc_; }
+    // The head's travel from its place at t = 0 by time t, m, and the time of a travel, s.
+    double travel(double t) const { return scenario_.head_speed * t; }
+    double time_of(double travel) const { return travel / scenario_.head_speed; }
+    // The same motion with the head at another speed (throws InputError for a speed that is not
+    // a finite number > 0): every frame the same at every travel, the valid range the same in
+    // travel, and shared, so that what either has searched the other knows.
+    Simulation at_speed(double head_speed) const;
     // The latest time the head stays on the path (the spiral's centre; +inf on the turnaround).
     double end_time() const;
 
@@ -66,6 +79,9 @@ public:
     // and the whole chain within kMaxReach of the spiral's centre (the turnaround path is endless,
     // but far out its points lose precision).
     void require_on_path(double t, const char* what) const;
+    // travel(t), for a t within the valid motion (or at its end) kept within it in travel too:
+    // the time of a jam, converted back, may round one step past the jam's travel.
+    double travel_within(double t) const;
 
     // The whole valid range: searched once, on first use (a few milliseconds), then kept (copies
     // of a Simulation share it).
@@ -73,8 +89,12 @@ public:
     // The jam met between t = 0 and t (on either side of 0), if any. Searches only as far as t
     // needs, and remembers how far it has looked.
     std::optional<Jam> jam_before(double t) const;
+    // The same for a head travel x, m.
+    std::optional<Jam> jam_before_travel(double x) const;
     // require_on_path, and throws InputError naming the jam if t lies past one.
     void require_valid(double t, const char* what) const;
+    // The same for a head travel x, m (PastTheValidMotion names the time x / speed).
+    void require_valid_travel(double x, const char* what) const;
     // The latest time the motion is valid: valid_range().to.
     double valid_end() const { return valid_range().to; }
     // [t0, t1] cut to the valid motion, and the jam that cut it (the later end's, if both did).
@@ -85,10 +105,20 @@ public:
         std::optional<Jam> jam;
     };
     Span clip_to_valid(double t0, double t1, const char* from_what, const char* to_what) const;
+    // The same for a range of head travel [x0, x1], m, with the jam at each end that cut it, and
+    // cut at the spiral's centre too.
+    struct TravelSpan {
+        double from, to;
+        std::optional<Jam> before, after;
+    };
+    TravelSpan clip_travel(double x0, double x1, const char* from_what, const char* to_what) const;
 
     // The chain at time t; throws InputError unless t is within the valid range (require_valid).
     Frame frame(double t) const;
     void frame_into(double t, Frame& out) const;
+    // The chain at head travel x, m (frame.time = x / speed): the same positions at any speed.
+    Frame frame_at_travel(double x) const;
+    void frame_at_travel_into(double x, Frame& out) const;
 
     // The same motion with only benches 1..k solved (k clamped to 1..bench_count): their frames
     // are the leading part of this one's, at a fraction of the cost. Its valid range stays this
@@ -99,7 +129,10 @@ public:
 
 private:
     struct Validity;  // what the searches have found so far, shared by copies
-    std::optional<Jam> jam_toward(double t, bool whole) const;
+    // The jam on one side of t = 0 (forward: ahead), after its walk has reached head arc s (or
+    // the side's end when `whole`); nullopt if none found there.
+    std::optional<Jam> side_jam(double s, bool forward, bool whole) const;
+    void require_arc_on_path(double s, const char* what, const std::string& value) const;
 
     Scenario scenario_;
     std::shared_ptr<const Path> path_;
@@ -116,8 +149,10 @@ std::string describe(const Jam& j);
 // and the jam, for an application to word (allowed() words it in the library's terms).
 struct PastTheValidMotion : InputError {
     PastTheValidMotion(const char* field, double t, const Jam& j);
+    // The same for a value as given ("120 m" of head travel, say).
+    PastTheValidMotion(const char* field, const std::string& value, const Jam& j);
     Jam jam;
-    bool ahead;  // the jam lies ahead of t = 0 (the motion valid until it), else behind
+    bool ahead;  // jam.ahead: the motion is valid until it, else from it
 };
 
 }  // namespace dragon

@@ -14,6 +14,8 @@
 #include "dragon/progress.hpp"
 #include "dragon/scenario.hpp"
 #include "dragon/valid_motion.hpp"
+#include "dragon/window.hpp"
+#include "dragon/analyses.hpp"
 
 namespace dragon {
 
@@ -112,9 +114,14 @@ std::vector<TurnStudyRow> length_vs_entry_radius(double pitch, double turn_radiu
 // ratio) searched the whole way through (find_jam).
 void followability(std::vector<TurnStudyRow>& rows, double pitch, const BenchSpec& bench, double head_speed);
 
+// Can this dragon follow the scenario's own S-curve (sim on the turnaround path) all the way
+// through? Where its valid motion ends if not: the jam behind t = 0 first (the dragon cannot
+// reach the turn as simulated), else the one ahead. The same jam every command reports.
+std::optional<Jam> turnaround_jam(const Simulation& sim);
+
 struct TurnaroundStudy {
     SCurve design;
-    std::optional<Jam> design_jam;  // where the valid motion ends on the scenario's own S-curve
+    std::optional<Jam> design_jam;  // turnaround_jam: where the valid motion ends on the scenario's own S-curve
     std::vector<TurnStudyRow> by_ratio;
     std::vector<TurnStudyRow> by_entry;
     double ratio_spread;    // largest minus smallest S-curve length over by_ratio, m
@@ -126,25 +133,31 @@ TurnaroundStudy study_turnaround(const Scenario& s);
 // max_radius,followable,jam_time,jam_handle,jam_kind), written all-or-nothing.
 void write_study_csv(const TurnaroundStudy& study, const std::string& path);
 
-// Is the turnaround collision-free, and how close do benches come? The smallest clearance
-// between non-adjacent benches over t in [t0, t1] (coarse scan, each local minimum refined by
-// golden section), and the exact first-contact search over the same run.
+// Is the turnaround collision-free, and how close do benches come before they touch? The first
+// contact over a window of the run (as collide finds it over the same window), and the smallest
+// clearance between non-adjacent benches up to it, or over the whole window when there is none
+// (past a contact the benches overlap, and a "clearance" there means nothing). Searched in head
+// travel: the same at any head speed, with times scaled by 1 / speed.
 struct RunClearance {
-    double distance;      // smallest clearance, m (negative: overlap); when no two benches come
-                          // within the scan's cutoff (0.5 m), the cutoff, with bench_a = bench_b = 0
-    double time;          // when, s
-    int bench_a, bench_b; // the closest pair then (1..N); 0 when none came within the cutoff
-    bool collision_free;  // no contact anywhere in [from, to] (first_contact found none)
-    double scan_step;     // s
-    int evaluations;      // frames whose clearance was computed
-    // The range looked at, s: [t0, t1] cut to the valid motion, and the jam that cut it.
-    double from = 0.0, to = 0.0;
-    std::optional<Jam> jam;
+    // Smallest clearance, m: 0 at the first contact when there is one. When no two benches come
+    // within the scan's cutoff (0.5 m), the cutoff, with bench_a = bench_b = 0.
+    double distance = 0.0;
+    double time = 0.0;         // when, s
+    double travel = 0.0;       // the head's travel then, m
+    int bench_a = 0, bench_b = 0;  // the closest pair then (1..N); 0 when none came within the cutoff
+    std::optional<Contact> first_contact;  // the window's first contact, if any
+    bool collision_free() const { return !first_contact; }
+    double scan_step = 0.0;    // s
+    double scan_travel = 0.0;  // m of head travel: the scan's spacing (each local minimum then refined)
+    int evaluations = 0;       // frames whose clearance the scan and its refinement computed
+    Searched window;           // the window cut to the valid motion
+    std::optional<Jam> jam;    // where the end of the valid motion cut it
 };
-// Over [t0, t1] cut to the valid motion (Simulation::clip_to_valid). `progress` hears of the
-// coarse scan's samples (most of the time taken). The exact search, where the scan cannot
-// certify the run, runs on `executor` (null: default_executor()).
-RunClearance min_clearance(const Scenario& s, double t0 = -100.0, double t1 = 100.0,
+// Over `window` cut to the valid motion (cut_window). `progress` hears of the scan's samples
+// (most of the time taken). The first-contact search runs on `executor` (null:
+// default_executor()). Throws InputError as cut_window does, and ("clearance time range") for a
+// window too long to scan (over 1e8 bench checks).
+RunClearance min_clearance(const Scenario& s, const RunWindow& window = kTurnaroundWindow,
                            const WorkProgress& progress = {}, Executor* executor = nullptr);
 
 // Q5: the largest head speed with every handle at or under `limit`. The speed ratio
@@ -157,20 +170,24 @@ struct MaxSpeed {
     std::vector<int> tied;  // every handle within 1e-12 (relative) of the largest speed then
                             // (handles on one arc move at the same speed)
     double time;        // when, on the scenario's own timeline (head at head_speed, t = 0 at the turn), s
-    double head_arc;    // head's arc position then (= time * head_speed), m
+    double travel;      // the head's travel from t = 0 then, m
+    double head_arc;    // head's arc position then, m
     double scan_step;   // coarse scan step in time, s
+    double scan_travel; // the same as head travel, m
     int candidates;     // local maxima of the coarse scan refined
     int evaluations;    // chains solved
-    // The range searched, s: [t0, t1] cut to the valid motion (Simulation::valid_range), and the
-    // jam that cut it, if one did. When that jam is a vanishing root, the rear handle's speed
-    // grows without bound as it nears: no head speed keeps every handle under any limit.
-    double from = 0.0, to = 0.0;
+    // The window searched: the one asked for cut to the valid motion, and the jam that cut it,
+    // if one did. When the valid motion's own handle races there (speed_unbounded_at), its
+    // speed grows without bound as the jam nears: no head speed keeps every handle under any limit.
+    Searched window;
     std::optional<Jam> jam;
     bool unbounded = false;
 };
-// Searches t in [t0, t1] on the scenario's timeline (the scenario's kind is taken as turnaround).
-// Speeds are signed along the path; the limit applies to their magnitude.
-MaxSpeed max_head_speed(const Scenario& s, double limit, double t0 = -100.0, double t1 = 100.0);
+// Searches `window` of the turnaround run (the scenario's kind is taken as turnaround), in head
+// travel: everything but the times is the same at any head speed. Speeds are signed along the
+// path; the limit applies to their magnitude. Throws InputError for a limit that is not a finite
+// speed > 0, as cut_window does, and ("time range") for a window too long to scan.
+MaxSpeed max_head_speed(const Scenario& s, double limit, const RunWindow& window = kTurnaroundWindow);
 
 // The largest handle speed (magnitude) over the head speed at one head arc position, and which handle.
 struct SpeedRatio {

@@ -25,15 +25,31 @@ enum class JamKind { root_vanishes, nearer_root };
 // "root_vanishes" or "nearer_root".
 const char* to_string(JamKind k);
 
-// The end of the valid motion.
+// The end of the valid motion. One event is described one way whichever side it was found
+// from: `kind` is what happens as time runs forward (a jam behind t = 0, found by a search
+// going back, is the reverse of what that search saw: a root born there going back is the
+// followed root vanishing going forward, and the other way round), and `ahead` says on which
+// side of it the motion is valid.
 struct Jam {
     double time = 0.0;       // s: the last moment known to be continuous, within `tolerance` of the end
+    double travel = 0.0;     // m: the head's travel from t = 0 then (time * head speed; the geometry's own clock)
     double head_arc = 0.0;   // m: the head's arc position then
     int handle = 0;          // 1..N: the handle that would have to jump; its link's front is handle - 1
-    JamKind kind = JamKind::root_vanishes;
+    JamKind kind = JamKind::root_vanishes;  // as time runs forward
+    // The motion is valid until the jam (it lies ahead of where the search began, t = 0 for a
+    // Simulation); false: valid from it on.
+    bool ahead = true;
     Vec2 point = Vec2::Zero();  // where the circle of the link's length about handle - 1 touches the path
     double tolerance = 0.0;  // s: the motion stops within this much of `time`, on the far side of it
+    double travel_tolerance = 0.0;  // m: the same as head travel
 };
+
+// Does the valid motion's own handle race without bound as the jam nears? Yes where the root it
+// follows vanishes there: going forward at a jam ahead (root_vanishes), going back at a jam
+// behind (seen forward, a nearer root is born: the followed root's twin, on the valid side).
+inline bool speed_unbounded_at(const Jam& j) {
+    return j.ahead ? j.kind == JamKind::root_vanishes : j.kind == JamKind::nearer_root;
+}
 
 // How a jam search went (for tests and benchmarks).
 struct JamSearchStats {
@@ -45,8 +61,9 @@ struct JamSearchStats {
 // nullopt when the motion stays continuous all along. The chain there is the one the
 // nearest-root rule gives at s_from. s_to may be infinite: the search then ends where the motion
 // is certified continuous for ever (the path ahead, or behind, curves too gently for any link to
-// lose its root). Times are on the timeline head arc = start_arc + head_speed * t, and a jam is
-// located to tol::contact_time (and to that many metres of head travel).
+// lose its root). Times are on the timeline head arc = start_arc + head_speed * t; the search
+// itself runs in arc position, so where it finds a jam does not depend on the head's speed, and
+// a jam is located to tol::travel metres of head travel.
 //
 // Method. A link whose path turns by less than pi/2 between its handles keeps a simple, unique
 // root; its step lasts until that turning could reach pi/2 at its current rate of change. Other

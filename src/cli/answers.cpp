@@ -5,7 +5,6 @@
 
 #include <fmt/format.h>
 
-#include "cli/contact_search.hpp"
 #include "dragon/tables.hpp"
 
 namespace dragon::cli {
@@ -32,53 +31,23 @@ Json rows_json(const std::vector<TurnStudyRow>& rows) {
 
 }  // namespace
 
-void check_collide_range(double from, std::optional<double> to) {
-    if (!std::isfinite(from))
-        throw InputError(fmt::format("--from {} is not allowed: give a finite time in seconds", from));
-    if (to && !std::isfinite(*to))
-        throw InputError(fmt::format("--to {} is not allowed: give a finite time in seconds, or leave --to out "
-                                     "to search as far as the dragon can follow its path", *to));
-    if (to && !(*to > from))
-        throw InputError(fmt::format("--to {} is not allowed: it must be after --from {}", *to, from));
+Json contact_json(const Contact& c) {
+    return {{"time", c.time},
+            {"travel", c.travel},
+            {"benches", {c.bench_a, c.bench_b}},
+            {"head_radius", c.head_radius},
+            {"point", point(c.point)},
+            {"tolerance", c.tolerance}};
 }
 
-CollideSearch search_collision(const Simulation& sim, double from, std::optional<double> to, Executor* executor) {
-    check_collide_range(from, to);
-    CollideSearch out;
-    out.from = from;
-    if (to) {
-        const Simulation::Span span = sim.clip_to_valid(from, *to, "time range start", "time range end");
-        out.to = span.to;
-        out.jam = span.jam;
-    } else {
-        const ValidRange valid = sim.valid_range();
-        if (!std::isfinite(valid.to))
-            throw InputError("--to is needed here: on the turnaround path the dragon's motion never ends");
-        sim.require_valid(from, "time range start");
-        out.to = valid.to;
-        out.jam = valid.after;
-        if (!(out.to > from))
-            throw InputError(fmt::format("--from {} is not allowed: the search would be empty, {}", from,
-                                         out.jam ? jam_sentence(*out.jam) : "the head reaches the spiral's centre then"));
-    }
-    ContactSearchOptions options;
-    options.executor = executor;
-    out.contact = first_contact_after(sim, from, out.to, options);
-    if (out.contact) out.jam.reset();  // the contact comes first: the range was not cut short before it
-    return out;
-}
-
-Json collide_answer(const CollideSearch& r, bool with_handles) {
+Json collide_answer(const CollideAnswer& r, bool with_handles) {
     const std::optional<Contact>& c = r.contact;
-    Json answer = {{"time", c ? Json(c->time) : Json(nullptr)},
-                   {"benches", c ? Json({c->bench_a, c->bench_b}) : Json(nullptr)},
-                   {"head_radius", c ? Json(c->head_radius) : Json(nullptr)},
-                   {"point", c ? point(c->point) : Json(nullptr)},
-                   {"tolerance", c ? Json(c->tolerance) : Json(nullptr)},
-                   {"evaluations", c ? Json(c->steps) : Json(nullptr)},
-                   {"from", r.from},
-                   {"to", r.to},
-                   {"jam", jam_json(r.jam)}};
+    Json answer = c ? contact_json(*c)
+                    : Json{{"time", nullptr}, {"travel", nullptr}, {"benches", nullptr}, {"head_radius", nullptr},
+                           {"point", nullptr}, {"tolerance", nullptr}};
+    answer["evaluations"] = c ? Json(c->steps) : Json(nullptr);
+    add_window(answer, r.window);
+    answer["jam"] = jam_json(r.jam);
     if (with_handles) {
         Json handles = c ? Json::array() : Json(nullptr);
         if (c)
@@ -131,15 +100,18 @@ Json turnaround_answer(const SCurve& d, const std::optional<Jam>& design_jam, co
         answer["conclusion"] = turnaround_conclusion(*study);
     }
     if (clear) {
+        answer["first_contact"] = clear->first_contact ? contact_json(*clear->first_contact) : Json(nullptr);
         // No pair within the scan's cutoff: the distance is only a lower bound, with no pair or time.
         const bool near = clear->bench_a > 0;
-        answer["clearance"] = {{"distance", clear->distance},
-                               {"at_least", !near},
-                               {"time", near ? Json(clear->time) : Json(nullptr)},
-                               {"benches", near ? Json({clear->bench_a, clear->bench_b}) : Json(nullptr)},
-                               {"collision_free", clear->collision_free},
-                               {"from", clear->from},
-                               {"to", clear->to}};
+        Json c = {{"distance", clear->distance},
+                  {"at_least", !near},
+                  {"time", near ? Json(clear->time) : Json(nullptr)},
+                  {"travel", near ? Json(clear->travel) : Json(nullptr)},
+                  {"benches", near ? Json({clear->bench_a, clear->bench_b}) : Json(nullptr)},
+                  {"collision_free", clear->collision_free()},
+                  {"evaluations", clear->evaluations}};
+        add_window(c, clear->window);
+        answer["clearance"] = c;
     }
     // The end of the valid motion where it cuts the clearance run short, else on the design.
     answer["jam"] = jam_json(clear && clear->jam ? clear->jam : design_jam);
@@ -147,20 +119,22 @@ Json turnaround_answer(const SCurve& d, const std::optional<Jam>& design_jam, co
 }
 
 Json max_speed_answer(const MaxSpeed& m, double limit) {
-    return {{"max_head_speed", m.max_head_speed},
-            {"ratio", m.unbounded ? Json(nullptr) : Json(m.ratio)},
-            {"unbounded", m.unbounded},
-            {"handle", m.handle},
-            {"time", m.time},
-            {"tied", m.tied},
-            {"head_arc", m.head_arc},
-            {"limit", limit},
-            {"from", m.from},
-            {"to", m.to},
-            {"jam", jam_json(m.jam)},
-            {"scan_step", m.unbounded ? Json(nullptr) : Json(m.scan_step)},
-            {"candidates", m.candidates},
-            {"evaluations", m.evaluations}};
+    Json answer = {{"max_head_speed", m.max_head_speed},
+                   {"ratio", m.unbounded ? Json(nullptr) : Json(m.ratio)},
+                   {"unbounded", m.unbounded},
+                   {"handle", m.handle},
+                   {"time", m.time},
+                   {"travel", m.travel},
+                   {"tied", m.tied},
+                   {"head_arc", m.head_arc},
+                   {"limit", limit}};
+    add_window(answer, m.window);
+    answer["jam"] = jam_json(m.jam);
+    answer["scan_step"] = m.unbounded ? Json(nullptr) : Json(m.scan_step);
+    answer["scan_travel"] = m.unbounded ? Json(nullptr) : Json(m.scan_travel);
+    answer["candidates"] = m.candidates;
+    answer["evaluations"] = m.evaluations;
+    return answer;
 }
 
 }  // namespace dragon::cli

@@ -6,6 +6,7 @@
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
+#include "cli/window_flags.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/tables.hpp"
@@ -15,8 +16,7 @@ namespace dragon::cli {
 namespace {
 struct CollideOptions {
     ScenarioFlags scenario;
-    double from = 0.0;
-    std::optional<double> to;
+    WindowFlags window;
     bool json = false;
     std::string out;
     std::optional<int> digits;
@@ -35,10 +35,9 @@ void register_collide(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<CollideOptions>();
     CLI::App* sub = app.add_subcommand("collide", "Q2: the first moment two benches touch, to 1e-9 s");
     opt->scenario.add_to(sub, ScenarioUse::either_path());
-    sub->add_option("--from", opt->from, "Search from this time, s (default 0)");
-    sub->add_option("--to", opt->to,
-                    "Search up to this time, s (default: as far as the dragon can follow its path, the spiral's "
-                    "centre or the end of its valid motion; needed on the turnaround path if that never ends)");
+    opt->window.add_to(sub, "Search from here (default: 0 on the spiral, -100m on the turnaround path)",
+                       "Search up to here (default: on the spiral as far as the dragon can follow it, its centre "
+                       "or the end of its valid motion; 100m on the turnaround path)");
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
     sub->add_option("-o,--out", opt->out,
                     "Also write the moment's handles (.xlsx: result2 layout, .csv, .json); with no contact, "
@@ -52,22 +51,25 @@ void register_collide(CLI::App& app, Registry& reg) {
                                          *opt->digits, opt->out.empty() ? "without -o" : "with " + ext));
         const int digits = checked_digits(opt->digits);
         const Scenario s = opt->scenario.resolve();
-        check_collide_range(opt->from, opt->to);
+        const RunWindow window = opt->window.resolve(default_window(s.path.kind));
         if (!opt->out.empty()) {
             if (ext != ".csv" && ext != ".json" && ext != ".xlsx")
                 throw InputError(fmt::format("--out {} has extension '{}': use .csv, .json or .xlsx", opt->out, ext));
             AtomicFile probe(opt->out);  // fail on an unwritable path before any work
         }
         const Simulation sim(s);
-        const CollideSearch search = search_collision(sim, opt->from, opt->to);
+        const CollideAnswer search = collide(sim, window);
         const std::optional<Contact>& c = search.contact;
         if (!c) {
             if (!opt->out.empty()) write_no_contact(opt->out);
             if (opt->json) {
                 print_json(collide_answer(search, true));
             } else {
-                fmt::print("no collision between t = {} s and t = {} s\n", format_time(search.from),
-                           search.jam ? format_resolved(search.to, search.jam->tolerance) : format_time(search.to));
+                fmt::print("no collision between t = {} s and t = {} s (head travel {} m to {} m)\n",
+                           format_time(search.window.from),
+                           search.jam ? format_resolved(search.window.to, search.jam->tolerance)
+                                      : format_time(search.window.to),
+                           format_time(search.window.from_travel), format_time(search.window.to_travel));
                 if (search.jam) fmt::print("the search ends there: {}\n", jam_sentence(*search.jam));
             }
             if (!opt->out.empty()) status(opt->quiet, "no contact: wrote {} with the table's header and no rows", opt->out);
@@ -81,8 +83,9 @@ void register_collide(CLI::App& app, Registry& reg) {
         if (opt->json) {
             print_json(collide_answer(search, true));
         } else {
-            fmt::print("first contact at t = {} s: bench {} touches bench {}; head radius {:.6f} m\n",
-                       format_resolved(c->time, c->tolerance), c->bench_a, c->bench_b, c->head_radius);
+            fmt::print("first contact at t = {} s (head travel {} m): bench {} touches bench {}; head radius {:.6f} m\n",
+                       format_resolved(c->time, c->tolerance), format_resolved(c->travel, c->travel_tolerance),
+                       c->bench_a, c->bench_b, c->head_radius);
             print_single_frame(fmt::format("handles at t = {} s", format_resolved(c->time, c->tolerance)), c->frame);
         }
         return 0;

@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
+#include "cli/window_flags.hpp"
 #include "cli/wording.hpp"
 #include "dragon/tables.hpp"
 #include "dragon/turnaround.hpp"
@@ -20,7 +21,7 @@ namespace {
 struct MaxSpeedOptions {
     ScenarioFlags scenario;
     double limit = 2.0;
-    double from = -100.0, to = 100.0;
+    WindowFlags window;
     bool json = false;
 };
 }  // namespace
@@ -31,13 +32,13 @@ void register_max_speed(CLI::App& app, Registry& reg) {
         "max-speed", "Q5: the largest head speed with every handle at or under the limit");
     opt->scenario.add_to(sub, ScenarioUse::turnaround_only());
     sub->add_option("--limit", opt->limit, "Handle speed limit, m/s (default 2)");
-    sub->add_option("--from", opt->from, "Search from this time of the Q4 run, s (default -100)");
-    sub->add_option("--to", opt->to, "Search to this time of the Q4 run, s (default 100)");
+    opt->window.add_to(sub, "Search the Q4 run from here (default -100m: 100 s before the turn at 1 m/s)",
+                       "Search up to here (default 100m)");
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
     reg["max-speed"] = [opt]() {
         Scenario s = opt->scenario.resolve();
         s.path.kind = PathKind::turnaround;
-        const MaxSpeed m = max_head_speed(s, opt->limit, opt->from, opt->to);
+        const MaxSpeed m = max_head_speed(s, opt->limit, opt->window.resolve(kTurnaroundWindow));
         if (opt->json) {
             print_json(max_speed_answer(m, opt->limit));
             return 0;
@@ -54,14 +55,13 @@ void register_max_speed(CLI::App& app, Registry& reg) {
         std::string who = fmt::format("handle {}", m.handle);
         if (m.tied.size() > 1) who = fmt::format("handles {} (equal speeds)", fmt::join(m.tied, ", "));
         fmt::print("  reached by {} at t = {:.6f} s of the Q4 run (head {:.6f} m along the path "
-                   "from the turn's start)\n", who, m.time, m.head_arc);
-        // The window is in time at the scenario's head speed: say how much of the path that is,
-        // since a slow head may never reach the S-curve in it.
-        fmt::print("  searched t = {}..{} s (the head from {:.6g} m to {:.6g} m along the path at {} m/s): "
-                   "coarse scan every {:.4g} s, {} refined, {} solved\n", format_time(m.from),
-                   format_time(m.to), s.head_speed * m.from, s.head_speed * m.to, s.head_speed, m.scan_step,
-                   count_of(m.candidates, "local maximum", "local maxima"), count_of(m.evaluations, "chain"));
-        if (m.jam) fmt::print("  the search ends there, short of t = {} s: {}\n", opt->to, jam_sentence(*m.jam));
+                   "from the turn's start)\n", who, m.time, m.travel);
+        fmt::print("  searched t = {}..{} s (the head from {} m to {} m along the path at {} m/s): coarse scan "
+                   "every {:.4g} m, {} refined, {} solved\n", format_time(m.window.from),
+                   format_time(m.window.to), format_time(m.window.from_travel), format_time(m.window.to_travel),
+                   s.head_speed, m.scan_travel, count_of(m.candidates, "local maximum", "local maxima"),
+                   count_of(m.evaluations, "chain"));
+        if (m.jam) fmt::print("  the search ends there: {}\n", jam_sentence(*m.jam));
         return 0;
     };
 }

@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
-#include "cli/contact_search.hpp"
 #include "cli/render_flags.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
@@ -26,18 +25,15 @@ struct RenderOptions {
     bool quiet = false;
 };
 
-// The first contact on this scenario's path: the plain spiral from t = 0 as far as the dragon
-// can follow it, the turnaround from -100 s to 100 s (the contest's window, cut the same way).
+// The motion's first contact (the plain spiral from t = 0 as far as the dragon can follow it, the
+// turnaround 100 m of head travel either side of the turn): the one every command reports.
 Contact find_contact(const Simulation& sim) {
-    const bool turn = sim.scenario().path.kind == PathKind::turnaround;
-    const Simulation::Span span = turn ? sim.clip_to_valid(-100.0, 100.0, "time range start", "time range end")
-                                       : sim.clip_to_valid(0.0, sim.end_time(), "time range start", "time range end");
-    auto c = first_contact_after(sim, span.from, span.to);
-    if (!c)
-        throw InputError(fmt::format("--collision: no two benches touch between {} s and {} s on this scenario{}; "
-                                     "use --time instead", format_time(span.from), format_time(span.to),
-                                     span.jam ? " (" + jam_sentence(*span.jam) + ")" : ""));
-    return *c;
+    const CollideAnswer a = first_contact_of_motion(sim);
+    if (!a.contact)
+        throw InputError(fmt::format("--collision: no two benches touch between t = {} s and {} s on this scenario{}; "
+                                     "use --time instead", format_time(a.window.from), format_time(a.window.to),
+                                     a.jam ? " (" + jam_sentence(*a.jam) + ")" : ""));
+    return *a.contact;
 }
 }  // namespace
 

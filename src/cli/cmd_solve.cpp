@@ -1,12 +1,14 @@
 // dragon solve: all five contest questions on one scenario: the workbooks, summary.json and
-// the paper-style tables.
+// the paper-style tables. The questions are the library's (dragon/contest.hpp): which windows
+// and ranges, what runs in parallel, where the valid motion or a first contact cuts one short.
+// This file has the flags, the words and the files.
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <functional>
-#include <future>
 #include <memory>
 #include <optional>
 #include <set>
@@ -14,14 +16,16 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "cli/answers.hpp"
 #include "cli/commands.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
-#include "dragon/analyses.hpp"
+#include "cli/window_flags.hpp"
+#include "cli/wording.hpp"
 #include "dragon/atomic_file.hpp"
+#include "dragon/contest.hpp"
 #include "dragon/tables.hpp"
-#include "dragon/turnaround.hpp"
 
 namespace dragon::cli {
 
@@ -31,14 +35,20 @@ struct SolveOptions {
     ScenarioFlags scenario;
     std::string dir = "out";
     std::vector<std::string> only;
+    std::optional<double> lo, hi;
+    double grid = kDefaultPitchGrid;
+    double limit = 2.0;
+    WindowFlags window;
     bool quiet = false;
 };
 
-// Every `every`-th frame of a table sampled each `step` seconds, for the printed excerpt.
-std::vector<const Frame*> pick(const std::vector<Frame>& frames, double step, double every) {
+// The frames of a table at every `every` seconds from its first, for the printed excerpt.
+std::vector<const Frame*> pick(const std::vector<Frame>& frames, double every) {
     std::vector<const Frame*> out;
-    const int stride = static_cast<int>(std::lround(every / step));
-    for (size_t k = 0; k < frames.size(); k += static_cast<size_t>(stride)) out.push_back(&frames[k]);
+    if (frames.empty()) return out;
+    const double first = frames.front().time;
+    for (const Frame& f : frames)
+        if (std::fmod(f.time - first, every) == 0.0) out.push_back(&f);
     return out;
 }
 
@@ -53,12 +63,38 @@ void write_text(AtomicFile& out, const std::string& text) {
 
 // The scenario values the questions asked for read: a value none of them reads is not checked
 // (a file's pitch does not matter to --only q4), and a flag for one is refused.
-ScenarioValues values_read_by(const std::function<bool(const char*)>& wanted) {
+ScenarioValues values_read_by(const ContestOptions& o) {
     ScenarioValues v = 0;
-    if (wanted("q1") || wanted("q2")) v |= values_read(PathKind::spiral);
-    if (wanted("q3")) v |= value::bench | value::head_speed | value::start_turn | value::turn_radius;
-    if (wanted("q4") || wanted("q5")) v |= values_read(PathKind::turnaround);
+    if (o.asks(Question::q1) || o.asks(Question::q2)) v |= values_read(PathKind::spiral);
+    if (o.asks(Question::q3)) v |= value::bench | value::head_speed | value::start_turn | value::turn_radius;
+    if (o.asks(Question::q4) || o.asks(Question::q5)) v |= values_read(PathKind::turnaround);
     return v;
+}
+
+// "rows 0..300 s" and, when the window was cut, what was left out and why (the end of the
+// valid motion), and when rows run past the first contact, from where the benches overlap.
+std::string table_notes(const ContestTable& t) {
+    std::string out;
+    if (t.rows_left_out > 0 && t.jam)
+        out += fmt::format("\n  {} {} of {}..{} s left out: {}", t.rows_left_out, t.rows_left_out == 1 ? "row" : "rows",
+                           format_time(t.asked_from), format_time(t.asked_to), jam_sentence(*t.jam));
+    if (t.past_contact)
+        out += fmt::format("\n  rows after t = {} s are past the first contact (bench {} touches bench {}): from "
+                           "there on benches overlap", format_resolved(t.past_contact->time, t.past_contact->tolerance),
+                           t.past_contact->bench_a, t.past_contact->bench_b);
+    return out;
+}
+
+Json table_json(const ContestTable& t, const char* file) {
+    Json j = {{"file", file},
+              {"times", t.frames.empty() ? Json(nullptr)
+                                         : Json::array({t.frames.front().time, t.frames.back().time})},
+              {"rows", t.frames.size()},
+              {"rows_left_out", t.rows_left_out}};
+    add_window(j, t.window);
+    j["jam"] = jam_json(t.jam);
+    j["past_contact"] = t.past_contact ? contact_json(*t.past_contact) : Json(nullptr);
+    return j;
 }
 
 }  // namespace
@@ -72,24 +108,45 @@ void register_solve(CLI::App& app, Registry& reg) {
     sub->add_option("-o,--out", opt->dir, "Output folder (created if missing; default out)");
     sub->add_option("--only", opt->only, "Answer only these questions: q1 q2 q3 q4 q5 (default all)")
         ->delimiter(',');
+    sub->add_option("--lo", opt->lo, "Q3: smallest pitch searched, m (default 0.35, or just above the smallest "
+                                     "pitch this dragon can start from)");
+    sub->add_option("--hi", opt->hi, "Q3: largest pitch searched, m (default 0.55)");
+    sub->add_option("--grid", opt->grid, "Q3: pitch spacing of the first scan, m (default 0.0025)");
+    sub->add_option("--limit", opt->limit, "Q5: handle speed limit, m/s (default 2)");
+    opt->window.add_to(sub, "Q4's table and Q5's search from here (default -100m: 100 s before the turn at 1 m/s)",
+                       "Q4's table and Q5's search up to here (default 100m)");
     add_quiet_flag(sub, opt->quiet);
     reg["solve"] = [opt]() {
         const std::set<std::string> all{"q1", "q2", "q3", "q4", "q5"};
-        for (const std::string& q : opt->only)
+        ContestOptions contest;
+        if (!opt->only.empty()) contest.questions.clear();
+        for (const std::string& q : opt->only) {
             if (!all.count(q))
                 throw InputError(fmt::format("--only {} is not allowed: the questions are q1, q2, q3, q4, q5", q));
-        const std::function<bool(const char*)> wanted = [&](const char* q) {
-            return opt->only.empty() || std::find(opt->only.begin(), opt->only.end(), q) != opt->only.end();
+            contest.questions.push_back(static_cast<Question>(q[1] - '1'));
+        }
+        const auto refuse_unless = [&](bool given, Question q, const std::string& flag) {
+            if (given && !contest.asks(q))
+                throw InputError(fmt::format("{} is not used: no question of --only {} reads it", flag,
+                                             fmt::join(opt->only, ",")));
         };
-        Scenario s = opt->scenario.resolve(values_read_by(wanted),
+        refuse_unless(opt->lo || opt->hi, Question::q3, "--lo/--hi");
+        refuse_unless(opt->grid != kDefaultPitchGrid, Question::q3, "--grid");
+        refuse_unless(opt->limit != 2.0, Question::q5, "--limit");
+        refuse_unless(opt->window.given() && !contest.asks(Question::q4), Question::q5, "--from/--to");
+        Scenario s = opt->scenario.resolve(values_read_by(contest),
                                            fmt::format("no question of --only {} reads it", fmt::join(opt->only, ",")));
-        s.path.kind = PathKind::spiral;
+        contest.pitch_lo = opt->lo;
+        contest.pitch_hi = opt->hi;
+        contest.pitch_grid = opt->grid;
+        contest.speed_limit = opt->limit;
+        contest.turn_window = opt->window.resolve(kTurnaroundWindow);
+
         namespace fs = std::filesystem;
         std::error_code ec;
         fs::create_directories(opt->dir, ec);
         if (!fs::is_directory(opt->dir))
             throw InputError(fmt::format("-o {} is not allowed: the folder cannot be created", opt->dir));
-
         // Every target is checked, and its temporary file made, before any work: a folder or an
         // unwritable name in the way fails here with no file touched. They are renamed into
         // place together at the end, so the set is all new or all old.
@@ -101,117 +158,100 @@ void register_solve(CLI::App& app, Registry& reg) {
             written.push_back(name);
             return files.back().get();
         };
-        AtomicFile* result1 = target(wanted("q1"), "result1.xlsx");
-        AtomicFile* result2 = target(wanted("q2"), "result2.xlsx");
-        AtomicFile* result4 = target(wanted("q4"), "result4.xlsx");
+        AtomicFile* result1 = target(contest.asks(Question::q1), "result1.xlsx");
+        AtomicFile* result2 = target(contest.asks(Question::q2), "result2.xlsx");
+        AtomicFile* result4 = target(contest.asks(Question::q4), "result4.xlsx");
         AtomicFile* summary_json = target(true, "summary.json");
+        // The long workbooks (most of the time: libxlsxwriter formats and deflates every cell)
+        // are written as soon as their tables are ready, while the other questions are answered.
+        // (Nothing is written on stderr meanwhile: libxlsxwriter's closing mutes it.)
+        if (result1) contest.on_q1_table = [result1](const std::vector<Frame>& t) { write_result_xlsx(t, *result1); };
+        if (result4) contest.on_q4_table = [result4](const std::vector<Frame>& t) { write_result_xlsx(t, *result4); };
+        const ContestAnswers a = solve_contest(s, contest);
         Json summary = Json::object();
 
-        // The two long tables and their workbooks (most of the time: libxlsxwriter formats and
-        // deflates every cell) are made on threads of their own while this one answers Q2, Q3
-        // and Q5; everything is printed afterwards, in the questions' order. (Nothing is written
-        // on stderr meanwhile: libxlsxwriter's closing mutes it, see tables/workbooks.cpp.)
-        Scenario turn = s;
-        turn.path.kind = PathKind::turnaround;
-        // Q1: coiling in, 0..300 s (the simulation only if Q1 or Q2 reads it: --only q4 does
-        // not read the plain spiral's values, which may not even make one).
-        std::optional<Simulation> coil;
-        if (result1 || result2) coil.emplace(s);
-        const double q1_end = result1 ? std::min(300.0, std::floor(coil->valid_end())) : 0.0;
-        std::future<std::vector<Frame>> q1_table, q4_table;
-        if (result1) {
-            q1_table = std::async(std::launch::async, [&] {
-                std::vector<Frame> q1 = simulate_table(*coil, 0.0, q1_end, 1.0);
-                write_result_xlsx(q1, *result1);
-                return q1;
-            });
-        }
-        // Q4: the turnaround, -100..100 s.
-        if (result4) {
-            q4_table = std::async(std::launch::async, [&] {
-                const Simulation tsim(turn);
-                std::vector<Frame> q4 = simulate_table(tsim, -100.0, 100.0, 1.0);
-                write_result_xlsx(q4, *result4);
-                return q4;
-            });
-        }
-        // Meanwhile, here: Q2, Q3 and Q5.
-        std::optional<Contact> q2;
-        if (result2) {
-            q2 = first_contact(*coil, 0.0, coil->valid_end());
-            // With no contact, the contest's layout with no rows, so no older answer is left
-            // looking like this one's.
-            write_result2_xlsx(q2 ? q2->frame : Frame{}, *result2);
-        }
-        std::optional<MinPitch> q3;
-        if (wanted("q3")) q3 = min_pitch(s, 0.35, 0.55);
-        std::optional<MaxSpeed> q5;
-        if (wanted("q5")) q5 = max_head_speed(turn, 2.0);
-
-        if (result1) {
-            const std::vector<Frame> q1 = q1_table.get();
-            print_frame_table("Q1: positions (m) and speeds (m/s) while coiling in", pick(q1, 1.0, 60.0));
-            summary["q1"] = {{"file", "result1.xlsx"}, {"times", {0, q1_end}}};
+        // Q1: coiling in.
+        if (const std::optional<ContestTable>& q1 = a.q1) {
+            print_frame_table(fmt::format("Q1: positions (m) and speeds (m/s) while coiling in, t = {}..{} s{}",
+                                          q1->frames.empty() ? "-" : format_time(q1->frames.front().time),
+                                          q1->frames.empty() ? "-" : format_time(q1->frames.back().time),
+                                          table_notes(*q1)),
+                              pick(q1->frames, 60.0 / s.head_speed == std::round(60.0 / s.head_speed)
+                                                   ? 60.0 / s.head_speed : 60.0));
+            summary["q1"] = table_json(*q1, "result1.xlsx");
         }
 
         // Q2: the termination time.
-        if (result2) {
-            const Simulation& sim = *coil;
-            if (const std::optional<Contact>& c = q2) {
+        if (const std::optional<CollideAnswer>& q2 = a.q2) {
+            if (const std::optional<Contact>& c = q2->contact) {
                 fmt::print("\nQ2: benches {} and {} touch at t = {} s (head radius {:.6f} m)\n", c->bench_a,
                            c->bench_b, format_resolved(c->time, c->tolerance), c->head_radius);
                 print_single_frame("", c->frame);
-                summary["q2"] = {{"file", "result2.xlsx"},
-                                 {"time", c->time},
-                                 {"benches", {c->bench_a, c->bench_b}},
-                                 {"head_radius", c->head_radius}};
             } else {
-                fmt::print("\nQ2: no collision as far as the dragon can follow the spiral (t = {} s)\n",
-                           format_time(sim.valid_end()));
-                summary["q2"] = {{"file", "result2.xlsx"}, {"time", nullptr}, {"jam", jam_json(sim.valid_range().after)}};
+                fmt::print("\nQ2: no collision as far as the dragon can follow the spiral (t = {} s){}\n",
+                           format_time(q2->window.to), q2->jam ? ": " + jam_sentence(*q2->jam) : "");
             }
+            // With no contact, the contest's layout with no rows, so no older answer is left
+            // looking like this one's.
+            write_result2_xlsx(q2->contact ? q2->contact->frame : Frame{}, *result2);
+            summary["q2"] = collide_answer(*q2, false);
+            summary["q2"]["file"] = "result2.xlsx";
         }
 
         // Q3: the minimum pitch.
-        if (q3) {
+        if (const std::optional<MinPitch>& q3 = a.q3) {
             const MinPitch& m = *q3;
+            if (!a.q3_range->moved.empty())
+                fmt::print("\nQ3: searched {}..{} m: {}", m.search_lo, m.search_hi, a.q3_range->moved);
             // Resolved to 1e-9 m: ten decimals.
             if (std::isnan(m.pitch))
-                fmt::print("\nQ3: no change from collision to collision-free in 0.35..0.55 m (the minimum pitch lies {})\n",
-                           m.below_range ? "at or below 0.35 m" : "above 0.55 m");
+                fmt::print("\nQ3: no change from collision to collision-free in {}..{} m (the minimum pitch lies {})\n",
+                           m.search_lo, m.search_hi,
+                           m.below_range ? fmt::format("at or below {} m", m.search_lo)
+                                         : fmt::format("above {} m", m.search_hi));
             else
                 fmt::print("\nQ3: minimum pitch {:.10f} m to reach radius {} m collision-free\n", m.pitch,
                            s.path.turn_radius);
-            Json intervals = Json::array();
-            for (const PitchInterval& i : m.intervals) {
+            for (const PitchInterval& i : m.intervals)
                 fmt::print("  [{:.10f}, {:.10f}] m  {}\n", i.lo, i.hi, i.feasible ? "collision-free" : "collides");
-                intervals.push_back({{"lo", i.lo}, {"hi", i.hi}, {"feasible", i.feasible}});
-            }
-            summary["q3"] = {{"pitch", std::isnan(m.pitch) ? Json(nullptr) : Json(m.pitch)},
-                             {"below_range", m.below_range},
-                             {"above_range", m.above_range},
-                             {"intervals", intervals}};
+            if (m.jam)
+                fmt::print("  at pitch {} m (the largest of the scan where this happens) the dragon cannot follow the "
+                           "spiral to radius {} m at all: {}\n", m.jam->pitch, s.path.turn_radius,
+                           jam_sentence(m.jam->jam));
+            summary["q3"] = min_pitch_answer(m, s.path.turn_radius);
+            summary["q3"]["range_moved"] = a.q3_range->moved.empty() ? Json(nullptr) : Json(a.q3_range->moved);
         }
 
-        // Q4 and Q5 run on the turnaround path.
-        if (result4) {
-            const std::vector<Frame> q4 = q4_table.get();
-            const SCurve sc = design_s_curve(turn);
-            fmt::print("\nQ4: S-curve r1 = {:.6f} m, r2 = {:.6f} m, length {:.6f} m\n", sc.r1, sc.r2, sc.length);
-            print_frame_table("Q4: positions (m) and speeds (m/s) around the turn", pick(q4, 1.0, 50.0));
-            summary["q4"] = {{"file", "result4.xlsx"}, {"r1", sc.r1}, {"r2", sc.r2}, {"length", sc.length}};
+        // Q4: the S-curve and the table around the turn.
+        if (const std::optional<ContestTable>& q4 = a.q4) {
+            const SCurve& sc = *a.q4_design;
+            fmt::print("\nQ4: S-curve r1 = {:.6f} m, r2 = {:.6f} m, length {:.6f} m{}\n", sc.r1, sc.r2, sc.length,
+                       a.q4_jam ? "; this dragon cannot follow it: " + jam_sentence(*a.q4_jam) : "");
+            print_frame_table(fmt::format("Q4: positions (m) and speeds (m/s) around the turn, t = {}..{} s{}",
+                                          q4->frames.empty() ? "-" : format_time(q4->frames.front().time),
+                                          q4->frames.empty() ? "-" : format_time(q4->frames.back().time),
+                                          table_notes(*q4)),
+                              pick(q4->frames, 50.0 / s.head_speed == std::round(50.0 / s.head_speed)
+                                                   ? 50.0 / s.head_speed : 50.0));
+            summary["q4"] = table_json(*q4, "result4.xlsx");
+            summary["q4"]["r1"] = sc.r1;
+            summary["q4"]["r2"] = sc.r2;
+            summary["q4"]["length"] = sc.length;
+            summary["q4"]["followable"] = !a.q4_jam;
+            summary["q4"]["design_jam"] = jam_json(a.q4_jam);
         }
 
         // Q5: the speed limit.
-        if (q5) {
+        if (const std::optional<MaxSpeed>& q5 = a.q5) {
             const MaxSpeed& v = *q5;
-            fmt::print("\nQ5: largest head speed {:.6f} m/s (speed ratio {:.6f} at handle {}, t = {:.6f} s)\n",
-                       v.max_head_speed, v.ratio, v.handle, v.time);
-            summary["q5"] = {{"max_head_speed", v.max_head_speed},
-                             {"ratio", v.unbounded ? Json(nullptr) : Json(v.ratio)},
-                             {"handle", v.handle},
-                             {"time", v.time},
-                             {"jam", jam_json(v.jam)}};
+            if (v.unbounded)
+                fmt::print("\nQ5: no head speed keeps every handle at or under {} m/s: {}\n", contest.speed_limit,
+                           jam_sentence(*v.jam));
+            else
+                fmt::print("\nQ5: largest head speed {:.6f} m/s (speed ratio {:.6f} at handle {}, t = {:.6f} s){}\n",
+                           v.max_head_speed, v.ratio, v.handle, v.time,
+                           v.jam ? "; searched only up to the end of the valid motion: " + jam_sentence(*v.jam) : "");
+            summary["q5"] = max_speed_answer(v, contest.speed_limit);
         }
         write_text(*summary_json, json_text(summary, 2) + "\n");
         std::vector<AtomicFile*> set;

@@ -113,6 +113,12 @@ void register_sweep(CLI::App& app, Registry& reg) {
     sub->add_option("--hi", opt->request.hi, "min-pitch: largest pitch searched, m, or width+X (default 0.55)");
     sub->add_option("--grid", opt->request.grid, "min-pitch: pitch spacing of the first scan, m (default 0.0025)");
     sub->add_option("--limit", opt->request.limit, "max-speed: handle speed limit, m/s (default 2)");
+    sub->add_option("--from", opt->request.from,
+                    "collide, turnaround, max-speed: window start, as their --from (a time, s, or head travel: -100m)")
+        ->type_name("T|Xm");
+    sub->add_option("--to", opt->request.to,
+                    "collide, turnaround, max-speed: window end, as their --to (a time, s, or head travel: 100m)")
+        ->type_name("T|Xm");
     sub->add_option("-o,--out", opt->output.out,
                     "Rows to this .csv, each made durable as it finishes (into OUT.csv.partial, renamed when all are "
                     "there); without it, onto stdout");

@@ -13,6 +13,7 @@
 #include "cli/scenario_flags.hpp"
 #include "cli/wording.hpp"
 #include "cli/status.hpp"
+#include "cli/window_flags.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/tables.hpp"
 #include "dragon/turnaround.hpp"
@@ -27,7 +28,7 @@ struct TurnaroundOptions {
     ScenarioFlags scenario;
     bool json = false;
     bool skip_clearance = false;
-    double from = -100.0, to = 100.0;
+    WindowFlags window;
     std::string out;
     bool quiet = false;
 };
@@ -64,18 +65,24 @@ void print_text(const TurnaroundStudy& st, const std::optional<RunClearance>& cl
     fmt::print("\n  {}\n", turnaround_conclusion(st));
 
     if (!clear) return;
-    const std::string range = fmt::format("t = {}..{} s", format_time(clear->from),
-                                          clear->jam ? format_resolved(clear->to, clear->jam->tolerance)
-                                                     : format_time(clear->to));
-    if (clear->bench_a == 0) {
-        fmt::print("\nClearance over {}: no two benches come within {:.6f} m; {}\n", range, clear->distance,
-                   clear->collision_free ? "collision-free" : "benches COLLIDE");
+    const Searched& w = clear->window;
+    const std::string range = fmt::format("t = {}..{} s (head travel {}..{} m)", format_time(w.from),
+                                          clear->jam && clear->jam->ahead ? format_resolved(w.to, clear->jam->tolerance)
+                                                                          : format_time(w.to),
+                                          format_time(w.from_travel), format_time(w.to_travel));
+    if (const std::optional<Contact>& c = clear->first_contact) {
+        fmt::print("\nFirst contact over {}: bench {} touches bench {} at t = {} s (head travel {} m), at "
+                   "({:.6f}, {:.6f}); benches COLLIDE\n", range, c->bench_a, c->bench_b,
+                   format_resolved(c->time, c->tolerance), format_resolved(c->travel, c->travel_tolerance),
+                   c->point.x(), c->point.y());
+    } else if (clear->bench_a == 0) {
+        fmt::print("\nClearance over {}: no two benches come within {:.6f} m; collision-free\n", range,
+                   clear->distance);
     } else {
-        fmt::print("\nClearance over {}: smallest {:.6f} m, benches {} and {} at t = {:.6f} s; {}\n", range,
-                   clear->distance, clear->bench_a, clear->bench_b, clear->time,
-                   clear->collision_free ? "collision-free" : "benches COLLIDE");
+        fmt::print("\nClearance over {}: smallest {:.6f} m, benches {} and {} at t = {:.6f} s; collision-free\n",
+                   range, clear->distance, clear->bench_a, clear->bench_b, clear->time);
     }
-    if (clear->jam) fmt::print("  the check ends there: {}\n", jam_sentence(*clear->jam, clear->jam->time > 0.0));
+    if (clear->jam) fmt::print("  the check ends there: {}\n", jam_sentence(*clear->jam));
 }
 
 }  // namespace
@@ -87,10 +94,13 @@ void register_turnaround(CLI::App& app, Registry& reg) {
     opt->scenario.add_to(sub, ScenarioUse::turnaround_only());
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
     sub->add_option("-o,--out", opt->out, "Write the length study as CSV to this file");
-    auto* skip = sub->add_flag("--no-clearance", opt->skip_clearance, "Skip the clearance check over the run");
-    // The range is the clearance check's: without the check it would do nothing.
-    sub->add_option("--from", opt->from, "Clearance check from this time, s (default -100)")->excludes(skip);
-    sub->add_option("--to", opt->to, "Clearance check to this time, s (default 100)")->excludes(skip);
+    auto* skip = sub->add_flag("--no-clearance", opt->skip_clearance,
+                               "Skip the check for a first contact and the clearance before it");
+    // The window is the check's: without the check it would do nothing.
+    opt->window.add_to(sub, "Check from here (default -100m: 100 s before the turn at 1 m/s)",
+                       "Check up to here (default 100m)");
+    opt->window.from_option()->excludes(skip);
+    opt->window.to_option()->excludes(skip);
     add_quiet_flag(sub, opt->quiet);
     reg["turnaround"] = [opt]() {
         Scenario s = opt->scenario.resolve();
@@ -98,15 +108,13 @@ void register_turnaround(CLI::App& app, Registry& reg) {
         if (!opt->out.empty() && extension_of(opt->out) != ".csv")
             throw InputError(fmt::format("--out {} is not allowed: the length study is written as .csv",
                                          opt->out));
-        if (!std::isfinite(opt->from) || !std::isfinite(opt->to) || opt->to <= opt->from)
-            throw InputError(fmt::format("--from {} --to {} is not allowed: the time range must be "
-                                         "finite and non-empty", opt->from, opt->to));
+        const RunWindow window = opt->window.resolve(kTurnaroundWindow);
         if (!opt->out.empty()) AtomicFile probe(opt->out);  // fail on an unwritable path first
         const TurnaroundStudy st = study_turnaround(s);
         std::optional<RunClearance> clear;
         if (!opt->skip_clearance) {
             ProgressLine progress("samples", opt->quiet);  // long chains and fast heads take seconds
-            clear = min_clearance(s, opt->from, opt->to,
+            clear = min_clearance(s, window,
                                   [&progress](std::int64_t done, std::int64_t total) { progress.update(done, total); });
         }
         if (!opt->out.empty()) write_study_csv(st, opt->out);

@@ -8,7 +8,6 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
-#include "cli/contact_search.hpp"
 #include "cli/report.hpp"
 #include "cli/progress.hpp"
 #include "cli/render_flags.hpp"
@@ -58,19 +57,20 @@ End resolve_to(const std::string& to, const Simulation& sim, double from) {
     const bool turn = sim.scenario().path.kind == PathKind::turnaround;
     const std::string what = to.empty() ? (turn ? "100" : "collision") : to;
     if (what == "collision") {
-        // As far as the dragon can follow its path; where that never ends (the turnaround
-        // path, followed for ever), an hour ahead, far past any run the contest asks about.
-        constexpr double endless_search = 3600.0;  // s
+        // The motion's first contact: the one every command reports (collide, turnaround, render
+        // --collision), searched over the path's default window.
         sim.require_valid(from, "time range start");
-        const double end = sim.valid_end();
-        const double until = std::isfinite(end) ? end : from + endless_search;
-        const std::optional<Contact> c = first_contact_after(sim, from, until);
-        if (!c) {
-            const std::optional<Jam> jam = sim.valid_range().after;
-            throw InputError(fmt::format("--to collision: no two benches touch between t = {} s and {} s{}", from,
-                                         format_time(until), jam ? " (" + jam_sentence(*jam) + ")" : ""));
-        }
-        return {c->time, CollisionMark{c->bench_a, c->bench_b, c->point}};
+        const CollideAnswer a = first_contact_of_motion(sim);
+        if (!a.contact)
+            throw InputError(fmt::format("--to collision: no two benches touch between t = {} s and {} s{}",
+                                         format_time(a.window.from), format_time(a.window.to),
+                                         a.jam ? " (" + jam_sentence(*a.jam) + ")" : ""));
+        const Contact& c = *a.contact;
+        if (!(c.time > from))
+            throw InputError(fmt::format("--to collision is not allowed with --from {}: the first contact, bench {} "
+                                         "touching bench {}, is at t = {} s, before it", from, c.bench_a, c.bench_b,
+                                         format_resolved(c.time, c.tolerance)));
+        return {c.time, CollisionMark{c.bench_a, c.bench_b, c.point}};
     }
     if (what == "boundary") {
         const double t = boundary_time(sim);

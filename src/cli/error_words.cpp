@@ -73,7 +73,7 @@ std::string word(const InputError& e) {
     const FlagWords& w = flag->second;
     // A moment past the end of the valid motion: the jam in the CLI's own words.
     if (const auto* past = dynamic_cast<const PastTheValidMotion*>(&e))
-        return fmt::format("{} {} is not allowed: {}", w.flag, e.value(), jam_sentence(past->jam, past->ahead));
+        return fmt::format("{} {} is not allowed: {}", w.flag, e.value(), jam_sentence(past->jam));
     // A file whose extension names no format: said as the other output flags say it.
     if (e.field() == "map file")
         return fmt::format("{} {} has extension '{}': {}", w.flag, e.value(), extension_of(e.value()), e.allowed());

@@ -60,8 +60,10 @@ void print_single_frame(const std::string& title, const Frame& frame) {
 std::string format_resolved(double v, double resolution) {
     int decimals = 9;
     if (resolution > 0.0 && std::isfinite(resolution))
-        // A resolution a hair over a power of ten (1.0000001e-10 from a bracket's rounding) counts as it.
-        decimals = std::clamp(static_cast<int>(std::floor(-std::log10(resolution) + 0.01)) - 1, 0, 17);
+        // A resolution a hair over a power of ten (1.0000001e-10 from a bracket's rounding) counts
+        // as it. Nine decimals at most (1e-9 s, the contest's precision): the searches resolve
+        // 1e-11 m of head travel, which is finer than that for any head speed over 1 cm/s.
+        decimals = std::clamp(static_cast<int>(std::floor(-std::log10(resolution) + 0.01)) - 1, 0, 9);
     return fmt::format("{:.{}f}", v, decimals);
 }
 
@@ -136,15 +138,24 @@ void print_json(const Json& answer) { fmt::print("{}\n", json_text(answer)); }
 Json jam_json(const std::optional<Jam>& j) {
     if (!j) return nullptr;
     return Json{{"time", j->time},
+                {"travel", j->travel},
                 {"handle", j->handle},
                 {"kind", to_string(j->kind)},
+                {"ahead", j->ahead},
                 {"point", {j->point.x(), j->point.y()}},
                 {"tolerance", j->tolerance}};
 }
 
-std::string jam_sentence(const Jam& j, bool ahead) {
-    return fmt::format("the dragon can follow its path only {} t = {} s, where {}", ahead ? "until" : "from",
+std::string jam_sentence(const Jam& j) {
+    return fmt::format("the dragon can follow its path only {} t = {} s, where {}", j.ahead ? "until" : "from",
                        format_resolved(j.time, j.tolerance), describe(j));
+}
+
+void add_window(Json& answer, const Searched& w) {
+    answer["from"] = w.from;
+    answer["to"] = w.to;
+    answer["from_travel"] = w.from_travel;
+    answer["to_travel"] = w.to_travel;
 }
 
 int checked_digits(const std::optional<int>& digits) {

@@ -26,7 +26,7 @@ void print_single_frame(const std::string& title, const Frame& frame);
 // outside 0..kMaxDigits.
 int checked_digits(const std::optional<int>& digits);
 
-// v with as many decimals as `resolution` (how closely v is known) supports: 9 for 1e-10.
+// v with as many decimals as `resolution` (how closely v is known) supports, at most 9: 9 for 1e-10.
 std::string format_resolved(double v, double resolution);
 
 // A quantity for the text answers: `decimals` decimals in the usual range (1.246266; at 6
@@ -45,11 +45,16 @@ double meant(double v);
 // `indent` spaces a level.
 std::string json_text(const Json& v, int indent = -1);
 void print_json(const Json& answer);
-// The end of the valid motion as an answer's "jam" key: {"time", "handle", "kind", "point",
-// "tolerance"}, or null.
+// The end of the valid motion as an answer's "jam" key: {"time", "travel", "handle", "kind",
+// "ahead", "point", "tolerance"}, or null. "kind" is what happens as time runs forward; "ahead":
+// the motion is valid until the jam (else from it).
 Json jam_json(const std::optional<Jam>& j);
 // "the dragon can follow its path only until t = 432.917924228 s, where handle 1 can no longer
-// follow handle 0: ..." (from instead of until for a jam met going back).
-std::string jam_sentence(const Jam& j, bool ahead = true);
+// follow handle 0: ..." (from instead of until for a jam behind t = 0). Every command words a
+// jam with this one sentence.
+std::string jam_sentence(const Jam& j);
+// The window an answer searched, both ways: "from", "to" (s) and "from_travel", "to_travel" (m of
+// head travel), added to `answer`.
+void add_window(Json& answer, const Searched& w);
 
 }  // namespace dragon::cli

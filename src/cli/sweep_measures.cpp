@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include "cli/answers.hpp"
-#include "cli/contact_search.hpp"
 #include "cli/scenario_flags.hpp"
 #include "dragon/turnaround.hpp"
 
@@ -15,7 +14,8 @@ namespace dragon::cli {
 
 namespace {
 
-const std::vector<std::string> kJamKeys = {"jam.time", "jam.handle", "jam.kind", "jam.point", "jam.tolerance"};
+const std::vector<std::string> kJamKeys = {"jam.time",  "jam.travel", "jam.handle",   "jam.kind",
+                                           "jam.ahead", "jam.point",  "jam.tolerance"};
 
 std::vector<std::string> with_jam(std::vector<std::string> keys, std::vector<std::string> after = {},
                                   std::vector<std::string> jam_extra = {}) {
@@ -45,9 +45,9 @@ void leaves(const Json& v, const std::string& prefix, std::vector<std::string>& 
 // Each measure as its command runs it, on the calling thread: the sweep spreads the scenarios
 // over the cores, and work nested inside one would only queue behind them. `jam` is set to
 // where the end of the valid motion cut the analysis short.
-Json collide_measure(const Scenario& s, const MeasureOptions&, std::string& jam) {
+Json collide_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
     InlineExecutor here;
-    const CollideSearch search = search_collision(Simulation(s), 0.0, std::nullopt, &here);
+    const CollideAnswer search = collide(Simulation(s), options.window(s.path.kind), &here);
     if (search.jam) jam = "no contact before the end of the valid motion: " + jam_sentence(*search.jam);
     return collide_answer(search, false);
 }
@@ -64,21 +64,20 @@ Json min_pitch_measure(const Scenario& s, const MeasureOptions& options, std::st
     return min_pitch_answer(mp, s.path.turn_radius);
 }
 
-// The command's design, followability and clearance check; its length study (two dozen other
-// S-curves) is the command's to print, not a value of this scenario.
-Json turnaround_measure(const Scenario& s, const MeasureOptions&, std::string& jam) {
+// The command's design, followability and check for a first contact; its length study (two
+// dozen other S-curves) is the command's to print, not a value of this scenario.
+Json turnaround_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
     InlineExecutor here;
     const SCurve design = design_s_curve(s);
-    std::vector<TurnStudyRow> own = length_vs_ratio(s.path.turn_pitch, s.path.turn_radius, {s.path.arc_ratio});
-    followability(own, s.path.turn_pitch, s.bench, s.head_speed);
-    const RunClearance clear = min_clearance(s, -100.0, 100.0, {}, &here);
-    const std::optional<Jam>& j = clear.jam ? clear.jam : own.front().jam;
-    if (j) jam = jam_sentence(*j, j->time > 0.0);
-    return turnaround_answer(design, own.front().jam, clear, nullptr);
+    const std::optional<Jam> design_jam = turnaround_jam(Simulation(s));
+    const RunClearance clear = min_clearance(s, options.window(PathKind::turnaround), {}, &here);
+    const std::optional<Jam>& j = clear.jam ? clear.jam : design_jam;
+    if (j) jam = jam_sentence(*j);
+    return turnaround_answer(design, design_jam, clear, nullptr);
 }
 
 Json max_speed_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
-    const MaxSpeed v = max_head_speed(s, options.limit);
+    const MaxSpeed v = max_head_speed(s, options.limit, options.window(PathKind::turnaround));
     if (v.jam)
         jam = v.unbounded ? fmt::format("no head speed keeps every handle at or under {} m/s: {}", options.limit,
                                         jam_sentence(*v.jam))
@@ -91,7 +90,8 @@ Json max_speed_measure(const Scenario& s, const MeasureOptions& options, std::st
 const std::vector<MeasureInfo>& sweep_measures() {
     static const std::vector<MeasureInfo> all = {
         {"collide", PathKind::spiral, values_read(PathKind::spiral), collide_measure,
-         with_jam({"time", "benches", "head_radius", "point", "tolerance", "evaluations", "from", "to"}), "time",
+         with_jam({"time", "travel", "benches", "head_radius", "point", "tolerance", "evaluations", "from", "to",
+                   "from_travel", "to_travel"}), "time",
          "first contact", "s", true},
         {"min-pitch", PathKind::spiral, ScenarioUse::pitch_search().all(), min_pitch_measure,
          with_jam({"pitch", "below_range", "above_range", "turn_radius", "search", "grid", "intervals"}, {"guarantee"},
@@ -99,13 +99,17 @@ const std::vector<MeasureInfo>& sweep_measures() {
          "pitch", "minimum pitch", "m", false},
         {"turnaround", PathKind::turnaround, ScenarioUse::turnaround_only().all(), turnaround_measure,
          with_jam({"r1", "r2", "length", "ratio", "pitch", "entry_radius", "entry", "exit", "c1", "c2", "joint", "angle1",
-                   "angle2", "length1", "length2", "max_radius", "followable", "clearance.distance",
-                   "clearance.at_least", "clearance.time", "clearance.benches", "clearance.collision_free",
-                   "clearance.from", "clearance.to"}),
+                   "angle2", "length1", "length2", "max_radius", "followable", "first_contact.time",
+                   "first_contact.travel", "first_contact.benches", "first_contact.head_radius", "first_contact.point",
+                   "first_contact.tolerance", "clearance.distance", "clearance.at_least", "clearance.time",
+                   "clearance.travel", "clearance.benches", "clearance.collision_free",
+                   "clearance.evaluations", "clearance.from",
+                   "clearance.to", "clearance.from_travel", "clearance.to_travel"}),
          "clearance.distance", "smallest clearance", "m", true},
         {"max-speed", PathKind::turnaround, ScenarioUse::turnaround_only().all(), max_speed_measure,
-         with_jam({"max_head_speed", "ratio", "unbounded", "handle", "time", "tied", "head_arc", "limit", "from", "to"},
-                  {"scan_step", "candidates", "evaluations"}),
+         with_jam({"max_head_speed", "ratio", "unbounded", "handle", "time", "travel", "tied", "head_arc", "limit",
+                   "from", "to", "from_travel", "to_travel"},
+                  {"scan_step", "scan_travel", "candidates", "evaluations"}),
          "max_head_speed", "largest head speed", "m/s", true},
     };
     return all;
@@ -116,6 +120,13 @@ const MeasureInfo& find_measure(const std::string& name) {
         if (name == m.name) return m;
     throw InputError(fmt::format("--measure {} is not allowed: use collide, min-pitch, turnaround or max-speed",
                                  name.empty() ? "''" : name));
+}
+
+RunWindow MeasureOptions::window(PathKind kind) const {
+    RunWindow w = default_window(kind);
+    if (from) w.from = *from;
+    if (to) w.to = *to;
+    return w;
 }
 
 double PitchBound::at(const Scenario& s) const {

@@ -9,6 +9,7 @@
 
 #include "cli/report.hpp"
 #include "dragon/analyses.hpp"
+#include "dragon/window.hpp"
 
 namespace dragon::cli {
 
@@ -56,6 +57,10 @@ struct MeasureOptions {
     PitchBound lo{0.35, false}, hi{0.55, false};  // min-pitch --lo, --hi
     double grid = kDefaultPitchGrid;              // min-pitch --grid
     double limit = 2.0;                           // max-speed --limit
+    // --from, --to: the window of collide, turnaround and max-speed over their path's default
+    // (default_window), as the commands take them.
+    std::optional<Along> from, to;
+    RunWindow window(PathKind kind) const;
 };
 
 // One measure on one scenario, on the calling thread.

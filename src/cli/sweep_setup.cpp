@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "cli/window_flags.hpp"
+
 namespace dragon::cli {
 
 namespace {
@@ -37,9 +39,11 @@ void take_file_options(const SweepFile& f, const std::string& path, SweepRequest
         else if (o.measure == "min-pitch" && o.key == "hi") req.hi = req.hi.value_or(o.value);
         else if (o.measure == "min-pitch" && o.key == "grid") req.grid = req.grid.value_or(number());
         else if (o.measure == "max-speed" && o.key == "limit") req.limit = req.limit.value_or(number());
+        else if (o.measure == "window" && o.key == "from") req.from = req.from.value_or(o.value);
+        else if (o.measure == "window" && o.key == "to") req.to = req.to.value_or(o.value);
         else
             throw InputError(fmt::format("{} is not an option a sweep takes ([min-pitch] lo, hi, grid; [max-speed] "
-                                         "limit)", where));
+                                         "limit; [window] from, to)", where));
     }
 }
 
@@ -93,6 +97,12 @@ SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags) {
     only_for(req.hi, "--hi", "min-pitch");
     only_for(req.grid ? std::optional<std::string>(fmt::format("{}", *req.grid)) : std::nullopt, "--grid", "min-pitch");
     only_for(req.limit ? std::optional<std::string>(fmt::format("{}", *req.limit)) : std::nullopt, "--limit", "max-speed");
+    const bool windowed = has_measure(measures, "collide") || has_measure(measures, "turnaround") ||
+                          has_measure(measures, "max-speed");
+    for (const auto& [given, flag] : {std::pair{req.from, "--from"}, std::pair{req.to, "--to"}})
+        if (given && !windowed)
+            throw InputError(fmt::format("{} {} is not allowed: it sets the window of collide, turnaround and "
+                                         "max-speed, and this sweep measures none of them", flag, *given));
     for (const Axis& a : grid.axes())
         if (flags.given() & a.parameter->value)
             throw InputError(fmt::format("--{} is not allowed: the sweep varies it (--vary {}=...); give it one way",
@@ -105,6 +115,8 @@ SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags) {
     if (req.hi) options.hi = parse_pitch_bound("--hi", *req.hi);
     if (req.grid) options.grid = *req.grid;
     if (req.limit) options.limit = *req.limit;
+    if (req.from) options.from = parse_along("--from", *req.from);
+    if (req.to) options.to = parse_along("--to", *req.to);
     return {std::move(grid), std::move(measures), base, fixed, options, parse_shard(req.shard.empty() ? "1/1" : req.shard)};
 }
 
@@ -119,6 +131,10 @@ std::string spec_line(const SweepSetup& setup) {
     if (has_measure(setup.measures, "min-pitch"))
         options["min-pitch"] = {{"lo", setup.options.lo.text()}, {"hi", setup.options.hi.text()}, {"grid", setup.options.grid}};
     if (has_measure(setup.measures, "max-speed")) options["max-speed"] = {{"limit", setup.options.limit}};
+    Json window = Json::object();
+    if (setup.options.from) window["from"] = window_end_text(*setup.options.from);
+    if (setup.options.to) window["to"] = window_end_text(*setup.options.to);
+    if (!window.empty()) options["window"] = window;
     Json measures = Json::array();
     for (const MeasureInfo* m : setup.measures) measures.push_back(m->name);
     const Json spec = {{"format", kFormat},
@@ -170,6 +186,10 @@ SweepSetup read_spec_line(const std::string& line, const std::string& file) {
             options.grid = o["min-pitch"].at("grid").get<double>();
         }
         if (o.contains("max-speed")) options.limit = o["max-speed"].at("limit").get<double>();
+        if (o.contains("window")) {
+            if (o["window"].contains("from")) options.from = parse_along("from", o["window"]["from"].get<std::string>());
+            if (o["window"].contains("to")) options.to = parse_along("to", o["window"]["to"].get<std::string>());
+        }
         return {SweepGrid(std::move(axes)), std::move(measures), base, fixed, options,
                 parse_shard(spec.at("shard").get<std::string>())};
     } catch (const InputError& e) {

@@ -30,6 +30,7 @@ struct SweepRequest {
     std::vector<std::string> measures;
     std::optional<std::string> lo, hi;
     std::optional<double> grid, limit;
+    std::optional<std::string> from, to;  // the window of collide, turnaround and max-speed
     std::string shard;                // "K/N", or "" for the whole sweep
 };
 // Throws InputError naming the flag or the file's key at fault: a bad --vary, an unknown or

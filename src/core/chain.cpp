@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/chain_front.hpp"
+#include "core/jam_walk.hpp"
 #include "core/make_path.hpp"
 
 namespace dragon {
@@ -53,13 +54,13 @@ void solve_chain(const Path& path, const BenchSpec& spec, double head_arc, doubl
 }
 
 // What the jam searches have found: the motion is known continuous while the head's arc position
-// is in [behind, ahead]; a side is final once searched to its end (then its jam, if any, ends it).
-// The known bounds are read without the lock on every frame; searches extend them under it.
+// is in [behind, ahead]. Each side has a walk (core/jam_walk.hpp) from the start outwards,
+// made on first use and taken further under the lock as moments farther out are asked about;
+// the bounds are read without the lock on every frame.
 struct Simulation::Validity {
     std::mutex lock;
     std::atomic<double> ahead, behind;
-    std::optional<Jam> jam_ahead, jam_behind;
-    bool ahead_final = false, behind_final = false;
+    std::unique_ptr<jam::Walk> walk_ahead, walk_behind;
     explicit Validity(double start) : ahead(start), behind(start) {}
 };
 
@@ -87,64 +88,76 @@ double Simulation::end_time() const {
 
 void Simulation::require_on_path(double t, const char* what) const {
     if (!std::isfinite(t)) throw InputError(what, error_value(t), "it must be a finite time in seconds");
-    const double s = head_arc(t);
+    require_arc_on_path(head_arc(t), what, error_value(t));
+}
+
+void Simulation::require_arc_on_path(double s, const char* what, const std::string& value) const {
     if (s > path_->s_max()) {
-        throw InputError(what, error_value(t),
+        throw InputError(what, value,
                          fmt::format("the head reaches the end of the path (the spiral's centre) at t = {:.6f} s",
                                      end_time()));
     }
-    if (s < path_->s_min()) throw InputError(what, error_value(t), "it puts the head before the start of the path");
+    if (s < path_->s_min()) throw InputError(what, value, "it puts the head before the start of the path");
     // On the plain spiral -s is the head's arc length from the centre; on the turnaround path
     // it is at most the entry's plus |s|. The tail is a chain's length farther out at most.
     const double reach = entry_length_ + std::abs(s) + scenario_.bench.chain_length();
     if (!(reach <= kMaxReach)) {
-        throw InputError(what, error_value(t),
+        throw InputError(what, value,
                          fmt::format("it puts the chain {:.8g} m along the path from the spiral's centre; at most "
                                      "{:.0f} m keeps positions to 1e-8 m", reach, kMaxReach));
     }
 }
 
-// Searches the side of t = 0 that t is on, from where the last search stopped to t (or to the
-// side's end when `whole`), and returns the jam on it if t lies past it (any jam when `whole`).
-std::optional<Jam> Simulation::jam_toward(double t, bool whole) const {
-    Validity& v = *validity_;
+double Simulation::travel_within(double t) const {
+    const double x = travel(t);
     const bool forward = t >= 0.0;
-    const double s = head_arc(t);
+    const std::optional<Jam> j = side_jam(head_arc(t), forward, false);
+    if (j && (forward ? (t <= j->time && x > j->travel) : (t >= j->time && x < j->travel))) return j->travel;
+    // The spiral's centre likewise: end_time() is on the path.
+    return std::min(x, path_->s_max() - start_arc_);
+}
+
+std::optional<Jam> Simulation::side_jam(double s, bool forward, bool whole) const {
+    Validity& v = *validity_;
     if (!whole && (forward ? s <= v.ahead.load() : s >= v.behind.load())) return std::nullopt;
     const std::lock_guard<std::mutex> hold(v.lock);
-    std::atomic<double>& known = forward ? v.ahead : v.behind;
-    std::optional<Jam>& jam = forward ? v.jam_ahead : v.jam_behind;
-    bool& final = forward ? v.ahead_final : v.behind_final;
-    const bool covered = forward ? s <= known.load() : s >= known.load();
-    if (!final && (whole || !covered)) {
-        const double target = whole ? (forward ? end_time() : -std::numeric_limits<double>::infinity()) : t;
-        const double from = (known.load() - start_arc_) / scenario_.head_speed;
-        jam = find_jam(*path_, scenario_.bench, start_arc_, scenario_.head_speed, from, target);
-        if (jam) {
-            known = jam->head_arc;
-            final = true;
-        } else {
-            known = whole ? (forward ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity())
-                          : s;
-            final = whole;
-        }
-    }
-    // Judged in time: valid_range().to is the jam's time, and frame(valid_range().to) must work
-    // however t -> arc rounds.
-    if (jam && (whole || (forward ? t > jam->time : t < jam->time))) return jam;
-    return std::nullopt;
+    std::unique_ptr<jam::Walk>& walk = forward ? v.walk_ahead : v.walk_behind;
+    const double dir = forward ? 1.0 : -1.0;
+    if (!walk) walk = std::make_unique<jam::Walk>(*path_, scenario_.bench, start_arc_, dir,
+                                                  forward ? path_->s_max() : path_->s_min());
+    walk->advance(whole ? dir * std::numeric_limits<double>::infinity() : s);
+    (forward ? v.ahead : v.behind) = walk->known();
+    if (!walk->found()) return std::nullopt;
+    return jam::to_jam(*walk->found(), dir, start_arc_, scenario_.head_speed);
 }
 
 ValidRange Simulation::valid_range() const {
     ValidRange r;
-    r.after = jam_toward(std::numeric_limits<double>::infinity(), true);
-    r.before = jam_toward(-std::numeric_limits<double>::infinity(), true);
+    r.after = side_jam(std::numeric_limits<double>::infinity(), true, true);
+    r.before = side_jam(-std::numeric_limits<double>::infinity(), false, true);
     r.to = r.after ? r.after->time : end_time();
     r.from = r.before ? r.before->time : -std::numeric_limits<double>::infinity();
+    r.to_travel = r.after ? r.after->travel : travel(r.to);
+    r.from_travel = r.before ? r.before->travel : -std::numeric_limits<double>::infinity();
     return r;
 }
 
-std::optional<Jam> Simulation::jam_before(double t) const { return jam_toward(t, false); }
+// Judged in time: valid_range().to is the jam's time, and frame(valid_range().to) must work
+// however t -> arc rounds.
+std::optional<Jam> Simulation::jam_before(double t) const {
+    const bool forward = t >= 0.0;
+    std::optional<Jam> j = side_jam(head_arc(t), forward, false);
+    if (j && (forward ? t > j->time : t < j->time)) return j;
+    return std::nullopt;
+}
+
+// Judged in travel, likewise.
+std::optional<Jam> Simulation::jam_before_travel(double x) const {
+    const bool forward = x >= 0.0;
+    std::optional<Jam> j = side_jam(start_arc_ + x, forward, false);
+    if (j && (forward ? x > j->travel : x < j->travel)) return j;
+    return std::nullopt;
+}
 
 void Simulation::require_valid(double t, const char* what) const {
     if (!std::isfinite(t)) require_on_path(t, what);
@@ -155,6 +168,13 @@ void Simulation::require_valid(double t, const char* what) const {
         throw PastTheValidMotion(what, t, *j);
     }
     require_on_path(t, what);
+}
+
+void Simulation::require_valid_travel(double x, const char* what) const {
+    if (!std::isfinite(x)) throw InputError(what, error_value(x), "it must be a finite head travel in metres");
+    const double on_path = std::min(x, path_->s_max() - start_arc_);
+    if (const std::optional<Jam> j = jam_before_travel(on_path)) throw PastTheValidMotion(what, time_of(x), *j);
+    require_arc_on_path(start_arc_ + x, what, fmt::format("{} m of head travel", x));
 }
 
 Simulation::Span Simulation::clip_to_valid(double t0, double t1, const char* from_what, const char* to_what) const {
@@ -173,12 +193,30 @@ Simulation::Span Simulation::clip_to_valid(double t0, double t1, const char* fro
     return span;
 }
 
+Simulation::TravelSpan Simulation::clip_travel(double x0, double x1, const char* from_what, const char* to_what) const {
+    if (x0 >= 0.0) require_valid_travel(x0, from_what);
+    if (x1 <= 0.0) require_valid_travel(x1, to_what);
+    TravelSpan span{x0, x1, std::nullopt, std::nullopt};
+    if (x0 < 0.0) span.before = jam_before_travel(x0);
+    if (span.before) span.from = span.before->travel;
+    if (x1 > 0.0) span.after = jam_before_travel(x1);
+    if (span.after) span.to = span.after->travel;
+    // Past the spiral's centre the head has no place: the range ends where it arrives there.
+    span.to = std::min(span.to, path_->s_max() - start_arc_);
+    require_arc_on_path(start_arc_ + span.from, from_what, fmt::format("{} m of head travel", x0));
+    require_arc_on_path(start_arc_ + span.to, to_what, fmt::format("{} m of head travel", x1));
+    return span;
+}
+
 PastTheValidMotion::PastTheValidMotion(const char* field, double t, const Jam& j)
-    : InputError(field, error_value(t),
-                 fmt::format("the dragon can follow its path only {} t = {:.9f} s, where {}", t >= 0.0 ? "until" : "from",
+    : PastTheValidMotion(field, error_value(t), j) {}
+
+PastTheValidMotion::PastTheValidMotion(const char* field, const std::string& value, const Jam& j)
+    : InputError(field, value,
+                 fmt::format("the dragon can follow its path only {} t = {:.9f} s, where {}", j.ahead ? "until" : "from",
                              j.time, describe(j))),
       jam(j),
-      ahead(t >= 0.0) {}
+      ahead(j.ahead) {}
 
 std::string describe(const Jam& j) {
     const int h = j.handle;
@@ -193,6 +231,25 @@ void Simulation::frame_into(double t, Frame& out) const {
     require_valid(t, "time");
     out.time = t;
     solve_chain_front(*path_, scenario_.bench, head_arc(t), scenario_.head_speed, solved_benches() + 1, out);
+}
+
+void Simulation::frame_at_travel_into(double x, Frame& out) const {
+    require_valid_travel(x, "head travel");
+    out.time = time_of(x);
+    solve_chain_front(*path_, scenario_.bench, start_arc_ + x, scenario_.head_speed, solved_benches() + 1, out);
+}
+
+Frame Simulation::frame_at_travel(double x) const {
+    Frame f;
+    frame_at_travel_into(x, f);
+    return f;
+}
+
+Simulation Simulation::at_speed(double head_speed) const {
+    Simulation other = *this;
+    other.scenario_.head_speed = head_speed;
+    validate(other.scenario_, value::head_speed);
+    return other;
 }
 
 Simulation Simulation::leading(int k) const {

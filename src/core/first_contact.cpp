@@ -1,5 +1,9 @@
 // Q2: the first moment two non-adjacent benches touch.
 //
+// The search runs in head travel (m from the head's place at t = 0), on the motion at 1 m/s:
+// the chain's shape depends on the travel alone, so the contact found is the same, bit for bit,
+// at any head speed, and its time is travel / speed.
+//
 // Stepping: at time t every pair of benches has separation g_ij > 0 and, from the benches'
 // exact rigid-body velocity fields, a bound L_ij on how fast g_ij can shrink now. Advancing by
 //     tau = min_ij g_ij / (kSafety L_ij)
@@ -13,7 +17,7 @@
 // are therefore never stepped over, unlike one bisection over the whole run; the test
 // Q2.EveryStepDeclaredSafeIsSafe samples inside every step, on runs with such a window. Near
 // the contact a Newton probe on the closest pair brackets the root, which is then refined by
-// bisection to tol::contact_time.
+// bisection to tol::travel.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -46,25 +50,28 @@ constexpr double kStretchTravel = 10.0;  // m
 
 double head_radius(const Frame& f) { return norm(f.handles.front().pos); }
 
-Contact make_contact(const Simulation& sim, double t, int steps, double time_tol, BroadPhase& broad) {
-    Frame f = sim.frame(t);
+// The contact at head travel x, reported for `sim` (at its own head speed).
+Contact make_contact(const Simulation& sim, double x, int steps, BroadPhase& broad) {
+    Frame f = sim.frame_at_travel(x);
     const Clearance c = clearance(f, kMargin, broad);
-    const double rounding = 2.0 * (std::nextafter(t, INFINITY) - t);
-    return {t, c.bench_a, c.bench_b, head_radius(f), c.point, std::move(f), steps, std::max(time_tol, rounding)};
+    const double t = f.time;
+    const double rounding = 2.0 * (std::nextafter(std::abs(t), INFINITY) - std::abs(t));
+    Contact out{t, c.bench_a, c.bench_b, head_radius(f), c.point, std::move(f), steps,
+                std::max(tol::travel / sim.scenario().head_speed, rounding)};
+    out.travel = x;
+    out.travel_tolerance = std::max(tol::travel, 2.0 * (std::nextafter(std::abs(x), INFINITY) - std::abs(x)));
+    return out;
 }
 
-// The search over one stretch, stepping `watched` (the benches that may touch) and reporting
-// the contact with the whole chain of `sim`; `steps` grows by the evaluations it makes.
+// The search over one stretch of travel, stepping `watched` (the benches that may touch, on the
+// motion at 1 m/s, so that its times are head travel) and reporting the contact with the whole
+// chain of `sim`; `steps` grows by the evaluations it makes. A step covers at most kMaxTravel of
+// head travel, and the contact is found to tol::travel.
 template <class Stop>
 std::optional<Contact> search_stretch(const Simulation& sim, const Simulation& watched, double t_from, double t_to,
                                       const StepObserver& on_step, const Stop& stop, int& steps, Workspace& ws) {
-    // Everything scales with the head's speed: the chain at speed v is the chain at 1 m/s with
-    // time divided by v. A step covers at most kMaxTravel of head travel, and the contact time
-    // is found to tol::contact_time and to at most that many metres of head travel (so 1e-9 s at
-    // the contest's 1 m/s, and proportionally finer for a faster dragon).
-    const double speed = sim.scenario().head_speed;
-    const double max_step = kMaxTravel / speed;
-    const double time_tol = tol::contact_time * std::min(1.0, 1.0 / speed);
+    const double max_step = kMaxTravel;
+    const double time_tol = tol::travel;
     Frame f;
     double t = t_from;
     Memory memory, seen;
@@ -72,14 +79,14 @@ std::optional<Contact> search_stretch(const Simulation& sim, const Simulation& w
     Approach a = approach(f, t, max_step, memory, seen, false, ws);
     memory.swap(seen);
     ++steps;
-    if (a.clear.distance <= 0.0) return make_contact(sim, t, steps, time_tol, ws.broad);
+    if (a.clear.distance <= 0.0) return make_contact(sim, t, steps, ws.broad);
     double retry_cap = INFINITY;  // after a broken curvature bound, retry shorter from t
 
     while (t < t_to) {
         if (stop()) return std::nullopt;
         // A pair grazing within rounding of touching, closing too slowly to bound: contact now
         // (also when the step is below the resolution of t itself, late in a slow run).
-        if (a.safe_step < time_tol || t + a.safe_step == t) return make_contact(sim, t, steps, time_tol, ws.broad);
+        if (a.safe_step < time_tol || t + a.safe_step == t) return make_contact(sim, t, steps, ws.broad);
         // Bracket: a Newton probe on the closest pair once it is nearly touching, no farther
         // than any other pair could touch (the bisection below sees only the clearance's sign,
         // and would pass over another pair's contact that opens and closes inside its bracket).
@@ -105,7 +112,7 @@ std::optional<Contact> search_stretch(const Simulation& sim, const Simulation& w
             }
             memory.swap(seen);
             if (b.clear.distance > 0.0) {
-                if (on_step) on_step(t, next);
+                if (on_step) on_step(sim.time_of(t), sim.time_of(next));
                 t = next;
                 a = b;
                 retry_cap = INFINITY;
@@ -122,82 +129,62 @@ std::optional<Contact> search_stretch(const Simulation& sim, const Simulation& w
             ++steps;
             if (clearance(f, kMargin, ws.broad).distance > 0.0) lo = mid; else hi = mid;
         }
-        return make_contact(sim, hi, steps, time_tol, ws.broad);
+        return make_contact(sim, hi, steps, ws.broad);
     }
     return std::nullopt;
 }
 
-// The benches a search over [t0, t1] must watch: on the plain spiral only the leading ones that
-// may touch (core/untouched_tail.hpp), elsewhere all of them.
-Simulation watched_over(const Simulation& sim, double t0, double t1) {
-    const auto* spiral = dynamic_cast<const Spiral*>(&sim.path());
-    if (!spiral) return sim;
-    return sim.leading(benches_that_may_touch(*spiral, sim.scenario().bench, sim.frame(t0), sim.frame(t1)));
+// The benches a search over [x0, x1] of `unit` (the motion at 1 m/s) must watch: on the plain
+// spiral only the leading ones that may touch (core/untouched_tail.hpp), elsewhere all of them.
+Simulation watched_over(const Simulation& unit, double x0, double x1, bool skip_untouched_tail) {
+    const auto* spiral = dynamic_cast<const Spiral*>(&unit.path());
+    if (!spiral || !skip_untouched_tail) return unit;
+    return unit.leading(benches_that_may_touch(*spiral, unit.scenario().bench, unit.frame(x0), unit.frame(x1)));
 }
 
-// The search over one range, in stretches of at most kStretchTravel of head travel, each with
-// its own watched benches. `stop()` is asked once per step: true abandons the search (a
-// contact was found in an earlier range). `steps` counts the evaluations; `ws` is this search's
-// own scratch.
-template <class Stop>
-std::optional<Contact> search_range(const Simulation& sim, double t_from, double t_to, const ContactSearchOptions& options,
-                                    const Stop& stop, int& steps, Workspace& ws) {
-    steps = 0;
-    if (!options.skip_untouched_tail)
-        return search_stretch(sim, sim, t_from, t_to, options.on_step, stop, steps, ws);
-    const double stretch = kStretchTravel / sim.scenario().head_speed;
-    const double count = std::max(1.0, std::ceil((t_to - t_from) / stretch));
-    for (double k = 0; k < count; ++k) {
-        const double a = k == 0 ? t_from : t_from + (t_to - t_from) * (k / count);
-        const double b = k + 1 == count ? t_to : t_from + (t_to - t_from) * ((k + 1) / count);
-        if (std::optional<Contact> c = search_stretch(sim, watched_over(sim, a, b), a, b, options.on_step, stop, steps, ws))
-            return c;
-        if (stop()) return std::nullopt;
-    }
-    return std::nullopt;
+// The range of travel [x_from, x_to] in stretches: cut at every multiple of kStretchTravel, so
+// that a stretch is the same (and its search takes the same steps) whatever range holds it, and
+// whatever worker searches it.
+std::vector<double> stretch_edges(double x_from, double x_to) {
+    std::vector<double> edges{x_from};
+    for (double k = std::floor(x_from / kStretchTravel) + 1.0; k * kStretchTravel < x_to; ++k)
+        if (k * kStretchTravel > x_from) edges.push_back(k * kStretchTravel);
+    edges.push_back(x_to);
+    return edges;
 }
 
 }  // namespace
 
-// The range is cut into chunks searched by the executor's workers, latest first. Each chunk's
-// search is exact for its own range, and a chunk that starts with benches overlapping reports its
-// start: the overlap began in an earlier chunk, which then reports that contact itself. So the
-// first contact is the one of the earliest chunk reporting any; chunks after it are abandoned.
-// Every chunk before it has run to its end, so the answer (and the evaluation count) does not
-// depend on how the workers were scheduled, only on how many there are.
-std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to,
-                                     const ContactSearchOptions& options) {
+// Each stretch's search is exact for its own range, and a stretch that starts with benches
+// overlapping reports its start: the overlap began in an earlier stretch, which then reports
+// that contact itself. So the first contact is the one of the earliest stretch reporting any.
+// The executor's workers take the stretches latest first (the one holding the contact usually
+// costs most: short steps, then the bisection); stretches after a contact already found are
+// abandoned, and every stretch before it runs to its end. The stretches do not depend on the
+// workers, so neither does the answer, nor the count of evaluations.
+std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from, double x_to,
+                                            const ContactSearchOptions& options) {
     // Both ends within the valid motion (the range between them then is too); searched here,
     // once, so that the frames below find it known.
-    sim.require_valid(t_from, "time range start");
-    sim.require_valid(t_to, "time range end");
+    sim.require_valid_travel(x_from, "time range start");
+    sim.require_valid_travel(x_to, "time range end");
+    const Simulation unit = sim.at_speed(1.0);
     InlineExecutor in_order;
     Executor& ex = options.on_step ? in_order : executor_or_default(options.executor);
-    auto never = [] { return false; };
-    if (ex.workers() == 1 || !(t_to > t_from)) {
-        int steps = 0;
-        Workspace ws;
-        return search_range(sim, t_from, t_to, options, never, steps, ws);
-    }
-    const size_t chunks = 8 * static_cast<size_t>(ex.workers());
-    std::vector<double> edge(chunks + 1);
-    for (size_t k = 0; k <= chunks; ++k)
-        edge[k] = k == chunks ? t_to : t_from + (t_to - t_from) * static_cast<double>(k) / static_cast<double>(chunks);
+    const std::vector<double> edge = x_to > x_from ? stretch_edges(x_from, x_to) : std::vector<double>{x_from, x_from};
+    const size_t chunks = edge.size() - 1;
     std::vector<std::optional<Contact>> found(chunks);
     std::vector<int> steps(chunks, 0);
     std::vector<Workspace> ws(static_cast<size_t>(ex.workers()));
     std::atomic<size_t> winner{chunks};
-    ContactSearchOptions chunk_options = options;
-    chunk_options.on_step = {};
-    // Latest chunk first: the one holding the contact usually costs most (short steps, then the
-    // bisection), so it starts early, and the ones after it start overlapping and end at once.
-    ex.parallel_for(chunks, [&](size_t item, int worker) {
-        const size_t k = chunks - 1 - item;
+    const bool serial = ex.workers() == 1;
+    auto search = [&](size_t k, int worker) {
         if (winner.load() < k) return;
+        const Simulation watched = watched_over(unit, edge[k], edge[k + 1], options.skip_untouched_tail);
         try {
-            found[k] = search_range(sim, edge[k], edge[k + 1], chunk_options,
-                                    [&] { return winner.load(std::memory_order_relaxed) < k; }, steps[k],
-                                    ws[static_cast<size_t>(worker)]);
+            found[k] = search_stretch(sim, watched, edge[k], edge[k + 1], options.on_step,
+                                      [&] { return winner.load(std::memory_order_relaxed) < k; }, steps[k],
+                                      ws[static_cast<size_t>(worker)]);
         } catch (...) {
             winner = 0;  // stop the others at their next step; the executor rethrows this
             throw;
@@ -207,13 +194,25 @@ std::optional<Contact> first_contact(const Simulation& sim, double t_from, doubl
             while (k < w && !winner.compare_exchange_weak(w, k)) {
             }
         }
-    });
+    };
+    if (serial) {
+        for (size_t k = 0; k < chunks && winner.load() == chunks; ++k) search(k, 0);
+    } else {
+        ex.parallel_for(chunks, [&](size_t item, int worker) { search(chunks - 1 - item, worker); });
+    }
     const size_t w = winner.load();
     if (w == chunks) return std::nullopt;
     Contact c = std::move(*found[w]);
     c.steps = 0;
     for (size_t k = 0; k <= w; ++k) c.steps += steps[k];
     return c;
+}
+
+std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to,
+                                     const ContactSearchOptions& options) {
+    sim.require_valid(t_from, "time range start");
+    sim.require_valid(t_to, "time range end");
+    return first_contact_travel(sim, sim.travel_within(t_from), sim.travel_within(t_to), options);
 }
 
 }  // namespace dragon

@@ -66,11 +66,9 @@ SpeedRatio speed_ratio_at(const Path& path, const BenchSpec& spec, double head_a
     return probe(head_arc);
 }
 
-MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, double t1) {
+MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow& window) {
     if (!std::isfinite(limit) || limit <= 0.0)
         throw InputError("speed limit", error_value(limit), "it must be a finite speed > 0 m/s");
-    if (!std::isfinite(t0) || !std::isfinite(t1) || t1 <= t0)
-        throw InputError("time range", fmt::format("{}..{} s", t0, t1), "it must be finite and non-empty");
     Scenario s = scenario;
     s.path.kind = PathKind::turnaround;
     const Simulation sim(s);
@@ -78,34 +76,34 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, doubl
     RatioProbe probe(path, s.bench);
     MaxSpeed out{};
     // Only the valid motion counts: past its end the speeds are those of a teleporting dragon.
-    const Simulation::Span span = sim.clip_to_valid(t0, t1, "time range start", "time range end");
-    out.jam = span.jam;
-    out.from = t0 = span.from;
-    out.to = t1 = span.to;
-    const std::optional<Jam>& ahead = span.jam;
-    if (ahead && ahead->time == t1 && ahead->kind == JamKind::root_vanishes) {
-        // The rear handle's speed has no bound as the root vanishes: no head speed will do.
+    const WindowCut cut = cut_window(sim, window);
+    out.window = cut.searched(s.head_speed);
+    out.jam = cut.after ? cut.after : cut.before;
+    for (const std::optional<Jam>& end : {cut.after, cut.before}) {
+        if (!end || !speed_unbounded_at(*end)) continue;
+        // The rear handle's speed has no bound as its root vanishes: no head speed will do.
+        out.jam = end;
         out.unbounded = true;
         out.ratio = std::numeric_limits<double>::infinity();
         out.max_head_speed = 0.0;
-        out.handle = ahead->handle;
-        out.tied = {ahead->handle};
-        out.time = ahead->time;
-        out.head_arc = ahead->head_arc;
+        out.handle = end->handle;
+        out.tied = {end->handle};
+        out.time = end->time;
+        out.head_arc = end->head_arc;
+        out.travel = end->travel;
         return out;
     }
 
     // Work in head arc position: the ratio depends on where the chain is, not how fast it goes.
     const double v = s.head_speed;
-    const double s0 = sim.head_arc(t0), s1 = sim.head_arc(t1);
+    const double s0 = sim.start_arc() + cut.from, s1 = sim.start_arc() + cut.to;
     double shortest = s.bench.link_length(1);
     if (s.bench.bench_count > 1) shortest = std::min(shortest, s.bench.link_length(2));
     const double samples = std::ceil((s1 - s0) * kSamplesPerLink / shortest);
     if (!(samples * s.bench.handle_count() <= kMaxHandlePositions))
-        throw InputError("time range", fmt::format("{}..{} s", t0, t1),
-                         fmt::format("at head speed {} m/s it takes the head over {:.6g} m of the path, and the scan "
-                                     "would solve {:.3g} chains of {} handles (at most {:.0e} handle positions); "
-                                     "narrow it", v, s1 - s0, samples, s.bench.handle_count(), kMaxHandlePositions));
+        throw InputError("time range", fmt::format("{}..{} m of head travel", cut.from, cut.to),
+                         fmt::format("the scan would solve {:.3g} chains of {} handles (at most {:.0e} handle "
+                                     "positions); narrow it", samples, s.bench.handle_count(), kMaxHandlePositions));
     const int steps = std::max(2, static_cast<int>(samples));
     const double ds = (s1 - s0) / steps;
 
@@ -122,6 +120,7 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, doubl
 
     out.ratio = -1.0;
     out.scan_step = ds / v;
+    out.scan_travel = ds;
     for (int k = 0; k <= steps; ++k) {
         const size_t i = static_cast<size_t>(k);
         // A plateau (say the head fastest, ratio exactly 1) counts once, at its first sample.
@@ -144,7 +143,8 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, double t0, doubl
     for (size_t i = 0; i < f.handles.size(); ++i)
         if (std::abs(f.handles[i].speed) >= out.ratio * (1.0 - kTieTolerance)) out.tied.push_back(static_cast<int>(i));
     out.handle = out.tied.front();
-    out.time = (out.head_arc - sim.start_arc()) / v;
+    out.travel = out.head_arc - sim.start_arc();
+    out.time = out.travel / v;
     out.max_head_speed = limit / out.ratio;
     out.evaluations = probe.evaluations;
     return out;

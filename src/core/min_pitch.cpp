@@ -204,11 +204,15 @@ double refine_cut(const Scenario& s, Executor& ex, double a, double b, const Pro
 
 // For the contest's dragon, a 1 mm scan of 0.35..0.55 m (tests) and a 0.1 mm one (README) find
 // no window the default grid misses.
-MinPitch min_pitch(const Scenario& s, double lo, double hi, const MinPitchOptions& options) {
+MinPitch min_pitch(const Scenario& scenario, double lo, double hi, const MinPitchOptions& options) {
     const double grid = options.grid;
     Executor& ex = executor_or_default(options.executor);
     // What every run reads but the pitch, which the search sets.
-    validate(s, value::bench | value::head_speed | value::start_turn | value::turn_radius);
+    validate(scenario, value::bench | value::head_speed | value::start_turn | value::turn_radius);
+    // Whether a run collides depends on the head's travel, not its speed: the runs go at 1 m/s
+    // (the same pitches, bit for bit, at any head speed), and a jam's time is scaled at the end.
+    Scenario s = scenario;
+    s.head_speed = 1.0;
     constexpr double kMaxPitch = 1e3;  // m, the largest pitch validate() allows
     if (!(hi <= kMaxPitch))
         throw InputError("pitch search range end", error_value(hi), fmt::format("a pitch is at most {} m", kMaxPitch));
@@ -263,6 +267,12 @@ MinPitch min_pitch(const Scenario& s, double lo, double hi, const MinPitchOption
     }
     for (size_t k = pitches.size(); k-- > 0;)
         if (ok[k].jam) { out.jam = PitchJam{pitches[k], *ok[k].jam}; break; }
+    if (out.jam) {
+        Jam& j = out.jam->jam;
+        j.time = j.travel / scenario.head_speed;
+        j.tolerance = std::max(j.travel_tolerance / scenario.head_speed,
+                               std::abs(std::nextafter(j.time, INFINITY) - j.time));
+    }
     out.tolerance = tol::pitch;
     return out;
 }

@@ -57,6 +57,11 @@ void followability(std::vector<TurnStudyRow>& rows, double pitch, const BenchSpe
 }
 
 
+std::optional<Jam> turnaround_jam(const Simulation& sim) {
+    const ValidRange r = sim.valid_range();
+    return r.before ? r.before : r.after;
+}
+
 TurnaroundStudy study_turnaround(const Scenario& s) {
     const double pitch = s.path.turn_pitch, radius = s.path.turn_radius, ratio = s.path.arc_ratio;
     TurnaroundStudy st;
@@ -70,8 +75,14 @@ TurnaroundStudy study_turnaround(const Scenario& s) {
     st.by_entry = length_vs_entry_radius(pitch, radius, ratio, radii);
     followability(st.by_ratio, pitch, s.bench, s.head_speed);
     followability(st.by_entry, pitch, s.bench, s.head_speed);
-    for (const TurnStudyRow& r : st.by_ratio)
-        if (r.ratio == ratio) st.design_jam = r.jam;
+    // The scenario's own S-curve is the one every command simulates: its row says what they say.
+    Scenario turn = s;
+    turn.path.kind = PathKind::turnaround;
+    st.design_jam = turnaround_jam(Simulation(turn));
+    for (TurnStudyRow& r : st.by_ratio)
+        if (r.ratio == ratio) r.jam = st.design_jam;
+    for (TurnStudyRow& r : st.by_entry)
+        if (r.entry_radius == radius) r.jam = st.design_jam;
 
     auto [lo, hi] = std::minmax_element(st.by_ratio.begin(), st.by_ratio.end(),
                                         [](const TurnStudyRow& a, const TurnStudyRow& b) {

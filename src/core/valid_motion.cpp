@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/chain_front.hpp"
+#include "core/jam_walk.hpp"
 #include "core/link_watch.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/constants.hpp"
@@ -175,21 +176,8 @@ private:
     Vec2 last_point_ = Vec2::Zero();
 };
 
-Jam make_jam(const Bracket& b, double start_arc, double head_speed, double dir) {
-    Jam j;
-    j.head_arc = b.valid;
-    j.time = (b.valid - start_arc) / head_speed;
-    j.handle = b.link + 1;
-    j.kind = b.kind;
-    j.point = b.point;
-    // How far past `time` the motion may still go: the bracket, and the rounding of t itself.
-    const double rounding = std::abs(std::nextafter(j.time, dir * INFINITY) - j.time);
-    j.tolerance = std::max(std::abs(b.past - b.valid) / head_speed, rounding);
-    return j;
-}
-
 // The tolerance on the head's arc position at s: the one asked for, or a few roundings of s
-// itself where those are larger (a slow head's 1e-10 s is below what a double holds).
+// itself where those are larger.
 double resolution(double s, double tolerance) {
     const double a = std::abs(s);
     return std::max(tolerance, 4.0 * (std::nextafter(a, INFINITY) - a));
@@ -201,78 +189,144 @@ double longest_link(const BenchSpec& spec) {
     return d;
 }
 
+JamKind reversed(JamKind k) { return k == JamKind::root_vanishes ? JamKind::nearer_root : JamKind::root_vanishes; }
+
 }  // namespace
+
+namespace jam {
+
+struct Walk::State {
+    State(const Path& path, const BenchSpec& spec, double dir)
+        : path(path), spec(spec), dir(dir), search(path, spec, dir, tol::travel, stats) {}
+    const Path& path;
+    const BenchSpec& spec;
+    double dir;
+    double end = 0.0;
+    double calm_head = 0.0;  // the walk going back ends here: the motion is continuous behind it for ever
+    JamSearchStats stats;
+    JamSearch search;
+    Evaluation cur, next;
+    std::optional<Bracket> candidate;
+    double probed_at = INFINITY;  // the margin at the last probe that found nothing
+    double retry_cap = INFINITY;  // after a broken bound, retry shorter from cur
+    bool done = false, forever = false;
+    std::optional<Found> found;
+
+    void finish(const Bracket& b) {
+        found = Found{b.valid, b.past, b.link, b.kind, b.point};
+        done = true;
+    }
+    // One step of the walk (or one probe for a bracket, or one retreat).
+    void step();
+};
+
+Walk::Walk(const Path& path, const BenchSpec& spec, double from, double dir, double end)
+    : state_(std::make_unique<State>(path, spec, dir)) {
+    State& w = *state_;
+    w.end = end;
+    // Head at or behind `calm_head`: every link lies where the curvature is small for the
+    // longest link, and moving back it stays there (all handles move with the head then).
+    w.calm_head = path.curvature_bounded_before(kCalmBend / longest_link(spec));
+    double s = from;
+    if (dir > 0.0 && s < w.calm_head) s = std::min(w.calm_head, end);
+    if ((dir < 0.0 && s <= w.calm_head)) {
+        w.done = w.forever = true;
+        return;
+    }
+    w.search.evaluate(s, w.cur);
+    if (s == end) w.done = true;
+}
+
+Walk::~Walk() = default;
+
+void Walk::State::step() {
+    // Every link on calm path and moving away from where it ends: with all links calm every
+    // handle moves with the head, so they stay calm for ever.
+    if (cur.step == INFINITY || (dir < 0.0 && cur.s <= calm_head)) {
+        done = forever = true;
+        return;
+    }
+    const LinkCheck& crit = cur.links[static_cast<size_t>(cur.critical)];
+    if (candidate && (candidate->valid - cur.s) * dir <= cur.step) return finish(*candidate);
+    const double here_tol = resolution(cur.s, tol::travel);
+    if (!(cur.step > here_tol)) {
+        // The margins ran out here without a bracket: the jam is at this moment, to the tolerance.
+        return finish({cur.s, cur.s + dir * here_tol, cur.critical,
+                       crit.at_root ? JamKind::root_vanishes : JamKind::nearer_root,
+                       path.at_arc(crit.gentle ? cur.s : crit.watch_arc).pos});
+    }
+    const double probe_below = kProbeHealth * 0.5 * spec.link_after(cur.critical);
+    if (!candidate && !crit.gentle && crit.margin < probe_below && crit.margin < 0.5 * probed_at) {
+        candidate = search.bracket(cur, cur.critical);
+        if (!candidate) probed_at = crit.margin;
+        return;
+    }
+    // Steps are cut short only at the walk's end, never at a place a caller asked about.
+    const double travel = std::min({cur.step, kMaxTravel, retry_cap, (end - cur.s) * dir});
+    const double to = travel == (end - cur.s) * dir ? end : cur.s + dir * travel;
+    search.evaluate(to, next);
+    if (const int broken = search.step_held(cur, next); broken >= 0) {
+        if (travel > here_tol) {
+            retry_cap = 0.25 * travel;
+            ++stats.retreats;
+            return;
+        }
+        // Within the tolerance of here, link `broken` lost its root.
+        const LinkCheck& l = cur.links[static_cast<size_t>(broken)];
+        return finish({cur.s, to, broken, l.gentle || l.at_root ? JamKind::root_vanishes : JamKind::nearer_root,
+                       cur.frame.handles[static_cast<size_t>(broken) + 1].pos});
+    }
+    std::swap(cur, next);
+    retry_cap = INFINITY;
+    if (candidate && (cur.s - candidate->valid) * dir > 0.0) candidate.reset();  // it was not in the way
+    if (cur.s == end) done = true;
+}
+
+void Walk::advance(double target) {
+    State& w = *state_;
+    while (!w.done && (target - w.cur.s) * w.dir > 0.0) w.step();
+}
+
+double Walk::known() const {
+    const State& w = *state_;
+    if (w.forever) return w.dir * INFINITY;
+    if (w.found) return w.found->valid;
+    return w.cur.s;
+}
+
+bool Walk::finished() const { return state_->done; }
+const std::optional<Found>& Walk::found() const { return state_->found; }
+const JamSearchStats& Walk::stats() const { return state_->stats; }
+
+Jam to_jam(const Found& f, double dir, double start_arc, double head_speed) {
+    Jam j;
+    j.head_arc = f.valid;
+    j.travel = f.valid - start_arc;
+    j.time = j.travel / head_speed;
+    j.handle = f.link + 1;
+    j.kind = dir > 0.0 ? f.kind : reversed(f.kind);
+    j.ahead = dir > 0.0;
+    j.point = f.point;
+    // How far past `time` the motion may still go: the bracket, and the rounding of t itself.
+    j.travel_tolerance = std::abs(f.past - f.valid);
+    const double rounding = std::abs(std::nextafter(j.time, dir * INFINITY) - j.time);
+    j.tolerance = std::max(j.travel_tolerance / head_speed, rounding);
+    return j;
+}
+
+}  // namespace jam
 
 std::optional<Jam> find_jam(const Path& path, const BenchSpec& spec, double start_arc, double head_speed,
                             double t_from, double t_to, JamSearchStats* stats_out) {
-    JamSearchStats stats;
     const double s_from = start_arc + head_speed * t_from;
     const double s_to = start_arc + head_speed * t_to;
     if (!(s_to != s_from)) return std::nullopt;
     const double dir = s_to > s_from ? 1.0 : -1.0;
-    // As the first-contact search: 1e-10 s, and 1e-10 m of head travel for a fast head.
-    const double arc_tol = tol::contact_time * std::min(1.0, head_speed);
-    const double bend = jam::kCalmBend / longest_link(spec);
-    // Head at or behind `calm_head`: every link lies where the curvature is small for the
-    // longest link, and moving back it stays there (all handles move with the head then).
-    const double calm_head = path.curvature_bounded_before(bend);
-    double s = s_from;
-    if (dir > 0.0 && s < calm_head) s = std::min(calm_head, s_to);
-    if (dir < 0.0 && s <= calm_head) return std::nullopt;
-    if (s == s_to) return std::nullopt;
-
-    JamSearch search(path, spec, dir, arc_tol, stats);
-    Evaluation cur, next;
-    search.evaluate(s, cur);
-    std::optional<Bracket> candidate;
-    double probed_at = INFINITY;  // the margin at the last probe that found nothing
-    double retry_cap = INFINITY;
-    auto done = [&](std::optional<Jam> j) {
-        if (stats_out) *stats_out = stats;
-        return j;
-    };
-    for (;;) {
-        // Every link on calm path and moving away from where it ends: with all links calm every
-        // handle moves with the head, so they stay calm for ever.
-        if (cur.step == INFINITY) return done(std::nullopt);
-        if (dir < 0.0 && cur.s <= calm_head) return done(std::nullopt);
-        const LinkCheck& crit = cur.links[static_cast<size_t>(cur.critical)];
-        if (candidate && (candidate->valid - cur.s) * dir <= cur.step)
-            return done(make_jam(*candidate, start_arc, head_speed, dir));
-        const double here_tol = resolution(cur.s, arc_tol);
-        if (!(cur.step > here_tol)) {
-            // The margins ran out here without a bracket: the jam is at this moment, to the tolerance.
-            const Bracket b{cur.s, cur.s + dir * here_tol, cur.critical,
-                            crit.at_root ? JamKind::root_vanishes : JamKind::nearer_root,
-                            path.at_arc(crit.gentle ? cur.s : crit.watch_arc).pos};
-            return done(make_jam(b, start_arc, head_speed, dir));
-        }
-        const double probe_below = kProbeHealth * 0.5 * spec.link_after(cur.critical);
-        if (!candidate && !crit.gentle && crit.margin < probe_below && crit.margin < 0.5 * probed_at) {
-            candidate = search.bracket(cur, cur.critical);
-            if (!candidate) probed_at = crit.margin;
-            continue;
-        }
-        const double travel = std::min({cur.step, kMaxTravel, retry_cap, (s_to - cur.s) * dir});
-        const double to = travel == (s_to - cur.s) * dir ? s_to : cur.s + dir * travel;
-        search.evaluate(to, next);
-        if (const int broken = search.step_held(cur, next); broken >= 0) {
-            if (travel > here_tol) {
-                retry_cap = 0.25 * travel;
-                ++stats.retreats;
-                continue;
-            }
-            // Within the tolerance of here, link `broken` lost its root.
-            const LinkCheck& l = cur.links[static_cast<size_t>(broken)];
-            const Bracket b{cur.s, to, broken, l.gentle || l.at_root ? JamKind::root_vanishes : JamKind::nearer_root,
-                            cur.frame.handles[static_cast<size_t>(broken) + 1].pos};
-            return done(make_jam(b, start_arc, head_speed, dir));
-        }
-        std::swap(cur, next);
-        retry_cap = INFINITY;
-        if (candidate && (cur.s - candidate->valid) * dir > 0.0) candidate.reset();  // it was not in the way
-        if (cur.s == s_to) return done(std::nullopt);
-    }
+    jam::Walk walk(path, spec, s_from, dir, s_to);
+    walk.advance(s_to);
+    if (stats_out) *stats_out = walk.stats();
+    if (!walk.found()) return std::nullopt;
+    return jam::to_jam(*walk.found(), dir, start_arc, head_speed);
 }
 
 }  // namespace dragon

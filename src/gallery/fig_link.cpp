@@ -47,7 +47,7 @@ Polyline arrow(const Vec2& from, const Vec2& to, Rgba colour, double width = 2.2
 void link_geometry(const Context& c, const std::string& path) {
     const Simulation sim(c.base);
     // Q1's last moment, or the first contact if it comes sooner.
-    const double t = shown_span(sim, 0.0, 300.0, c.answers->contact()).to;
+    const double t = shown_span(sim, 0.0, sim.time_of(300.0), c.answers->contact()).to;
     Frame f = sim.frame(t);
     f.handles.resize(4);  // the head, the first two body benches: the rest would only crowd
     f.benches.resize(3);

@@ -21,8 +21,9 @@ void speeds_by_handle(const Context& c, const std::string& path) {
     p.x_label = fmt::format("handle (0 = head front, {} = tail rear)", c.base.bench.bench_count);
     p.y_label = "speed (m/s)";
     p.legend = Plot::Legend::bottom_left;
-    // Q1's six moments (0, 60, ..., 300 s), spread over a shorter run if the dragon stops sooner.
-    const TimeSpan span = shown_span(sim, 0.0, 300.0, c.answers->contact());
+    // Q1's six moments (0, 60, ..., 300 m of head travel: seconds at 1 m/s), spread over a shorter
+    // run if the dragon stops sooner.
+    const TimeSpan span = shown_span(sim, 0.0, sim.time_of(300.0), c.answers->contact());
     for (int i = 0; i <= 5; ++i) {
         const double t = span.from + (span.to - span.from) * i / 5;
         const Frame f = sim.frame(t);
@@ -103,8 +104,8 @@ void speed_ratio_on_turnaround(const Context& c, const std::string& path) {
     p.y_label = "max handle speed / head speed";
     p.legend = Plot::Legend::none;
     PlotSeries s{"", {}, series_colour(p.theme, 0), 1.6};
-    // Q4's window, -100 s to 100 s, sampled every 0.125 s.
-    const TimeSpan span = shown_span(sim, -100.0, 100.0, std::nullopt);
+    // Q4's window, 100 m of head travel either side of the turn (100 s at 1 m/s), 1600 samples.
+    const TimeSpan span = shown_span(sim, sim.time_of(-100.0), sim.time_of(100.0), std::nullopt);
     for (int i = 0; i <= 1600; ++i) {
         const double t = span.from + (span.to - span.from) * i / 1600;
         s.points.push_back({t, speed_ratio_at(sim.path(), sc.bench, sim.head_arc(t)).ratio});
@@ -114,7 +115,7 @@ void speed_ratio_on_turnaround(const Context& c, const std::string& path) {
     p.ref_lines.push_back({true, d.length / sc.head_speed, "", p.theme.s_curve});
     // The marked maximum is Q5's, refined between samples (the curve's own peak sits a little
     // lower: the samples straddle it).
-    const MaxSpeed q5 = max_head_speed(sc, 2.0, span.from, span.to);
+    const MaxSpeed q5 = max_head_speed(sc, 2.0, kTurnaroundWindow);
     const bool run = q5.tied.size() > 1 && q5.tied.back() - q5.tied.front() + 1 == static_cast<int>(q5.tied.size());
     const std::string who = run                    ? fmt::format("handles {}-{}", q5.tied.front(), q5.tied.back())
                             : q5.tied.size() > 1 ? fmt::format("handles {}", fmt::join(q5.tied, ", "))

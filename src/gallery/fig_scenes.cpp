@@ -13,9 +13,9 @@ void dragon_at_300s(const Context& c, const std::string& path) {
     const Simulation sim(c.base);
     // Q1's last moment, or the first contact if it comes sooner (the dragon stops there).
     const std::optional<Contact>& hit = c.answers->contact();
-    const double t = shown_span(sim, 0.0, 300.0, hit).to;
+    const double t = shown_span(sim, 0.0, sim.time_of(300.0), hit).to;
     const Frame f = sim.frame(t);
-    const char* why = hit && t == hit->time ? " (the first contact)" : t < 300.0 ? " (the end of the run)" : "";
+    const char* why = hit && t == hit->time ? " (the first contact)" : t < sim.time_of(300.0) ? " (the end of the run)" : "";
     SceneOptions so;
     so.theme = c.opt.theme;
     so.title_band = true;  // a title hides nothing

@@ -28,11 +28,8 @@ Answers::Answers(const Scenario& coil_in) : scenario_(coil_in) { scenario_.path.
 
 const std::optional<Contact>& Answers::contact() {
     if (!contact_) {
-        const Simulation sim(scenario_);
-        // Searched over what the figures may show (shown_span's cut), so that one place
-        // decides how far the coil-in goes.
-        const TimeSpan span = shown_span(sim, 0.0, sim.end_time(), std::nullopt);
-        contact_ = first_contact(sim, span.from, span.to);
+        // The motion's first contact, as every command reports it.
+        contact_ = first_contact_of_motion(Simulation(scenario_)).contact;
     }
     return *contact_;
 }

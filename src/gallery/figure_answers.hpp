@@ -36,7 +36,7 @@ inline constexpr int kPitchScanSteps = 100;
 class Answers {
 public:
     explicit Answers(const Scenario& coil_in);
-    // The first contact coiling in over shown_span(0, the spiral's centre); nullopt when there is none.
+    // The first contact coiling in (first_contact_of_motion); nullopt when there is none.
     const std::optional<Contact>& contact();
     // The minimum pitch over pitch_window() (pitch NaN when nothing in it is collision-free).
     const MinPitch& min_pitch();

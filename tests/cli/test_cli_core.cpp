@@ -94,7 +94,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"simulate --pitch= -o @OUT", "--pitch '' is not allowed: give a number"},
         BadCase{"simulate -o ''", "--out '' is not allowed: give a file name"},
         BadCase{"solve -o ''", "--out '' is not allowed: give a folder name"},
-        BadCase{"collide --to ''", "--to '' is not allowed: give a number"},
+        BadCase{"collide --to ''", "--to '' is not allowed: give a value"},
         BadCase{"min-pitch --grid ''", "--grid '' is not allowed: give a number"},
         BadCase{"turnaround -o ''", "--out '' is not allowed: give a file name"},
         BadCase{"max-speed --limit ''", "--limit '' is not allowed: give a number"},

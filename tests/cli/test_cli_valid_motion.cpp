@@ -91,7 +91,7 @@ TEST(CliValidMotion, CollideSaysWhereTheSearchEnded) {
 }
 
 TEST(CliValidMotion, CollideRefusesRangesThatMeanNothing) {
-    expect_refused("collide --from 100 --to 50", "--to 50 is not allowed: it must be after --from 100");
+    expect_refused("collide --from 100 --to 50", "--to 50 is not allowed: it must be after the start, 100");
     expect_refused("collide --to inf", "--to inf is not allowed");
     expect_refused("collide --from 500", std::string("until t = ") + kSpiralEnd);
 }

@@ -53,15 +53,31 @@ TEST(MaxSpeed, ScalesWithTheLimitAndNotWithTheHeadSpeed) {
     const MaxSpeed two = max_head_speed(sc, 2.0);
     const MaxSpeed three = max_head_speed(sc, 3.0);
     EXPECT_NEAR(three.max_head_speed, 1.5 * two.max_head_speed, 1e-12);
-    sc.head_speed = 2.0;  // same path positions on a twice-as-fast timeline
-    const MaxSpeed fast = max_head_speed(sc, 2.0, -50.0, 50.0);
-    EXPECT_NEAR(fast.ratio, two.ratio, 1e-12);
-    EXPECT_NEAR(fast.time, two.time / 2.0, 1e-6);
+    // The window is head travel, so at any head speed the answer is the same but for the clock:
+    // bit for bit, and its time scaled by 1 / speed.
+    for (const double v : {0.05, 2.0, 5.0}) {
+        sc.head_speed = v;
+        const MaxSpeed m = max_head_speed(sc, 2.0);
+        EXPECT_EQ(m.ratio, two.ratio) << v;
+        EXPECT_EQ(m.max_head_speed, two.max_head_speed) << v;
+        EXPECT_EQ(m.tied, two.tied) << v;
+        EXPECT_EQ(m.travel, two.travel) << v;
+        EXPECT_EQ(m.time, two.travel / v) << v;
+        EXPECT_EQ(m.window.from_travel, -100.0) << v;
+        EXPECT_EQ(m.window.to, 100.0 / v) << v;
+    }
+    // A window in seconds is that much head travel at the scenario's speed.
+    sc.head_speed = 2.0;
+    const MaxSpeed seconds = max_head_speed(sc, 2.0, {Along::seconds(-50.0), Along::seconds(50.0)});
+    EXPECT_EQ(seconds.ratio, two.ratio);
+    EXPECT_EQ(seconds.travel, two.travel);
 }
 
 TEST(MaxSpeed, RejectsBadInput) {
     const Scenario sc = turnaround_scenario();
     EXPECT_THROW(max_head_speed(sc, 0.0), InputError);
     EXPECT_THROW(max_head_speed(sc, -2.0), InputError);
-    EXPECT_THROW(max_head_speed(sc, 2.0, 10.0, -10.0), InputError);
+    EXPECT_THROW(max_head_speed(sc, 2.0, {Along::seconds(10.0), Along::seconds(-10.0)}), InputError);
+    EXPECT_THROW(max_head_speed(sc, 2.0, {Along::metres(NAN), Along::metres(10.0)}), InputError);
+    EXPECT_THROW(max_head_speed(sc, 2.0, {Along::metres(0.0), Along::metres(INFINITY)}), InputError);
 }

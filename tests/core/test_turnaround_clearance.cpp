@@ -11,7 +11,7 @@ TEST(TurnaroundClearance, DefaultRunIsCollisionFreeAndItsMinimumIsConfirmed) {
     Scenario sc;
     sc.path.kind = PathKind::turnaround;
     const RunClearance c = min_clearance(sc);
-    EXPECT_TRUE(c.collision_free);
+    EXPECT_TRUE(c.collision_free());
     EXPECT_GT(c.distance, 0.0);
     EXPECT_GE(c.time, -100.0);
     EXPECT_LE(c.time, 100.0);
