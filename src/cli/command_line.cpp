@@ -90,6 +90,9 @@ std::string what_to_give(const CLI::App& sub, const CLI::Option& opt) {
     if (name == "--theme") return "use light, dark or a .toml file";
     if (name == "--path") return "use spiral or turnaround";
     if (name == "--size") return "give WIDTHxHEIGHT in pixels, as 1280x720";
+    if (name == "--to" && sub.get_name() == "video") return "give a time in seconds, or collision, boundary or end";
+    if (opt.get_type_name() == "T|Xm")
+        return "give a time in seconds (12.5, or 12.5s) or a length of the head's travel in metres (-100m)";
     if (name == "storyboard") return "give the storyboard's .toml file: dragon film STORY.toml -o FILM.mp4";
     const std::string type = opt.get_type_name();
     if (type.find("FLOAT") != std::string::npos || type.find("NUMBER") != std::string::npos) return "give a number";
