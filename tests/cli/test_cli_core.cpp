@@ -94,7 +94,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"simulate --pitch= -o @OUT", "--pitch '' is not allowed: give a number"},
         BadCase{"simulate -o ''", "--out '' is not allowed: give a file name"},
         BadCase{"solve -o ''", "--out '' is not allowed: give a folder name"},
-        BadCase{"collide --to ''", "--to '' is not allowed: give a value"},
+        BadCase{"collide --to ''", "--to '' is not allowed: give a time in seconds (12.5, or 12.5s) or a length of the head's travel"},
         BadCase{"min-pitch --grid ''", "--grid '' is not allowed: give a number"},
         BadCase{"turnaround -o ''", "--out '' is not allowed: give a file name"},
         BadCase{"max-speed --limit ''", "--limit '' is not allowed: give a number"},
