@@ -39,6 +39,9 @@ struct WindowCut {
 // past the end of the valid motion or an end before its beginning, or a window holding no
 // moment of it.
 WindowCut cut_window(const Simulation& sim, const RunWindow& window);
+// Throws PastTheValidMotion (or InputError, off the path) naming `at` as given ("120 m", "5")
+// under `field` unless the moment is within the valid motion.
+void require_valid_at(const Simulation& sim, const Along& at, const char* field);
 
 // Q2: the first moment two non-adjacent benches touch. The search runs in head travel, so the
 // contact (its benches, point, head radius, travel) is the same at any head speed and its time
@@ -85,6 +88,9 @@ struct CollideAnswer {
     Searched window;   // the stretch searched: the window cut to the valid motion
     // The end of the valid motion where it cut the window short and nothing touched before it.
     std::optional<Jam> jam;
+    // The contact is at the window's start with the benches already overlapping there: they
+    // first touched before it (first_contact_covering only; collide throws instead).
+    bool overlapping = false;
 };
 // Benches that already overlap where a search for the first contact starts: the chain collides
 // (before that moment), so the window holds no first contact to report. An InputError on the
@@ -102,6 +108,12 @@ CollideAnswer collide(const Simulation& sim, const RunWindow& window, Executor* 
 // the one event every command reports as the first contact: collide and turnaround by default,
 // the contest's Q2, a picture of the collision, a film's caption.
 CollideAnswer first_contact_of_motion(const Simulation& sim, Executor* executor = nullptr);
+// For what a table, picture or film shows over [t_from, t_to] (s): the first contact over the
+// path's default window widened to take that range in. Inside the default window it is the
+// motion's first contact; a range reaching outside it gets the earliest contact of the two.
+// Benches already overlapping where the search starts give a contact there, marked
+// `overlapping`, rather than an error.
+CollideAnswer first_contact_covering(const Simulation& sim, double t_from, double t_to, Executor* executor = nullptr);
 
 // When the head front handle reaches the turning space's boundary coiling in: on the plain
 // spiral the moment its radius is the scenario's turn_radius (before t = 0 if it starts inside),

@@ -66,4 +66,13 @@ Clearance clearance(const Frame& f, double cutoff, BroadPhase& scratch);
 // Reference: clearance by checking every pair (for tests and the broad phase's proof).
 Clearance clearance_all_pairs(const Frame& f);
 
+// Two non-adjacent benches overlapping: past the first contact the chain lies across itself.
+struct Overlap {
+    int bench_a = 0, bench_b = 0;  // 1..N, a < b
+    double depth = 0.0;            // penetration depth, m (> 0)
+    Vec2 point = Vec2::Zero();     // the corner of either board deepest inside the other
+};
+// Every overlapping pair of the frame (through the broad phase), deepest first.
+std::vector<Overlap> overlaps(const Frame& f);
+
 }  // namespace dragon

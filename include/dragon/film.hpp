@@ -27,12 +27,14 @@ struct StoryboardError : InputError {
     std::string key;
 };
 
-// A moment of a shot's run: a time, or an event of the run plus an offset
-// ("collision - 5": five simulated seconds before the first contact).
+// A moment of a shot's run: a time, a head travel ("-100 m": the head 100 m before its place at
+// t = 0; the default runs are travel, so a shot shows the same dragon at any head speed), or an
+// event of the run plus an offset ("collision - 5": five simulated seconds before the first
+// contact).
 struct TimeRef {
-    enum class Anchor { time, collision, boundary, end };
+    enum class Anchor { time, travel, collision, boundary, end };
     Anchor anchor = Anchor::time;
-    double offset = 0.0;  // s; the time itself for Anchor::time
+    double offset = 0.0;  // s; the time itself for Anchor::time, the travel (m) for Anchor::travel
 };
 
 // What a camera shows: the run's whole dragon, the head (followed), a fixed window, or a

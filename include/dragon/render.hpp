@@ -11,6 +11,7 @@
 #include <cairo.h>
 
 #include "dragon/chain.hpp"
+#include "dragon/collision.hpp"
 #include "dragon/geometry.hpp"
 
 namespace dragon {
@@ -125,7 +126,12 @@ struct SceneOptions {
     std::optional<Camera> inset_camera;
     std::optional<CollisionMark> collision;
     std::vector<int> highlight_benches;  // drawn in the theme's highlight colour
+    // Benches lying across each other (past the first contact the chain overlaps itself): drawn
+    // in the touching colour, each overlap's deepest corner marked, the deepest labelled with
+    // its depth. Overlaps under kTouchingDepth are touching, not crossing, and left as drawn.
+    bool mark_overlaps = true;
 };
+inline constexpr double kTouchingDepth = 1e-6;  // m
 
 // Overlays figures add on top of the dragon (world coordinates; sizes in pixels at 800 px,
 // scaled with the image).
@@ -188,6 +194,7 @@ struct Scene {
     std::vector<Guide> guides;
     std::optional<double> turning_radius;  // circle about the origin, m
     std::optional<CollisionMark> collision;
+    std::vector<Overlap> overlaps;  // benches lying across each other, deepest first
 
     bool colour_by_speed = false;
     double speed_min = 0.0, speed_max = 1.0;

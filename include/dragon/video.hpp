@@ -182,8 +182,10 @@ struct FilmLook {
 };
 
 // The captions a film of [from, to] should carry: the head reaching the turning space (on
-// the plain spiral, when that lies inside), two benches touching at `to` (`contact`), and the
-// end of the valid motion when `to` is it.
+// the plain spiral, when that lies inside), two benches touching at `to` (`contact`) or else
+// the first contact where the range passes it (first_contact_covering; at `from`, "past the
+// first contact", when the range starts after it), and the end of the valid motion when `to`
+// is it.
 std::vector<FilmEvent> clip_events(const Simulation& sim, double from, double to,
                                    const std::optional<CollisionMark>& contact);
 // The caption of a first contact: "first contact: bench 1 touches bench 9, t = 412.473838 s".

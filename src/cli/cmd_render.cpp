@@ -73,6 +73,12 @@ void register_render(CLI::App& app, Registry& reg) {
         } else {
             sim.require_valid(*opt->time, "time");
             frame = sim.frame(*opt->time);
+            // Past the first contact the benches overlap (drawn marked): the annotation says so.
+            const std::optional<Contact> c = first_contact_covering(sim, *opt->time, *opt->time).contact;
+            if (!so.annotation && c && c->time < *opt->time)
+                so.annotation = fmt::format("t = {:.3f} s   pitch = {:.3g} m   past the first contact (benches {} and "
+                                            "{}, t = {:.3f} s)", frame.time, s.coil_pitch(), c->bench_a, c->bench_b,
+                                            c->time);
         }
         const Scene scene = make_scene(sim, frame, so);
         const auto [w, h] = opt->look.size();

@@ -7,6 +7,7 @@
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
+#include "cli/window_flags.hpp"
 #include "cli/wording.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
@@ -17,7 +18,7 @@ namespace dragon::cli {
 namespace {
 struct SimulateOptions {
     ScenarioFlags scenario;
-    std::optional<double> from, to;
+    WindowFlags window;
     double step = 1.0;
     std::string out;
     std::optional<int> digits;
@@ -33,11 +34,10 @@ void register_simulate(CLI::App& app, Registry& reg) {
         "negative while a handle backs up. Times past the end of the dragon's valid motion (where a handle would "
         "have to jump) are refused");
     opt->scenario.add_to(sub, ScenarioUse::either_path());
-    sub->add_option("--from", opt->from, "First time, s (default 0; -100 on the turnaround path)");
-    sub->add_option("--to", opt->to,
-                    "Last time, s (default 300; 100 on the turnaround path; at most the end of the valid motion). "
-                    "The table ends exactly at it when "
-                    "the steps from --from land on it (up to rounding), else at the last step before it");
+    opt->window.add_to(sub, "First moment (default 0; -100m on the turnaround path)",
+                       "Last moment (default 300m: 300 s at 1 m/s; 100m on the turnaround path; at most the end of "
+                       "the valid motion). The table ends exactly at it when the steps from --from land on it (up "
+                       "to rounding), else at the last step before it");
     sub->add_option("--step", opt->step, "Time step, s (default 1)");
     sub->add_option("-o,--out", opt->out,
                     "Output file: .csv (long form), .json, or .xlsx (the contest's result1 layout); "
@@ -54,11 +54,21 @@ void register_simulate(CLI::App& app, Registry& reg) {
         const int digits = checked_digits(opt->digits);
         const Scenario s = opt->scenario.resolve();
         const bool turn = s.path.kind == PathKind::turnaround;
-        const double t0 = opt->from.value_or(turn ? -100.0 : 0.0);
-        const double t1 = opt->to.value_or(turn ? 100.0 : 300.0);
+        // The contest's runs, as head travel: 300 m coiling in, 100 m either side of the turn.
+        const RunWindow window = opt->window.resolve(
+            turn ? kTurnaroundWindow : RunWindow{Along::metres(0.0), Along::metres(300.0)});
         if (!opt->out.empty()) AtomicFile probe(opt->out);  // an unwritable path fails here, before any work
         const Simulation sim(s);
+        require_valid_at(sim, window.from, "time range start");
+        require_valid_at(sim, window.to, "time range end");
+        const double t0 = window.from.time(s.head_speed), t1 = window.to.time(s.head_speed);
         const std::vector<Frame> frames = simulate_table(sim, t0, t1, opt->step);
+        // Rows past the first contact show benches lying across each other: said on stderr.
+        const CollideAnswer contact = first_contact_covering(sim, t0, t1);
+        if (const std::optional<Contact>& c = contact.contact; c && !frames.empty() && frames.back().time > c->time)
+            fmt::print(stderr, "dragon: note: rows {} t = {} s are past the first contact (bench {} touches bench "
+                               "{}): from there on benches overlap\n", contact.overlapping ? "from" : "after",
+                       format_resolved(c->time, c->tolerance), c->bench_a, c->bench_b);
         if (ext == ".xlsx" && frames.size() > kMaxWorkbookFrames)
             throw InputError(fmt::format("{} frames do not fit in one worksheet (at most {} "
                                          "columns): use a larger --step or .csv", frames.size(), kMaxWorkbookFrames));

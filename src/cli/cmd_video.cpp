@@ -13,6 +13,7 @@
 #include "cli/render_flags.hpp"
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
+#include "cli/window_flags.hpp"
 #include "cli/wording.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
@@ -29,7 +30,7 @@ namespace {
 struct VideoCliOptions {
     ScenarioFlags scenario;
     std::string out;
-    std::optional<double> from;
+    std::optional<std::string> from;
     std::string to;
     double fps = 30.0;
     double speedup = 10.0;
@@ -55,7 +56,7 @@ struct End {
 
 End resolve_to(const std::string& to, const Simulation& sim, double from) {
     const bool turn = sim.scenario().path.kind == PathKind::turnaround;
-    const std::string what = to.empty() ? (turn ? "100" : "collision") : to;
+    const std::string what = to.empty() ? (turn ? "100m" : "collision") : to;
     if (what == "collision") {
         // The motion's first contact: the one every command reports (collide, turnaround, render
         // --collision), searched over the path's default window.
@@ -90,12 +91,15 @@ End resolve_to(const std::string& to, const Simulation& sim, double from) {
         return {end, std::nullopt};
     }
     try {
-        size_t used = 0;
-        const double t = std::stod(what, &used);
-        if (used == what.size()) return {t, std::nullopt};
-    } catch (const std::exception&) {
+        const Along a = parse_along("--to", what);
+        require_valid_at(sim, a, "time range end");
+        return {a.time(sim.scenario().head_speed), std::nullopt};
+    } catch (const PastTheValidMotion&) {
+        throw;
+    } catch (const InputError&) {
+        throw InputError(fmt::format("--to {} is not allowed: give a time in seconds (12.5), head travel in metres "
+                                     "(100m), collision, boundary or end", to));
     }
-    throw InputError(fmt::format("--to {} is not allowed: give a time in seconds, collision, boundary or end", to));
 }
 
 }  // namespace
@@ -105,11 +109,12 @@ void register_video(CLI::App& app, Registry& reg) {
     CLI::App* sub = app.add_subcommand("video", "Animate to MP4 (H.264), WebM (VP9) or GIF");
     opt->scenario.add_to(sub, ScenarioUse::drawing());
     sub->add_option("-o,--out", opt->out, "Output file: .mp4, .webm or .gif")->required();
-    sub->add_option("--from", opt->from, "First moment, simulated s (default 0; -100 on the turnaround path)");
+    sub->add_option("--from", opt->from, "First moment: simulated s, or head travel with m (default 0; -100m on the "
+                                         "turnaround path)")->type_name("T|Xm");
     sub->add_option("--to", opt->to,
-                    "Last moment: simulated s, or collision (first contact, marked), boundary (head at the "
-                    "turning space), end (the end of the valid motion: the spiral's centre, or where a handle "
-                    "would have to jump). Default: collision; 100 on the turnaround path");
+                    "Last moment: simulated s, head travel with m, or collision (first contact, marked), boundary "
+                    "(head at the turning space), end (the end of the valid motion: the spiral's centre, or where "
+                    "a handle would have to jump). Default: collision; 100m on the turnaround path");
     sub->add_option("--fps", opt->fps, "Frames per second of video, 0.01 to 240 (default 30)");
     sub->add_option("--speedup", opt->speedup, "Simulated seconds per second of video (default 10)");
     sub->add_option("--hold", opt->hold, "Seconds the last moment stays on screen, 0..3600, drawn once (default 1 at a collision, else 0)");
@@ -173,7 +178,9 @@ void register_video(CLI::App& app, Registry& reg) {
 
         const Simulation sim(s);
         const bool turn = s.path.kind == PathKind::turnaround;
-        const double from = opt->from.value_or(turn ? -100.0 : 0.0);
+        const Along start = opt->from ? parse_along("--from", *opt->from) : Along::metres(turn ? -100.0 : 0.0);
+        require_valid_at(sim, start, "time range start");
+        const double from = start.time(s.head_speed);
         const End end = resolve_to(opt->to, sim, from);
         // An empty range named by both flags (the library names it "time range").
         if (std::isfinite(from) && std::isfinite(end.time) && !(end.time > from))

@@ -127,4 +127,14 @@ Clearance clearance_all_pairs(const Frame& f) {
     return best;
 }
 
+std::vector<Overlap> overlaps(const Frame& f) {
+    std::vector<Overlap> out;
+    for (const auto& [a, b] : candidate_pairs(f, 0.0)) {
+        const Separation s = separation(f.benches[static_cast<size_t>(a - 1)], f.benches[static_cast<size_t>(b - 1)]);
+        if (s.distance < 0.0) out.push_back({a, b, -s.distance, s.point});
+    }
+    std::sort(out.begin(), out.end(), [](const Overlap& x, const Overlap& y) { return x.depth > y.depth; });
+    return out;
+}
+
 }  // namespace dragon

@@ -19,7 +19,11 @@ OverlapAtStart::OverlapAtStart(const std::string& start, int a, int b, double ov
                              a, b, overlap)),
       bench_a(a), bench_b(b), depth(overlap) {}
 
-CollideAnswer collide(const Simulation& sim, const RunWindow& window, Executor* executor) {
+namespace {
+
+// The search itself: a contact at the window's start with the benches overlapping is reported
+// with `overlapping` set.
+CollideAnswer search(const Simulation& sim, const RunWindow& window, Executor* executor) {
     const WindowCut cut = cut_window(sim, window);
     CollideAnswer out;
     out.asked = window;
@@ -27,19 +31,35 @@ CollideAnswer collide(const Simulation& sim, const RunWindow& window, Executor* 
     ContactSearchOptions options;
     options.executor = executor;
     out.contact = first_contact_travel(sim, cut.from, cut.to, options);
-    if (out.contact && out.contact->travel <= cut.from) {
-        // Touching exactly where the search starts is a contact there; overlapping is not a
-        // first contact: the benches met before the window.
-        const Clearance now = clearance(out.contact->frame);
-        if (now.distance < 0.0) throw OverlapAtStart(given_start(window), now.bench_a, now.bench_b, -now.distance);
-    }
+    // Touching exactly where the search starts is a contact there; overlapping is not a first
+    // contact: the benches met before the window.
+    if (out.contact && out.contact->travel <= cut.from) out.overlapping = clearance(out.contact->frame).distance < 0.0;
     // The end of the valid motion matters only where nothing touched before it.
     if (!out.contact) out.jam = cut.after;
     return out;
 }
 
+}  // namespace
+
+CollideAnswer collide(const Simulation& sim, const RunWindow& window, Executor* executor) {
+    CollideAnswer out = search(sim, window, executor);
+    if (out.overlapping) {
+        const Clearance now = clearance(out.contact->frame);
+        throw OverlapAtStart(given_start(window), now.bench_a, now.bench_b, -now.distance);
+    }
+    return out;
+}
+
 CollideAnswer first_contact_of_motion(const Simulation& sim, Executor* executor) {
     return collide(sim, default_window(sim.scenario().path.kind), executor);
+}
+
+CollideAnswer first_contact_covering(const Simulation& sim, double t_from, double t_to, Executor* executor) {
+    RunWindow w = default_window(sim.scenario().path.kind);
+    const double v = sim.scenario().head_speed;
+    if (t_from < w.from.time(v)) w.from = Along::seconds(t_from);
+    if (t_to > w.to.time(v)) w.to = Along::seconds(t_to);
+    return search(sim, w, executor);
 }
 
 }  // namespace dragon

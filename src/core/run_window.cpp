@@ -17,9 +17,10 @@ std::string given(const Along& a) {
     return a.unit == Along::Unit::seconds ? error_value(a.value) : fmt::format("{} m", error_value(a.value));
 }
 
-// An end within the valid motion on its own side of t = 0 (a start ahead of t = 0, an end behind
-// it), else PastTheValidMotion naming it as given.
-void require_valid_end(const Simulation& sim, const Along& a, double x, const char* field) {
+}  // namespace
+
+void require_valid_at(const Simulation& sim, const Along& a, const char* field) {
+    const double x = a.travel(sim.scenario().head_speed);
     try {
         if (a.unit == Along::Unit::seconds) sim.require_valid(a.value, field);
         else sim.require_valid_travel(x, field);
@@ -29,8 +30,6 @@ void require_valid_end(const Simulation& sim, const Along& a, double x, const ch
         throw InputError(field, given(a), e.allowed());
     }
 }
-
-}  // namespace
 
 RunWindow default_window(PathKind kind) {
     if (kind == PathKind::turnaround) return kTurnaroundWindow;
@@ -63,8 +62,8 @@ WindowCut cut_window(const Simulation& sim, const RunWindow& w) {
             throw InputError("time range end", given(w.to), fmt::format("it must be after the start, {}", given(w.from)));
     }
     // A start past the motion's end (or an end before its beginning) leaves nothing valid.
-    if (cut.from >= 0.0) require_valid_end(sim, w.from, cut.from, "time range start");
-    if (!open && cut.to <= 0.0) require_valid_end(sim, w.to, cut.to, "time range end");
+    if (cut.from >= 0.0) require_valid_at(sim, w.from, "time range start");
+    if (!open && cut.to <= 0.0) require_valid_at(sim, w.to, "time range end");
     if (cut.from < valid.from_travel) cut.from = valid.from_travel, cut.before = valid.before;
     if (!open && cut.to > valid.to_travel) {
         cut.to = valid.to_travel;
@@ -72,7 +71,7 @@ WindowCut cut_window(const Simulation& sim, const RunWindow& w) {
             cut.after = valid.after;
         } else {
             // Past the spiral's centre, with no jam before it: the head has no place there.
-            require_valid_end(sim, w.to, w.to.travel(v), "time range end");
+            require_valid_at(sim, w.to, "time range end");
         }
     }
     if (!(cut.to > cut.from))

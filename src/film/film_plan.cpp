@@ -17,13 +17,6 @@ using film::ViewPlan;
 
 // As for any film (an hour at 240 fps is 864 000 frames).
 constexpr long max_frames = kMaxFilmFrames;
-// Where a run's first contact is searched from: the start of the motion (the contest's window
-// on the turnaround), or the shot's own start when it is earlier.
-double search_start(const Simulation& sim, const ShotView& v) {
-    const double start = sim.scenario().path.kind == PathKind::turnaround ? -100.0 : 0.0;
-    return v.from.anchor == TimeRef::Anchor::time ? std::min(start, v.from.offset) : start;
-}
-
 struct Resolver {
     const Storyboard& board;
     int shot;
@@ -43,25 +36,30 @@ struct Resolver {
         }
     }
 
+    // The run's first contact: the motion's (collide's over the path's default window), or the
+    // earliest over a run that starts before that window.
     void find_contact(ViewPlan& v, const std::string& key) const {
         if (v.contact) return;
         const Simulation& sim = *v.sim;
-        const double from = search_start(sim, v.spec);
-        const Simulation::Span span = named(key, [&] {
-            const double end = sim.valid_end();
-            return sim.clip_to_valid(from, std::isfinite(end) ? end : from + 3600.0, "the search's start", "its end");
+        const CollideAnswer a = named(key, [&] {
+            if (v.spec.from.anchor == TimeRef::Anchor::time || v.spec.from.anchor == TimeRef::Anchor::travel) {
+                const double from = time(v, v.spec.from, key);
+                return first_contact_covering(sim, from, from);
+            }
+            return first_contact_of_motion(sim);
         });
-        const std::optional<Contact> c = first_contact(sim, span.from, span.to);
-        if (!c)
-            fail(key, fmt::format("no two benches touch between t = {:g} s and {:.6f} s on this scenario", span.from,
-                                  span.to));
-        v.contact = CollisionMark{c->bench_a, c->bench_b, c->point};
-        v.contact_time = c->time;
+        if (!a.contact)
+            fail(key, fmt::format("no two benches touch between t = {:g} s and {:.6f} s on this scenario", a.window.from,
+                                  a.window.to));
+        const Contact& c = *a.contact;
+        v.contact = CollisionMark{c.bench_a, c.bench_b, c.point};
+        v.contact_time = c.time;
     }
 
     double time(ViewPlan& v, const TimeRef& r, const std::string& key) const {
         switch (r.anchor) {
         case TimeRef::Anchor::time: return r.offset;
+        case TimeRef::Anchor::travel: return v.sim->time_of(r.offset);
         case TimeRef::Anchor::collision: find_contact(v, key); return v.contact_time + r.offset;
         case TimeRef::Anchor::boundary: return boundary_time(*v.sim) + r.offset;
         case TimeRef::Anchor::end: {

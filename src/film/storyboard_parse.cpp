@@ -121,8 +121,10 @@ ShotView view_of(const Where& w, const Context& cx, const toml::table& shot, con
     ShotView v;
     v.scenario = scenario_of(w, cx, t, prefix);
     const bool turn = v.scenario.path.kind == PathKind::turnaround;
-    v.from = {TimeRef::Anchor::time, turn ? -100.0 : 0.0};
-    v.to = turn ? TimeRef{TimeRef::Anchor::time, 100.0} : TimeRef{TimeRef::Anchor::collision, 0.0};
+    // The contest's runs as head travel: coiling in from the start to the first contact, the
+    // turnaround 100 m either side of the turn (100 s at 1 m/s).
+    v.from = {TimeRef::Anchor::travel, turn ? -100.0 : 0.0};
+    v.to = turn ? TimeRef{TimeRef::Anchor::travel, 100.0} : TimeRef{TimeRef::Anchor::collision, 0.0};
     // A pane's keys are named with their place: split[2].to.
     auto key = [&](const char* k) { return (pane && pane->contains(k) ? prefix : std::string()) + k; };
     if (const toml::node* n = t.get("from")) v.from = film::time_ref(w, *n, key("from"));

@@ -52,10 +52,20 @@ TimeRef time_ref(const Where& w, const toml::node& n, const std::string& key) {
     if (n.is_number()) return {TimeRef::Anchor::time, number(w, n, key)};
     const std::string s = n.is_string() ? *n.value<std::string>() : std::string();
     const auto bad = [&] {
-        w.fail(key, fmt::format("'{}' is not a moment: give seconds, or collision, boundary or end, optionally "
-                                "with + or - seconds (\"collision - 5\")", s));
+        w.fail(key, fmt::format("'{}' is not a moment: give seconds, head travel in metres (\"-100 m\"), or "
+                                "collision, boundary or end, optionally with + or - seconds (\"collision - 5\")", s));
     };
     if (!n.is_string()) bad();
+    {
+        // Head travel: a number and "m".
+        char* end = nullptr;
+        const double v = std::strtod(s.c_str(), &end);
+        if (end != s.c_str() && std::isfinite(v)) {
+            std::string rest = end;
+            rest.erase(0, rest.find_first_not_of(' '));
+            if (rest == "m") return {TimeRef::Anchor::travel, v};
+        }
+    }
     std::size_t i = 0;
     while (i < s.size() && std::isalpha(static_cast<unsigned char>(s[i]))) ++i;
     const std::string word = s.substr(0, i);

@@ -113,6 +113,23 @@ void add_guides(Scene& scene, const Simulation& sim, const Frame& frame) {
     }
 }
 
+// Benches lying across each other, past the first contact: in the touching colour, each
+// overlap's deepest corner marked, the deepest one labelled with its depth.
+void mark_overlaps(Scene& scene, const Frame& frame) {
+    for (const Overlap& o : overlaps(frame)) {
+        if (o.depth < kTouchingDepth) break;  // deepest first: the rest only touch
+        scene.overlaps.push_back(o);
+        for (int k : {o.bench_a, o.bench_b}) scene.benches[static_cast<size_t>(k - 1)].style = Scene::Style::collision;
+        scene.markers.push_back({o.point, scene.theme.contact, 3.0, false});
+    }
+    if (scene.overlaps.empty()) return;
+    const Overlap& deepest = scene.overlaps.front();
+    scene.labels.push_back({deepest.point,
+                            fmt::format("overlap {:.3f} m (benches {} and {})", deepest.depth, deepest.bench_a,
+                                        deepest.bench_b),
+                            scene.theme.collision, 13.0, 6.0, -6.0, deepest.bench_a, 1});
+}
+
 // The whole dragon small (draw() marks the main view's box on it): where a close-up or a
 // followed head is.
 std::shared_ptr<const Scene> make_inset(const Simulation& sim, const Frame& frame, const SceneOptions& opt,
@@ -130,6 +147,7 @@ std::shared_ptr<const Scene> make_inset(const Simulation& sim, const Frame& fram
     io.annotation = "";
     io.collision = opt.collision;
     io.highlight_benches = opt.highlight_benches;
+    io.mark_overlaps = opt.mark_overlaps;
     return std::make_shared<const Scene>(make_scene(sim, frame, io));
 }
 
@@ -157,6 +175,7 @@ Scene make_scene(const Simulation& sim, const Frame& frame, const SceneOptions& 
             if (k >= 1 && k <= n) scene.benches[k - 1].style = Scene::Style::collision;
         scene.collision = opt.collision;
     }
+    if (opt.mark_overlaps) mark_overlaps(scene, frame);
 
     scene.handles.reserve(frame.handles.size());
     for (const Handle& h : frame.handles) scene.handles.push_back(h.pos);
@@ -179,7 +198,7 @@ Scene make_scene(const Simulation& sim, const Frame& frame, const SceneOptions& 
         fmt::format("t = {:.3f} s   pitch = {:.3g} m", frame.time, sc.coil_pitch()));
     scene.title_band = opt.title_band;
     scene.legend = opt.show_legend;
-    scene.legend_touching = opt.collision.has_value();
+    scene.legend_touching = opt.collision.has_value() || !scene.overlaps.empty();
     if (opt.show_inset && opt.camera.mode != Camera::Mode::fit_dragon) scene.inset = make_inset(sim, frame, opt, scene);
     return scene;
 }

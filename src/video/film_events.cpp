@@ -22,7 +22,16 @@ std::vector<FilmEvent> clip_events(const Simulation& sim, double from, double to
             out.push_back({t, fmt::format("head reaches the turning space (r = {:g} m), t = {:.6f} s",
                                           s.path.turn_radius, t)});
     }
-    if (contact) out.push_back({to, contact_caption(*contact, to)});
+    if (contact) {
+        out.push_back({to, contact_caption(*contact, to)});
+    } else if (const std::optional<Contact> c = first_contact_covering(sim, from, to).contact; c && c->time <= to) {
+        // The range passes the first contact: from there on the benches overlap.
+        const CollisionMark mark{c->bench_a, c->bench_b, c->point};
+        if (c->time > from) out.push_back({c->time, contact_caption(mark, c->time)});
+        else
+            out.push_back({from, fmt::format("past the first contact (bench {} touches bench {} at t = {:.6f} s): "
+                                             "benches overlap", c->bench_a, c->bench_b, c->time)});
+    }
     const ValidRange valid = sim.valid_range();
     if (valid.after && to == valid.to)
         out.push_back({to, fmt::format("end of the valid motion, t = {:.6f} s: {}", to, describe(*valid.after))});

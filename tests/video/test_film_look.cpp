@@ -26,13 +26,25 @@ TEST(FilmLook, EventsAreTheBoundaryTheContactAndTheEndOfTheValidMotion) {
     EXPECT_NE(ev[0].caption.find("head reaches the turning space"), std::string::npos) << ev[0].caption;
     EXPECT_EQ(ev[1].time, 412.473838);
     EXPECT_EQ(ev[1].caption, "first contact: bench 1 touches bench 9, t = 412.473838 s");
-    // A clip that stops where the dragon can no longer follow its path says so.
+    // A clip that passes the first contact says so where it happens (the same contact the
+    // exact search finds)...
+    const std::optional<Contact> hit = first_contact(sim, 0.0, sim.valid_end());
+    ASSERT_TRUE(hit);
+    const std::vector<FilmEvent> passing = clip_events(sim, 405.0, 420.0, std::nullopt);
+    ASSERT_EQ(passing.size(), 1u);
+    EXPECT_EQ(passing[0].time, hit->time);
+    EXPECT_EQ(passing[0].caption, contact_caption({hit->bench_a, hit->bench_b, hit->point}, hit->time));
+    // ... and one that stops where the dragon can no longer follow its path, starting after
+    // the first contact, says both.
     const double end = sim.valid_end();
     const std::vector<FilmEvent> at_end = clip_events(sim, end - 1.0, end, std::nullopt);
-    ASSERT_EQ(at_end.size(), 1u);
-    EXPECT_EQ(at_end[0].time, end);
-    EXPECT_NE(at_end[0].caption.find("end of the valid motion"), std::string::npos) << at_end[0].caption;
-    EXPECT_NE(at_end[0].caption.find("handle 1"), std::string::npos) << at_end[0].caption;
+    ASSERT_EQ(at_end.size(), 2u);
+    EXPECT_EQ(at_end[0].time, end - 1.0);
+    EXPECT_NE(at_end[0].caption.find("past the first contact (bench 1 touches bench 9"), std::string::npos)
+        << at_end[0].caption;
+    EXPECT_EQ(at_end[1].time, end);
+    EXPECT_NE(at_end[1].caption.find("end of the valid motion"), std::string::npos) << at_end[1].caption;
+    EXPECT_NE(at_end[1].caption.find("handle 1"), std::string::npos) << at_end[1].caption;
     // Before the boundary nothing happens.
     EXPECT_TRUE(clip_events(sim, 0.0, 100.0, std::nullopt).empty());
 }
