@@ -90,7 +90,8 @@ std::string what_to_give(const CLI::App& sub, const CLI::Option& opt) {
     if (name == "--theme") return "use light, dark or a .toml file";
     if (name == "--path") return "use spiral or turnaround";
     if (name == "--size") return "give WIDTHxHEIGHT in pixels, as 1280x720";
-    if (name == "--to" && sub.get_name() == "video") return "give a time in seconds, or collision, boundary or end";
+    if (name == "--to" && sub.get_name() == "video")
+        return "give a time in seconds (12.5), head travel in metres (100m), collision, boundary or end";
     if (opt.get_type_name() == "T|Xm")
         return "give a time in seconds (12.5, or 12.5s) or a length of the head's travel in metres (-100m)";
     if (name == "storyboard") return "give the storyboard's .toml file: dragon film STORY.toml -o FILM.mp4";
