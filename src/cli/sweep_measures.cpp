@@ -159,7 +159,14 @@ MeasureResult run_measure(const MeasureInfo& m, const Scenario& scenario, const 
         if (!jam.empty()) out.state = State::jam, out.note = fmt::format("jam ({}): {}", m.name, jam);
     } catch (const OverlapAtStart& e) {
         // The chain collides: a verdict on the scenario, as min-pitch gives it, not a refusal.
-        out = {State::collides, std::nullopt, overlap_note_prefix(m) + e.what()};
+        const std::string& start = e.value();  // "0 m" (head travel) or "420" (seconds)
+        const std::string at = start.size() > 2 && start.compare(start.size() - 2, 2, " m") == 0
+                                   ? start + " of head travel"
+                                   : "t = " + start + " s";
+        out = {State::collides, std::nullopt,
+               overlap_note_prefix(m) + fmt::format("benches {} and {} already overlap at {}, where the search "
+                                                    "starts (by {:.6f} m): their first contact is before it",
+                                                    e.bench_a, e.bench_b, at, e.depth)};
     } catch (const InputError& e) {
         out = {State::refused, std::nullopt, fmt::format("refused ({}): {}", m.name, e.what())};
     } catch (const std::exception& e) {
