@@ -8,7 +8,10 @@
 // A window's end may also be given in seconds, at the scenario's head speed.
 #pragma once
 
+#include <optional>
 #include <string>
+
+#include "dragon/valid_motion.hpp"
 
 namespace dragon {
 
@@ -38,10 +41,11 @@ inline constexpr RunWindow kTurnaroundWindow{Along::metres(-100.0), Along::metre
 std::string to_string(const Along& a);
 
 // A window as the analysis searched it: in travel and in time, after cutting it to the valid
-// motion (the ends are then where the motion ends).
+// motion (the ends are then where the motion ends, and the jams there say why).
 struct Searched {
     double from = 0.0, to = 0.0;                // s
     double from_travel = 0.0, to_travel = 0.0;  // m
+    std::optional<Jam> before, after;           // the ends of the valid motion that cut it
 };
 
 }  // namespace dragon

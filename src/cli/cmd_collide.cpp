@@ -70,7 +70,7 @@ void register_collide(CLI::App& app, Registry& reg) {
                            search.jam ? format_resolved(search.window.to, search.jam->tolerance)
                                       : format_time(search.window.to),
                            format_time(search.window.from_travel), format_time(search.window.to_travel));
-                if (search.jam) fmt::print("the search ends there: {}\n", jam_sentence(*search.jam));
+                fmt::print("{}", window_cuts(search.window, "the search"));
             }
             if (!opt->out.empty()) status(opt->quiet, "no contact: wrote {} with the table's header and no rows", opt->out);
             return 0;

@@ -61,7 +61,7 @@ void register_max_speed(CLI::App& app, Registry& reg) {
                    format_time(m.window.to), format_time(m.window.from_travel), format_time(m.window.to_travel),
                    s.head_speed, m.scan_travel, count_of(m.candidates, "local maximum", "local maxima"),
                    count_of(m.evaluations, "chain"));
-        if (m.jam) fmt::print("  the search ends there: {}\n", jam_sentence(*m.jam));
+        fmt::print("{}", window_cuts(m.window, "the search"));
         return 0;
     };
 }

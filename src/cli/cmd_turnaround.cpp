@@ -82,7 +82,7 @@ void print_text(const TurnaroundStudy& st, const std::optional<RunClearance>& cl
         fmt::print("\nClearance over {}: smallest {:.6f} m, benches {} and {} at t = {:.6f} s; collision-free\n",
                    range, clear->distance, clear->bench_a, clear->bench_b, clear->time);
     }
-    if (clear->jam) fmt::print("  the check ends there: {}\n", jam_sentence(*clear->jam));
+    fmt::print("{}", window_cuts(w, "the check"));
 }
 
 }  // namespace

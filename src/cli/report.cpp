@@ -151,6 +151,13 @@ std::string jam_sentence(const Jam& j) {
                        format_resolved(j.time, j.tolerance), describe(j));
 }
 
+std::string window_cuts(const Searched& w, const std::string& what) {
+    std::string out;
+    if (w.before) out += fmt::format("  {} starts there: {}\n", what, jam_sentence(*w.before));
+    if (w.after) out += fmt::format("  {} ends there: {}\n", what, jam_sentence(*w.after));
+    return out;
+}
+
 void add_window(Json& answer, const Searched& w) {
     answer["from"] = w.from;
     answer["to"] = w.to;

@@ -53,6 +53,9 @@ Json jam_json(const std::optional<Jam>& j);
 // follow handle 0: ..." (from instead of until for a jam behind t = 0). Every command words a
 // jam with this one sentence.
 std::string jam_sentence(const Jam& j);
+// Where the end of the valid motion cut a window: "  {what} starts there: the dragon can follow
+// its path only from ...\n" and the same for its end, or "" when neither did.
+std::string window_cuts(const Searched& w, const std::string& what);
 // The window an answer searched, both ways: "from", "to" (s) and "from_travel", "to_travel" (m of
 // head travel), added to `answer`.
 void add_window(Json& answer, const Searched& w);

@@ -55,7 +55,8 @@ struct Group {
 }  // namespace
 
 double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, const std::vector<double>& half_diagonals,
-                      const std::vector<Radial>& radial, double margin) {
+                      const std::vector<Radial>& radial, double margin, std::vector<GroupRecord>& record,
+                      const std::vector<GroupRecord>* last, double step, bool* broken) {
     const size_t n = f.benches.size();
     std::vector<Group> groups;
     groups.reserve(n / kGroup + 1);
@@ -83,7 +84,9 @@ double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, co
         }
         groups.push_back(g);
     }
-    double step = INFINITY;
+    double out = INFINITY;
+    record.clear();
+    const bool check = last && broken && last->size() == groups.size() * (groups.size() + 1) / 2;
     for (size_t a = 0; a < groups.size(); ++a) {
         const Group& ga = groups[a];
         for (size_t b = a; b < groups.size(); ++b) {
@@ -91,10 +94,20 @@ double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, co
             const double closing = ga.speed + gb.speed + std::abs(ga.rate - gb.rate) * std::min(ga.reach, gb.reach);
             const double apart = std::max(margin, norm(ga.centre - gb.centre) - ga.radius - gb.radius);
             const double pair_step = closing > 0.0 ? apart / (kSafety * closing) : INFINITY;
-            step = std::min(step, std::max(pair_step, radial_step(ga.radii, gb.radii)));
+            out = std::min(out, std::max(pair_step, radial_step(ga.radii, gb.radii)));
+            const GroupRecord r{apart, closing, radial_gap(ga.radii, gb.radii), ga.radii.speed + gb.radii.speed};
+            if (check) {
+                // The step held for these groups if, at the speeds measured here, either gap they
+                // had at its start lasts the whole step.
+                const GroupRecord& was = (*last)[record.size()];
+                const bool held = closing * step <= was.apart * (1.0 + 1e-9) ||
+                                  (was.radial_gap > 0.0 && r.radial_closing * step <= was.radial_gap * (1.0 + 1e-9));
+                if (!held) *broken = true;
+            }
+            record.push_back(r);
         }
     }
-    return step;
+    return out;
 }
 
 }  // namespace dragon::contact

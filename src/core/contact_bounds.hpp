@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "core/contact_step.hpp"
 #include "core/motion.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/constants.hpp"
@@ -20,7 +21,11 @@ double radial_gap(const Radial& a, const Radial& b);
 double radial_step(const Radial& a, const Radial& b);
 
 // The time no pair of benches farther apart than `margin` can touch in (see contact_bounds.cpp).
+// Each group pair's bounds go to `record`. Given `last`, the records of the evaluation `step`
+// ago (the same groups), `broken` is set when a group pair closes here faster than the gap it
+// had there could take for the whole step: the step's promise for it did not hold at its end.
 double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, const std::vector<double>& half_diagonals,
-                      const std::vector<Radial>& radial, double margin);
+                      const std::vector<Radial>& radial, double margin, std::vector<GroupRecord>& record,
+                      const std::vector<GroupRecord>* last = nullptr, double step = 0.0, bool* broken = nullptr);
 
 }  // namespace dragon::contact

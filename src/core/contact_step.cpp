@@ -28,32 +28,51 @@ namespace {
 // step, farther than a probe looks, are passed over (gap infinite); the others get their
 // projected gap (a lower bound on the distance), and those whose first-order step could set the
 // step go to ws.tight. Returns the index of the pair with the smallest projected gap.
-size_t screen_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pairs, double cap, Workspace& ws) {
+size_t screen_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pairs, double cap, const StepRecord& last,
+                    StepRecord& next, bool check, double step, Workspace& ws, bool& broken) {
     const std::vector<BenchMotion>& motion = ws.motion;
     ws.tight.clear();
     ws.gaps.resize(pairs.size());
+    next.gaps.clear();
     double best_gap = INFINITY;
     size_t seed = 0;
     for (size_t k = 0; k < pairs.size(); ++k) {
         const size_t i = static_cast<size_t>(pairs[k].first - 1), j = static_cast<size_t>(pairs[k].second - 1);
+        const BenchMotion& ma = motion[i];
+        const BenchMotion& mb = motion[j];
+        // Relative velocity field of b seen from a: affine, so within a's rectangle its norm is
+        // at most its value at a's centre plus the turn-rate difference times the half-diagonal
+        // (plus b's turn rate times the gap between them, below).
+        const double spread = norm(mb.at(ma.centre) - ma.v_centre) + std::abs(mb.omega - ma.omega) * ws.half_diagonals[i];
+        const double radial_closing = ws.radial[i].speed + ws.radial[j].speed;
+        const std::uint64_t key = key_of(pairs[k].first - 1, pairs[k].second - 1);
+        // The step that led here promised this pair a gap for its whole length: does it hold at
+        // the closing speeds measured here? (A pair the last evaluation had no record of was
+        // beyond its broad phase's margin then: its group answers for it.)
+        if (check) {
+            if (const GapRecord* was = last.gaps.find(key)) {
+                const double closing = spread + std::abs(mb.omega) * std::max(was->gap, 0.0);
+                const bool held = was->second_order || (was->gap > 0.0 && closing * step <= was->gap * (1.0 + 1e-9)) ||
+                                  (was->radial_gap > 0.0 && radial_closing * step <= was->radial_gap * (1.0 + 1e-9));
+                if (!held) broken = true;
+            }
+        }
         // Benches on neighbouring turns slide past each other: when their radii alone keep them
         // apart for the whole step and farther than a probe would look, they cannot set the step,
         // touch, or be probed, and need no closer look (most pairs, away from the centre).
         const double radial_first_order = radial_step(ws.radial[i], ws.radial[j]);
-        if (radial_first_order >= cap && radial_gap(ws.radial[i], ws.radial[j]) >= kProbeGap) {
+        const double rgap = radial_gap(ws.radial[i], ws.radial[j]);
+        if (radial_first_order >= cap && rgap >= kProbeGap) {
             ws.gaps[k] = INFINITY;
+            next.gaps.emplace(key, {0.0, 0.0, rgap, radial_closing});
             continue;
         }
         const double g = projected_gap(f.benches[i], f.benches[j]);  // a lower bound on the distance
         ws.gaps[k] = g;
         if (g < best_gap) best_gap = g, seed = k;
-        // Relative velocity field of b seen from a: affine, so within a's rectangle its norm is
-        // at most its value at a's centre plus the turn-rate difference times the half-diagonal.
-        const BenchMotion& ma = motion[i];
-        const BenchMotion& mb = motion[j];
         const double gap = std::max(g, 0.0);
-        const double bound = norm(mb.at(ma.centre) - ma.v_centre) +
-                             std::abs(mb.omega - ma.omega) * ws.half_diagonals[i] + std::abs(mb.omega) * gap;
+        const double bound = spread + std::abs(mb.omega) * gap;
+        next.gaps.emplace(key, {gap, bound, rgap, radial_closing});
         // First-order step gap / (kSafety bound), divided out only for the pairs that could set it.
         if (gap < cap * kSafety * bound) {
             const double first_order = std::max(gap / (kSafety * bound), radial_first_order);
@@ -68,8 +87,8 @@ size_t screen_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pair
 // far), each bounded to second order on its eight corner gaps. Returns the step; ws.pair_steps
 // holds each pair looked at with its step, and `skipped` what every other pair allows at least.
 double refine_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pairs, double t, double cap,
-                    const Memory& memory, Memory& next, bool check, Workspace& ws, double& skipped,
-                    bool& bound_broken) {
+                    const Memory& memory, Memory& next, FlatMap<GapRecord>& gaps, bool check, Workspace& ws,
+                    double& skipped, bool& bound_broken) {
     using Candidate = Workspace::Candidate;
     std::vector<Candidate>& tight = ws.tight;
     const auto later = [](const Candidate& x, const Candidate& y) { return x.first_order > y.first_order; };
@@ -112,6 +131,8 @@ double refine_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pair
         }
         next.emplace(key, mem);
         const double pair_step = std::max(c.first_order, h2);
+        if (h2 > c.first_order)
+            if (GapRecord* r = gaps.find(key)) r->second_order = true;
         ws.pair_steps.push_back({key, pair_step});
         step = std::min(step, pair_step);
     }
@@ -142,21 +163,25 @@ void closest_pair(const Frame& f, const std::vector<std::pair<int, int>>& pairs,
 
 }  // namespace
 
-Approach approach(const Frame& f, double t, double max_step, const Memory& memory, Memory& next, bool check,
+Approach approach(const Frame& f, double t, double max_step, const StepRecord& last, StepRecord& next, bool check,
                   Workspace& ws) {
     Approach a{{INFINITY, 0, 0, Vec2::Zero(), Vec2::Zero()}, INFINITY, 0.0, false, INFINITY};
+    next.time = t;
     if (f.benches.size() < 3) return a;
+    const double step = std::abs(t - last.time);
     // The search's own scratch (a search evaluates hundreds of frames).
     bench_motions_into(f, ws.motion);
     ws.half_diagonals.resize(f.benches.size());
     for (size_t k = 0; k < f.benches.size(); ++k) ws.half_diagonals[k] = half_diagonal(f.benches[k]);
     radial_extents(f, ws.motion, ws.radial);
     // Pairs beyond the margin: bounded group by group (far_pairs_step).
-    const double cap = std::min(max_step, far_pairs_step(f, ws.motion, ws.half_diagonals, ws.radial, kMargin));
+    const double cap = std::min(max_step, far_pairs_step(f, ws.motion, ws.half_diagonals, ws.radial, kMargin,
+                                                         next.groups, check ? &last.groups : nullptr, step,
+                                                         &a.bound_broken));
     const auto& pairs = ws.broad.candidate_pairs(f, kMargin);
-    const size_t seed = screen_pairs(f, pairs, cap, ws);
+    const size_t seed = screen_pairs(f, pairs, cap, last, next, check, step, ws, a.bound_broken);
     double skipped = cap;
-    a.safe_step = refine_pairs(f, pairs, t, cap, memory, next, check, ws, skipped, a.bound_broken);
+    a.safe_step = refine_pairs(f, pairs, t, cap, last.near, next.near, next.gaps, check, ws, skipped, a.bound_broken);
     if (pairs.empty()) {
         a.clear = clearance(f, kMargin, ws.broad);
         a.others_step = a.safe_step;

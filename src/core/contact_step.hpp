@@ -25,18 +25,31 @@ struct PairMemory {
 };
 inline std::uint64_t key_of(int a, int b) { return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b); }
 
-// The near pairs' memories by pair: a flat open-addressing table (a few hundred entries written
-// and read per evaluation; a node-based map spent more time allocating than the bounds took).
-class Memory {
+// What one evaluation promised of every broad-phase pair, for checking the step after it at its
+// end: a lower bound on the pair's distance then, and the closing speed that bound's step took
+// (the pair's first-order bound, or the radial one for a pair its radii keep apart).
+struct GapRecord {
+    double gap, closing;                // first order: projected gap, closing-speed bound (gap 0: none made)
+    double radial_gap, radial_closing;  // from the radii (gap not positive: none)
+    // The pair's step came from its second-order bound, whose curvature the next evaluation
+    // checks on its own (refine_pairs), not from either first-order one.
+    bool second_order = false;
+};
+
+// Records by pair: a flat open-addressing table (a few hundred entries written and read per
+// evaluation; a node-based map spent more time allocating than the bounds took).
+template <class Value>
+class FlatMap {
 public:
-    const PairMemory* find(std::uint64_t key) const {
+    Value* find(std::uint64_t key) { return const_cast<Value*>(static_cast<const FlatMap*>(this)->find(key)); }
+    const Value* find(std::uint64_t key) const {
         if (slots_.empty()) return nullptr;
         for (size_t k = hash(key);; k = (k + 1) & mask()) {
             if (slots_[k].key == key) return &slots_[k].value;
             if (slots_[k].key == kEmpty) return nullptr;
         }
     }
-    void emplace(std::uint64_t key, const PairMemory& value) {
+    void emplace(std::uint64_t key, const Value& value) {
         if (2 * (size_ + 1) > slots_.size()) grow();
         size_t k = hash(key);
         while (slots_[k].key != kEmpty && slots_[k].key != key) k = (k + 1) & mask();
@@ -47,7 +60,7 @@ public:
         for (Slot& s : slots_) s.key = kEmpty;
         size_ = 0;
     }
-    void swap(Memory& other) noexcept {
+    void swap(FlatMap& other) noexcept {
         slots_.swap(other.slots_);
         std::swap(size_, other.size_);
     }
@@ -61,7 +74,7 @@ private:
     static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
     struct Slot {
         std::uint64_t key = kEmpty;
-        PairMemory value{};
+        Value value{};
     };
     size_t mask() const { return slots_.size() - 1; }
     size_t hash(std::uint64_t key) const { return static_cast<size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & mask(); }
@@ -75,14 +88,42 @@ private:
     std::vector<Slot> slots_;
     size_t size_ = 0;
 };
+using Memory = FlatMap<PairMemory>;
+
+// A group pair of far_pairs_step (contact_bounds.hpp) as one evaluation bounded it: the distance
+// its members beyond the margin keep at least and their closing speed, and the gap their radii
+// keep and the speed it closes at (not positive: none).
+struct GroupRecord {
+    double apart, closing;
+    double radial_gap, radial_closing;
+};
+
+// Everything an evaluation promised, for checking at the next one: the near pairs' rates, every
+// broad-phase pair's gap and closing speed, every group pair's.
+struct StepRecord {
+    double time = 0.0;
+    Memory near;
+    FlatMap<GapRecord> gaps;
+    std::vector<GroupRecord> groups;
+    void swap(StepRecord& other) noexcept {
+        std::swap(time, other.time);
+        near.swap(other.near);
+        gaps.swap(other.gaps);
+        groups.swap(other.groups);
+    }
+};
 
 struct Approach {
     // The closest pair among those looked at: exact whenever the true clearance is below
     // kProbeGap (the pairs passed over are farther apart than that), else only an upper bound.
     Clearance clear;
     double safe_step;  // s: no contact can happen sooner
-    double rate;       // d/dt of the closest pair's separation now (negative: closing)
-    bool bound_broken; // a near pair's rates changed faster than the last step assumed
+    double rate;       // d/dt of the closing pair's separation now (negative: closing)
+    // The step that led here broke a promise of the last evaluation: a near pair's rates changed
+    // faster than its curvature bound allowed, or a pair (or group of pairs, or two benches kept
+    // apart by their radii) closes here faster than the gap it had there could take for the
+    // whole step.
+    bool bound_broken;
     // s: no pair but the closest one can touch sooner. A bracket for the closest pair's contact
     // must end by then, or the bisection in it could pass over another pair's brief contact.
     double others_step;
@@ -104,9 +145,10 @@ struct Workspace {
     std::vector<std::pair<std::uint64_t, double>> pair_steps;
 };
 
-// `memory` is what the last accepted evaluation saw; this one's goes to `next` (cleared first),
-// for the caller to keep if it accepts the step; `check` compares the two.
-Approach approach(const Frame& f, double t, double max_step, const Memory& memory, Memory& next, bool check,
+// `last` is what the last accepted evaluation promised; this one's goes to `next` (cleared
+// first), for the caller to keep if it accepts the step; `check` holds this evaluation, the end
+// of the step from `last`, to those promises.
+Approach approach(const Frame& f, double t, double max_step, const StepRecord& last, StepRecord& next, bool check,
                   Workspace& ws);
 
 }  // namespace dragon::contact

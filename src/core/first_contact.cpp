@@ -38,8 +38,8 @@ using contact::Approach;
 using contact::kMargin;
 using contact::kMaxTravel;
 using contact::kProbeGap;
-using contact::Memory;
 using contact::PairMemory;
+using contact::StepRecord;
 using contact::Workspace;
 
 // Head travel one proof of the untouched tail covers (untouched_tail.hpp): a shorter stretch
@@ -74,7 +74,7 @@ std::optional<Contact> search_stretch(const Simulation& sim, const Simulation& w
     const double time_tol = tol::travel;
     Frame f;
     double t = t_from;
-    Memory memory, seen;
+    StepRecord memory, seen;
     watched.frame_into(t, f);
     Approach a = approach(f, t, max_step, memory, seen, false, ws);
     memory.swap(seen);
@@ -107,7 +107,7 @@ std::optional<Contact> search_stretch(const Simulation& sim, const Simulation& w
                 // The rates turned faster than the step assumed: back to t, with a larger
                 // curvature on record, and a shorter step.
                 retry_cap = 0.25 * (next - t);
-                memory.for_each([](PairMemory& m) { m.curvature *= 4.0; });
+                memory.near.for_each([](PairMemory& m) { m.curvature *= 4.0; });
                 continue;
             }
             memory.swap(seen);

@@ -112,28 +112,41 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
 
     // Refine every coarse local maximum that could still beat the best sample: between samples
     // the ratio rises at most ~slope * ds, with the slope estimated from the scan and doubled.
+    // Each refined peak then checks that estimate: one that rose higher above its samples than
+    // `reach` allowed shows the ratio turning faster than the scan saw, and the reach grows to
+    // twice the largest rise seen, taking in the candidates it now allows.
     double slope = 0.0, best_coarse = 0.0;
     for (int k = 0; k < steps; ++k)
         slope = std::max(slope, std::abs(rho[static_cast<size_t>(k) + 1] - rho[static_cast<size_t>(k)]) / ds);
     for (double r : rho) best_coarse = std::max(best_coarse, r);
-    const double reach = 2.0 * slope * ds;
+    double reach = 2.0 * slope * ds;
 
     out.ratio = -1.0;
     out.scan_step = ds / v;
     out.scan_travel = ds;
-    for (int k = 0; k <= steps; ++k) {
-        const size_t i = static_cast<size_t>(k);
-        // A plateau (say the head fastest, ratio exactly 1) counts once, at its first sample.
-        const bool up = k == 0 || rho[i] > rho[i - 1];
-        const bool down = k == steps || rho[i] >= rho[i + 1];
-        if (!up || !down || rho[i] + reach < best_coarse) continue;
-        ++out.candidates;
-        const double a = s0 + std::max(0, k - 1) * ds, b = std::min(s1, s0 + std::min(steps, k + 1) * ds);
-        const auto [at, r] = golden_max(probe, a, b);
-        if (r.ratio > out.ratio) {
-            out.ratio = r.ratio;
-            out.handle = r.handle;
-            out.head_arc = at;
+    std::vector<bool> refined(static_cast<size_t>(steps) + 1, false);
+    for (bool widened = true; widened;) {
+        widened = false;
+        for (int k = 0; k <= steps; ++k) {
+            const size_t i = static_cast<size_t>(k);
+            // A plateau (say the head fastest, ratio exactly 1) counts once, at its first sample.
+            const bool up = k == 0 || rho[i] > rho[i - 1];
+            const bool down = k == steps || rho[i] >= rho[i + 1];
+            if (refined[i] || !up || !down || rho[i] + reach < best_coarse) continue;
+            refined[i] = true;
+            ++out.candidates;
+            const double a = s0 + std::max(0, k - 1) * ds, b = std::min(s1, s0 + std::min(steps, k + 1) * ds);
+            const auto [at, r] = golden_max(probe, a, b);
+            if (r.ratio > out.ratio) {
+                out.ratio = r.ratio;
+                out.handle = r.handle;
+                out.head_arc = at;
+            }
+            const double rise = r.ratio - rho[i];
+            if (rise > reach) {
+                reach = 2.0 * rise;
+                widened = true;
+            }
         }
     }
     // Handles on one arc all move at the same speed: report every one that ties, and the first.

@@ -36,7 +36,9 @@ RunWindow default_window(PathKind kind) {
     return {Along::metres(0.0), Along::metres(std::numeric_limits<double>::infinity())};
 }
 
-Searched WindowCut::searched(double head_speed) const { return {from / head_speed, to / head_speed, from, to}; }
+Searched WindowCut::searched(double head_speed) const {
+    return {from / head_speed, to / head_speed, from, to, before, after};
+}
 
 WindowCut cut_window(const Simulation& sim, const RunWindow& w) {
     const double v = sim.scenario().head_speed;

@@ -109,7 +109,7 @@ RunClearance min_clearance(const Scenario& scenario, const RunWindow& window, co
     // Each local minimum of the samples refined by golden section: the best found so far.
     out.distance = std::numeric_limits<double>::infinity();
     auto consider = [&](double x, const Clearance& c) {
-        if (c.distance < out.distance && c.bench_a > 0) {
+        if (c.distance < out.distance && c.distance < kCutoff && c.bench_a > 0) {
             out.distance = c.distance;
             out.travel = x;
             out.bench_a = c.bench_a;
