@@ -261,17 +261,30 @@ row_last turnaround --turn-radius 20
 row_last max-speed --turn-radius 20
 row min-pitch --scenario narrow.toml --lo 0.44 --hi 0.46 --grid 0.01
 row_last max-speed --scenario narrow.toml
+row turnaround --speed 1000
 
-cat <<'TEXT'
+# The slow ones, run and timed: the wall time this run took, and the line the program printed
+# (its first line, or with timed_last its last: the answer), so no number here is typed by hand.
+timed_last() { pick=tail; timed "$@"; pick=head; }
+timed() {
+  local code=0 start end
+  start=$(date +%s%N)
+  "$dragon" "$@" >out.txt 2>err.txt </dev/null || code=$?
+  end=$(date +%s%N)
+  local line
+  if [ "$code" -eq 0 ]; then line="(works) $($pick -n 1 out.txt)"; else line=$(head -n 1 err.txt); fi
+  printf '| `dragon %s` | %s | %s s | %s |\n' "$*" "$code" "$(awk -v ns=$((end - start)) 'BEGIN { t = ns / 1e9; if (t >= 10) printf "%.0f", t; else printf "%.2g", t }')" \
+    "${line//|/\\|}"
+  rm -rf out.* a.* x.*
+}
 
-## Slow (not run by this script)
-
-Wall times on 2 cores, Release build.
-
-| Input | What happens |
-|---|---|
-| `dragon turnaround --speed 100` | Works, about 12 s: the clearance scan steps by 0.05 m of head travel, and -100..100 s is 20 km of path at 100 m/s. `--speed 1000` is refused (too long to scan); narrow `--from`/`--to` or add `--no-clearance`. |
-| `dragon turnaround --bench-count 10000` | Works, about 18 s (smallest clearance 0.279043 m, benches 1 and 17, as with 223 benches). |
-| `dragon max-speed --bench-count 10000` | Works, about 3.1 s. |
-| `dragon collide --bench-count 10000` | Works, about 11 s (first contact at 412.473837682 s, benches 1 and 9, as with 223 benches): each of the search's steps evaluates all 10,000 benches. |
-TEXT
+build_type=$(grep -m1 CMAKE_BUILD_TYPE: "$(dirname "$dragon")/../CMakeCache.txt" 2>/dev/null | cut -d= -f2 || true)
+printf '\n## Slow inputs, timed\n\nWall time of each run when this file was made, by the %s build on %s cores (load average\n' \
+  "${build_type:-unknown}" "$(nproc)"
+printf '%s as they started: other work on the machine slows them), and the answer line it printed.\n' \
+  "$(cut -d' ' -f1 /proc/loadavg)"
+printf '\n| Input | Exit | Time | Answer |\n|---|---|---|---|\n'
+timed_last turnaround --speed 100
+timed_last turnaround --bench-count 10000
+timed max-speed --bench-count 10000
+timed collide --bench-count 10000

@@ -92,8 +92,17 @@ struct CollideAnswer {
     // first touched before it (first_contact_covering only; collide throws instead).
     bool overlapping = false;
 };
-// Throws InputError as cut_window does, and ("time range start") when two benches already
-// overlap where the window starts: their first contact lies before it.
+// Benches that already overlap where a search for the first contact starts: the chain collides
+// (before that moment), so the window holds no first contact to report. An InputError on the
+// window's start for a command (field "time range start"); a verdict on the scenario for a
+// sweep's map, as min-pitch calls such a pitch "collides".
+struct OverlapAtStart : InputError {
+    OverlapAtStart(const std::string& start, int a, int b, double overlap);
+    int bench_a, bench_b;
+    double depth;  // how deep they overlap, m
+};
+// Throws InputError as cut_window does, and OverlapAtStart when two benches already overlap
+// where the window starts: their first contact lies before it.
 CollideAnswer collide(const Simulation& sim, const RunWindow& window, Executor* executor = nullptr);
 // The motion's first contact: collide over the path's default window (default_window). This is
 // the one event every command reports as the first contact: collide and turnaround by default,
@@ -131,6 +140,11 @@ struct MinPitch {
     bool below_range = false, above_range = false;
     std::vector<PitchInterval> intervals;  // alternating feasible / infeasible over the range
     double search_lo, search_hi;
+    // The search's range must start above this pitch: the bench width, or where the head
+    // would start on the turning space's edge (turn_radius / start_turn; lowest_is_start),
+    // whichever is larger. A below_range answer lies between it and search_lo.
+    double lowest = 0.0;
+    bool lowest_is_start = false;
     double grid;                           // the first scan's pitch spacing, m
     // The largest pitch probed at which the run cannot reach the boundary because the valid
     // motion ends first (it is infeasible for that reason, not for a collision); none if no
@@ -158,6 +172,11 @@ struct MinPitchOptions {
     WorkProgress progress;         // hears of the first scan's runs, one call per run
     Executor* executor = nullptr;  // runs the pitches in parallel; null: default_executor()
 };
+// The answer and any error are the same whatever the executor and its size (the pitches run
+// are fixed in advance; an error is the one of the smallest pitch that failed). Throws
+// InputError for a range it cannot search: "pitch search range start" (lo puts the head's start
+// inside the turning space), "pitch search range end", "pitch grid", or lo, hi and the width
+// out of order.
 MinPitch min_pitch(const Scenario& s, double lo, double hi, const MinPitchOptions& options = {});
 
 }  // namespace dragon

@@ -67,6 +67,13 @@ struct Plot {
     // Drawn first in the data area (clipped to it), under the reference lines and the series: a
     // heat map's cells, say. `u` is the plot's unit of line widths and text sizes, px.
     std::function<void(cairo_t* cr, const PlotArea& area, double u)> underlay;
+    // A band under the data area, outside the value axis and sharing the x axis (its ticks go
+    // under the band): marks at x values that have no y, such as a sweep's scenarios without an
+    // answer. `strip_px` tall (0: no band, at the plot's scale), named by `strip_label` at its
+    // left, drawn by `strip` in the band's box (its px() maps x; its y runs 0..1 upwards).
+    double strip_px = 0;
+    std::string strip_label;
+    std::function<void(cairo_t* cr, const PlotArea& band, double u)> strip;
 };
 
 // A qualitative colour for series i (colour-blind-safe order, Okabe-Ito), darker or lighter to

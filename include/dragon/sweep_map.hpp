@@ -1,7 +1,10 @@
 // Maps of a sweep's answers (dragon sweep --plot): over one varied value a line plot per
 // measure, over two a heat map per measure with contour lines, a colour bar with its unit and
-// the contest's dragon marked. Scenarios without an answer are shown as such: cut short by the
-// end of the dragon's valid motion (hatched), refused (grey), no answer in the range searched.
+// the contest's dragon marked where the map holds it. Scenarios without an answer are shown as
+// what they are, each kind with its own colour and legend entry: cut short by the end of the
+// dragon's valid motion (hatched), refused (grey), colliding from the start, the answer below or
+// above the range searched, no answer; on line plots as markers in a strip under the values,
+// outside their axis.
 #pragma once
 
 #include <optional>
@@ -15,18 +18,23 @@
 namespace dragon {
 
 enum class MapCell : unsigned char {
-    value,     // the answer
-    jam,       // cut short: the dragon cannot follow its path far enough
-    refused,   // the scenario's values are not allowed (or the analysis failed)
-    no_value,  // the analysis ran, and found no answer in its range
-    missing,   // no row for it (a shard's map)
+    value,        // the answer
+    jam,          // cut short: the dragon cannot follow its path far enough
+    refused,      // the scenario's values are not allowed (or the analysis failed)
+    no_value,     // the analysis ran, and found no answer in its range
+    missing,      // no row for it (a shard's map)
+    below_range,  // the answer lies at or below the range searched
+    above_range,  // the answer, if any, lies above the range searched
+    overlapping,  // benches already overlap where the analysis starts: the chain collides
 };
 
 struct MapAxis {
     std::string quantity;         // "bench width"
     std::string unit;             // "m", or "" for none
     std::vector<double> values;   // in any order; each once
-    std::optional<double> mark;   // where the contest's dragon lies on this axis, when it is marked
+    // Where the contest's dragon lies on this axis, when it is marked: one of `values` (mark it
+    // only on a map that holds the contest's scenario).
+    std::optional<double> mark;
 };
 
 struct MapPanel {
@@ -36,7 +44,10 @@ struct MapPanel {
     // values; NaN where the cell is not a value.
     std::vector<double> values;
     std::vector<MapCell> cells;
+    // The legend's words for the kinds whose meaning depends on the measure.
     std::string jam_label = "cut short: the dragon cannot follow its path";
+    std::string below_label = "answer below the range searched";
+    std::string above_label = "answer above the range searched";
 };
 
 struct SweepMap {

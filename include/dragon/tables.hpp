@@ -17,6 +17,9 @@ class AtomicFile;
 std::string handle_label(int handle, int handle_count);
 // A time without binary noise: "300", "-100", "0.1", "412.4738".
 std::string format_time(double t);
+// A time to at most `digits` decimals (0..17) as a table with that many decimals prints it:
+// rounded as format_fixed rounds, trailing zeros dropped ("300", "0.1", "12.821187").
+std::string format_time(double t, int digits);
 // A time header as the contest writes it: "0 s", "-100 s", "0.5 s".
 std::string time_header(double t);
 
@@ -29,11 +32,13 @@ inline constexpr int kMaxDigits = 17;
 // 2^52, so that 6 digits print what the workbooks hold; beyond, v's exact decimal expansion.
 std::string format_fixed(double v, int digits);
 
-// Long form, header t,handle,x,y,speed; one row per handle per frame; `digits` decimals.
+// Long form, header t,handle,x,y,speed; one row per handle per frame; `digits` decimals for
+// every number (the time's trailing zeros dropped: format_time(t, digits)).
 void write_csv(const std::vector<Frame>& frames, const std::string& path, int digits = kDefaultDigits);
 // The same CSV on an open stream (stdout, say); throws std::runtime_error if it cannot be written.
 void print_csv(const std::vector<Frame>& frames, std::FILE* out, int digits = kDefaultDigits);
-// {"times": [...], "handles": N, "frames": [{"t", "x": [...], "y": [...], "speed": [...]}]}
+// {"handles": N, "frames": [{"t", "x": [...], "y": [...], "speed": [...]}]}, `digits` decimals
+// as write_csv.
 void write_json(const std::vector<Frame>& frames, const std::string& path, int digits = kDefaultDigits);
 // The most frames one worksheet holds: 16,384 columns, one for the labels.
 inline constexpr std::size_t kMaxWorkbookFrames = 16383;

@@ -42,7 +42,7 @@ void register_collide(CLI::App& app, Registry& reg) {
     sub->add_option("-o,--out", opt->out,
                     "Also write the moment's handles (.xlsx: result2 layout, .csv, .json); with no contact, "
                     "the table's header and no rows");
-    sub->add_option("--digits", opt->digits, "Decimals of x, y and speed in a .csv or .json -o, 0 to 17 (default 6)");
+    sub->add_option("--digits", opt->digits, "Decimals of every number of a .csv or .json -o (t without trailing zeros), 0 to 17 (default 6)");
     add_quiet_flag(sub, opt->quiet);
     reg["collide"] = [opt]() {
         const std::string ext = extension_of(opt->out);

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/wording.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "cli/status.hpp"
@@ -44,7 +45,14 @@ void register_film(CLI::App& app, Registry& reg) {
     reg["film"] = [opt]() {
         const bool poster = extension_of(opt->out) == ".png";
         if (poster && !opt->at) throw InputError("--out " + opt->out + " is a picture: give --at SECONDS, the moment of the film it shows");
-        if (!poster && opt->at) throw InputError(fmt::format("--at {} is not allowed for a film: it picks one frame for a .png", *opt->at));
+        if (!poster && opt->at) {
+            // A film's extension: --at is what does not belong; any other: the poster's extension is at fault.
+            const std::string ext = extension_of(opt->out);
+            if (ext != ".mp4" && ext != ".webm" && ext != ".gif")
+                throw InputError(fmt::format("--out {} has extension '{}': the frame --at {} picks is written as a .png "
+                                             "(a film is .mp4, .webm or .gif)", opt->out, ext, *opt->at));
+            throw InputError(fmt::format("--at {} is not allowed for a film: it picks one frame for a .png", *opt->at));
+        }
         VideoOptions vo;
         const VideoFormat format = poster ? VideoFormat::mp4 : video_format_for(opt->out);
         if (poster && (opt->crf || opt->preset || opt->tune || opt->colours))
@@ -83,8 +91,9 @@ void register_film(CLI::App& app, Registry& reg) {
             ProgressLine progress("frames", opt->quiet);
             return write_film(film, opt->out, vo, [&progress](const Progress& p) { progress.update(p.done, p.total); });
         }();
-        status(opt->quiet, "wrote {}: {} shots, {} frames, {}x{}, {:.2f} s of film ({:.1f} frames/s)", opt->out,
-               film.spans().size(), stats.frames, vo.width, vo.height, film.duration(), stats.fps());
+        status(opt->quiet, "wrote {}: {}, {}, {}x{}, {:.2f} s of film ({:.1f} frames/s)", opt->out,
+               count_of(static_cast<long long>(film.spans().size()), "shot"), count_of(stats.frames, "frame"), vo.width,
+               vo.height, film.duration(), stats.fps());
         return 0;
     };
 }

@@ -11,6 +11,7 @@
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
 #include "cli/window_flags.hpp"
+#include "cli/wording.hpp"
 #include "dragon/tables.hpp"
 #include "dragon/turnaround.hpp"
 
@@ -48,17 +49,18 @@ void register_max_speed(CLI::App& app, Registry& reg) {
                        m.jam->handle);
             return 0;
         }
-        fmt::print("Largest head speed with every handle at or under {} m/s: {:.6f} m/s\n", opt->limit,
-                   m.max_head_speed);
+        fmt::print("Largest head speed with every handle at or under {} m/s: {} m/s\n", opt->limit,
+                   format_amount(m.max_head_speed));
         fmt::print("  speed ratio (fastest handle / head, by magnitude): {:.9f}\n", m.ratio);
         std::string who = fmt::format("handle {}", m.handle);
         if (m.tied.size() > 1) who = fmt::format("handles {} (equal speeds)", fmt::join(m.tied, ", "));
         fmt::print("  reached by {} at t = {:.6f} s of the Q4 run (head {:.6f} m along the path "
                    "from the turn's start)\n", who, m.time, m.travel);
         fmt::print("  searched t = {}..{} s (the head from {} m to {} m along the path at {} m/s): coarse scan "
-                   "every {:.4g} m, {} local maxima refined, {} chains solved\n", format_time(m.window.from),
+                   "every {:.4g} m, {} refined, {} solved\n", format_time(m.window.from),
                    format_time(m.window.to), format_time(m.window.from_travel), format_time(m.window.to_travel),
-                   s.head_speed, m.scan_travel, m.candidates, m.evaluations);
+                   s.head_speed, m.scan_travel, count_of(m.candidates, "local maximum", "local maxima"),
+                   count_of(m.evaluations, "chain"));
         fmt::print("{}", window_cuts(m.window, "the search"));
         return 0;
     };

@@ -16,6 +16,16 @@
 namespace dragon::cli {
 
 namespace {
+// Where a lower --lo can still look for a minimum below the range, or why none can: --lo must
+// stay above m.lowest, and a bracket within the tolerance of it leaves nothing to search.
+std::string lower_lo_advice(const MinPitch& m) {
+    const std::string why = m.lowest_is_start
+                                ? fmt::format("at {} m the head would start on the turning space's edge", m.lowest)
+                                : fmt::format("{} m is the bench width", m.lowest);
+    if (m.search_lo - m.lowest <= m.tolerance) return fmt::format(", and there is no lower pitch to search: {}", why);
+    return fmt::format(" (lower --lo to find it, keeping it above {} m: {})", m.lowest, why);
+}
+
 struct MinPitchOptions {
     ScenarioFlags scenario;
     double lo = 0.35, hi = 0.55, grid = kDefaultPitchGrid;
@@ -51,7 +61,7 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
         // The pitch is resolved to tol::pitch (1e-9 m): ten decimals show it.
         if (m.below_range)
             fmt::print("the range's low end, {} m, already reaches radius {} m with no collision: the minimum "
-                       "pitch lies at or below it (lower --lo to find it)\n", m.search_lo, s.path.turn_radius);
+                       "pitch lies at or below it{}\n", m.search_lo, s.path.turn_radius, lower_lo_advice(m));
         else if (m.above_range)
             fmt::print("no pitch in [{}, {}] m takes the head to radius {} m without a collision{}: the minimum "
                        "pitch, if there is one, lies above {} m (raise --hi to look for it)\n", m.search_lo, m.search_hi,

@@ -41,9 +41,10 @@ void register_render(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<RenderOptions>();
     CLI::App* sub = app.add_subcommand("render", "Draw one moment of the dragon to PNG, SVG or PDF");
     opt->scenario.add_to(sub, ScenarioUse::drawing());
-    auto* when = sub->add_option("--time", opt->time, "The moment to draw, s");
+    auto* when = sub->add_option("--time", opt->time, "The moment to draw, s (or --collision, not both)");
     auto* hit = sub->add_flag("--collision", opt->collision,
-                              "Draw the first contact (the termination of coiling in), touching benches marked");
+                              "Draw the first contact (the termination of coiling in), touching benches marked (in "
+                              "place of --time)");
     when->excludes(hit);
     sub->add_option("-o,--out", opt->out, "Output file: .png, .svg or .pdf (vector, fonts embedded, for papers)")->required();
     opt->look.add_to(sub);

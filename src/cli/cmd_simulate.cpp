@@ -8,6 +8,7 @@
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
 #include "cli/window_flags.hpp"
+#include "cli/wording.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/tables.hpp"
@@ -41,7 +42,7 @@ void register_simulate(CLI::App& app, Registry& reg) {
     sub->add_option("-o,--out", opt->out,
                     "Output file: .csv (long form), .json, or .xlsx (the contest's result1 layout); "
                     "CSV on stdout if omitted");
-    sub->add_option("--digits", opt->digits, "Decimals of x, y and speed in CSV and JSON, 0 to 17 (default 6)");
+    sub->add_option("--digits", opt->digits, "Decimals of every number in CSV and JSON (t without trailing zeros), 0 to 17 (default 6)");
     add_quiet_flag(sub, opt->quiet);
     reg["simulate"] = [opt]() {
         const std::string ext = opt->out.empty() ? ".csv" : extension_of(opt->out);
@@ -76,8 +77,8 @@ void register_simulate(CLI::App& app, Registry& reg) {
             return 0;
         }
         write_table(frames, opt->out, digits);
-        status(opt->quiet, "wrote {} ({} frames x {} handles)", opt->out, frames.size(),
-               frames.empty() ? 0 : frames.front().handles.size());
+        status(opt->quiet, "wrote {} ({} x {})", opt->out, count_of(static_cast<long long>(frames.size()), "frame"),
+               count_of(frames.empty() ? 0 : static_cast<long long>(frames.front().handles.size()), "handle"));
         return 0;
     };
 }

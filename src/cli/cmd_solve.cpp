@@ -253,7 +253,7 @@ void register_solve(CLI::App& app, Registry& reg) {
                            v.jam ? "; searched only up to the end of the valid motion: " + jam_sentence(*v.jam) : "");
             summary["q5"] = max_speed_answer(v, contest.speed_limit);
         }
-        write_text(*summary_json, summary.dump(2) + "\n");
+        write_text(*summary_json, json_text(summary, 2) + "\n");
         std::vector<AtomicFile*> set;
         for (const auto& f : files) set.push_back(f.get());
         require_stdout_written();  // the tables all printed, or no file changes

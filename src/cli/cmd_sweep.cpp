@@ -11,6 +11,7 @@
 #include "cli/sweep_merge.hpp"
 #include "cli/sweep_plot.hpp"
 #include "cli/sweep_run.hpp"
+#include "cli/wording.hpp"
 #include "dragon/atomic_file.hpp"
 
 namespace dragon::cli {
@@ -56,7 +57,8 @@ int run_merge(const SweepOptions& opt) {
     const std::size_t rows = merge_parts(whole, out, parts, [&](const std::string& row) {
         if (maps) maps->add(row);
     });
-    status(opt.merge_quiet, "wrote {}: {} rows from {} files", out, rows, parts.size());
+    status(opt.merge_quiet, "wrote {}: {} from {}", out, count_of(static_cast<long long>(rows), "row"),
+           count_of(static_cast<long long>(parts.size()), "file"));
     if (maps) write_plot(opt.merge_plot, *maps, opt.merge_quiet);
     return 0;
 }
@@ -80,11 +82,13 @@ int run(SweepOptions& opt) {
         if (maps) maps->add(row);
     });
     if (!opt.output.out.empty())
-        status(opt.output.quiet, "wrote {}: {} rows{}", opt.output.out, t.done_before + t.made,
+        status(opt.output.quiet, "wrote {}: {}{}", opt.output.out, count_of(static_cast<long long>(t.done_before + t.made), "row"),
                t.done_before ? fmt::format(" ({} new)", t.made) : "");
     if (maps) write_plot(opt.plot, *maps, opt.output.quiet);
     if (t.failed > 0)
-        throw std::runtime_error(fmt::format("{} of {} scenarios failed (their rows' status says why)", t.failed, t.made));
+        throw std::runtime_error(fmt::format("{} of {} failed ({} status says why)", t.failed,
+                                             count_of(static_cast<long long>(t.made), "scenario"),
+                                             t.failed == 1 ? "its row's" : "their rows'"));
     return 0;
 }
 

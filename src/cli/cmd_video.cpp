@@ -14,6 +14,7 @@
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
 #include "cli/window_flags.hpp"
+#include "cli/wording.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/path.hpp"
@@ -201,8 +202,8 @@ void register_video(CLI::App& app, Registry& reg) {
             ProgressLine progress("frames", opt->quiet);
             return write_video(anim, opt->out, vo, [&progress](const Progress& p) { progress.update(p.done, p.total); });
         }();
-        status(opt->quiet, "wrote {}: {} frames, {}x{}, {:.2f} s of video for t = {:.6f} .. {:.6f} s ({:.1f} frames/s)",
-               opt->out, stats.frames, vo.width, vo.height, stats.frames / vo.fps, clip.from, clip.to, stats.fps());
+        status(opt->quiet, "wrote {}: {}, {}x{}, {:.2f} s of video for t = {:.6f} .. {:.6f} s ({:.1f} frames/s)",
+               opt->out, count_of(stats.frames, "frame"), vo.width, vo.height, stats.frames / vo.fps, clip.from, clip.to, stats.fps());
         if (end.mark)
             fmt::print("benches {} and {} touch at t = {:.6f} s\n", end.mark->bench_a, end.mark->bench_b, clip.to);
         return 0;

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <numeric>
+#include <regex>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -88,10 +89,16 @@ std::string what_to_give(const CLI::App& sub, const CLI::Option& opt) {
     if (name == "--scenario") return "give a .toml file";
     if (name == "--theme") return "use light, dark or a .toml file";
     if (name == "--path") return "use spiral or turnaround";
+    if (name == "--size") return "give WIDTHxHEIGHT in pixels, as 1280x720";
+    if (name == "--to" && sub.get_name() == "video")
+        return "give a time in seconds (12.5), head travel in metres (100m), collision, boundary or end";
+    if (opt.get_type_name() == "T|Xm")
+        return "give a time in seconds (12.5, or 12.5s) or a length of the head's travel in metres (-100m)";
+    if (name == "storyboard") return "give the storyboard's .toml file: dragon film STORY.toml -o FILM.mp4";
     const std::string type = opt.get_type_name();
     if (type.find("FLOAT") != std::string::npos || type.find("NUMBER") != std::string::npos) return "give a number";
     if (type.find("INT") != std::string::npos) return "give a whole number";
-    return fmt::format("give a value (see dragon {} --help)", sub.get_name());
+    return "give a value";
 }
 
 // An empty value ("--pitch ''", "-o ''", "--pitch="): CLI11 would take it as the default.
@@ -104,7 +111,105 @@ std::optional<std::string> empty_value(const CLI::App& sub) {
     return std::nullopt;
 }
 
+// The subcommand called `name`, if there is one.
+const CLI::App* subcommand_named(CLI::App& app, const std::string& name) {
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+        if (sub->get_name() == name) return sub;
+    return nullptr;
+}
+
+// The option of `sub` (or of one of its own subcommands, as sweep's merge) called `name`.
+const CLI::Option* find_option(const CLI::App& sub, const std::string& name) {
+    if (const CLI::Option* o = sub.get_option_no_throw(name)) return o;
+    for (const CLI::App* inner : sub.get_subcommands([](const CLI::App*) { return true; }))
+        if (const CLI::Option* o = inner->get_option_no_throw(name)) return o;
+    return nullptr;
+}
+
+// A flag takes no value: "--json=3" would be taken as the flag given three times.
+bool is_flag(const CLI::Option& opt) { return opt.get_expected_max() == 0; }
+
+// "--pitch", or "the storyboard" for a positional argument.
+std::string option_words(const CLI::Option& opt) {
+    const std::string name = opt.get_name();
+    return name.rfind("-", 0) == 0 ? name : "the " + name;
+}
+
+// CLI11's own sentences ("Could not convert: --pitch = abc", "--pitch: At Most 1 required but
+// received 2", "--list excludes --only", "--out is required") in the tool's words, naming the
+// option and what to give; anything else as CLI11 says it. Matched on CLI11 2.1's wording: a
+// sentence that does not match is passed on unchanged.
+std::string parser_words(CLI::App& app, const std::string& first, const CLI::ParseError& e) {
+    const std::string what = e.what();
+    const CLI::App* sub = subcommand_named(app, first);
+    const auto option = [&](const std::string& name) -> const CLI::Option* {
+        return sub ? find_option(*sub, name) : nullptr;
+    };
+    std::smatch m;
+    if (dynamic_cast<const CLI::ConversionError*>(&e)) {
+        static const std::regex convert("Could not convert: (\\S+) = (.*)");
+        static const std::regex flag_value("(\\S+): (too many inputs for a flag|Should be true/false or a number)");
+        if (std::regex_match(what, m, convert)) {
+            const CLI::Option* opt = option(m[1]);
+            if (opt && is_flag(*opt)) return fmt::format("{} takes no value ('{}' given): give it alone", m[1].str(), m[2].str());
+            return fmt::format("{} {} is not allowed: {}", m[1].str(), m[2].str(),
+                               opt && sub ? what_to_give(*sub, *opt) : "give a value");
+        }
+        if (std::regex_match(what, m, flag_value)) return fmt::format("{} takes no value: give it alone", m[1].str());
+    }
+    if (dynamic_cast<const CLI::ArgumentMismatch*>(&e)) {
+        static const std::regex at_most("(\\S+): At Most (\\d+) required but received (\\d+)");
+        static const std::regex missing("(\\S+): (\\d+) required \\S+ missing");
+        if (std::regex_match(what, m, at_most))
+            return m[2] == "1" ? fmt::format("{} is given {} times: give it once", m[1].str(), m[3].str())
+                               : fmt::format("{} is given {} values: give at most {}", m[1].str(), m[3].str(), m[2].str());
+        if (std::regex_match(what, m, missing)) {
+            const CLI::Option* opt = option(m[1]);
+            return fmt::format("{} needs a value: {}", m[1].str(), opt && sub ? what_to_give(*sub, *opt) : "give one");
+        }
+    }
+    if (dynamic_cast<const CLI::ExcludesError*>(&e)) {
+        static const std::regex excludes("(\\S+) excludes (\\S+)");
+        if (std::regex_match(what, m, excludes))
+            return fmt::format("{} and {} cannot be given together: give one of the two", m[1].str(), m[2].str());
+    }
+    if (dynamic_cast<const CLI::RequiredError*>(&e)) {
+        static const std::regex required("(\\S+) is required");
+        if (std::regex_match(what, m, required)) {
+            const CLI::Option* opt = option(m[1]);
+            if (opt && sub) return fmt::format("{} is needed: {}", option_words(*opt), what_to_give(*sub, *opt));
+        }
+        if (what.rfind("A subcommand is required", 0) == 0)
+            return fmt::format("a command is needed first, then its options: {} (dragon --help describes them)",
+                               fmt::join(command_names(app), ", "));
+    }
+    return what;
+}
+
 }  // namespace
+
+namespace {
+
+// CLI11's help, without the "Excludes:" and "Needs:" lists it puts after an option's type (18
+// lines of them in figures --help): each option's description says the rule in words instead
+// ("takes no other option"), and a command line that breaks it is refused naming both options.
+class HelpFormatter : public CLI::Formatter {
+public:
+    std::string make_option_opts(const CLI::Option* opt) const override {
+        std::string out;
+        if (opt->get_type_size() == 0) return out;
+        if (!opt->get_type_name().empty()) out += " " + get_label(opt->get_type_name());
+        if (!opt->get_default_str().empty()) out += "=" + opt->get_default_str();
+        if (opt->get_expected_max() == CLI::detail::expected_max_vector_size) out += " ...";
+        else if (opt->get_expected_min() > 1) out += fmt::format(" x {}", opt->get_expected());
+        if (opt->get_required()) out += " " + get_label("REQUIRED");
+        return out;
+    }
+};
+
+}  // namespace
+
+void use_help_formatter(CLI::App& app) { app.formatter(std::make_shared<HelpFormatter>()); }
 
 std::string closest(const std::string& word, const std::vector<std::string>& choices) {
     std::string best;
@@ -155,7 +260,20 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
         if (arg.size() < 4 || arg.rfind("--", 0) != 0 || arg.back() != '=') continue;
         const CLI::App& sub = *app.get_subcommand(first);
         if (const CLI::Option* opt = sub.get_option_no_throw(arg.substr(0, arg.size() - 1))) {
-            refuse(fmt::format("{} '' is not allowed: {}", opt->get_name(), what_to_give(sub, *opt)));
+            refuse(is_flag(*opt) ? fmt::format("{} takes no value: give it alone", opt->get_name())
+                                 : fmt::format("{} '' is not allowed: {}", opt->get_name(), what_to_give(sub, *opt)));
+            return 2;
+        }
+    }
+    // "--json=3": CLI11 would take a flag's value as how many times it was given.
+    for (int i = 2; i < argc; ++i) {
+        const std::string arg = argv[i];
+        const std::size_t eq = arg.find('=');
+        if (arg.rfind("--", 0) != 0 || eq == std::string::npos || eq + 1 == arg.size()) continue;
+        const CLI::App* sub = subcommand_named(app, first);
+        const CLI::Option* opt = sub ? find_option(*sub, arg.substr(0, eq)) : nullptr;
+        if (opt && is_flag(*opt)) {
+            refuse(fmt::format("{} takes no value ('{}' given): give it alone", opt->get_name(), arg.substr(eq + 1)));
             return 2;
         }
     }
@@ -173,7 +291,7 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         // One line, naming the bad value; CLI11's own exit codes are not ours.
         const bool known = std::find(names.begin(), names.end(), first) != names.end();
-        refuse(fmt::format("{} (see dragon {}--help)", e.what(), known ? first + " " : ""));
+        refuse(fmt::format("{} (see dragon {}--help)", parser_words(app, known ? first : "", e), known ? first + " " : ""));
         return 2;
     }
     const CLI::App& sub = *app.get_subcommands().front();

@@ -1,7 +1,8 @@
 // The command line as every subcommand shares it: `dragon help [COMMAND]`; an unknown command or
 // option named, with the likely one meant; a scenario flag a command does not take named with
-// the reason; an empty value ("--pitch ''") refused; CLI11's own errors as one line. Every
-// refusal is one line on stderr and exit code 2.
+// the reason; an empty value ("--pitch ''") or a flag given a value ("--json=3") refused;
+// CLI11's own errors as one line in the tool's words. Every refusal is one line on stderr and
+// exit code 2.
 #pragma once
 
 #include <optional>
@@ -11,6 +12,10 @@
 #include <CLI/CLI.hpp>
 
 namespace dragon::cli {
+
+// Help as CLI11 writes it, less its lists of options that exclude or need others (the options'
+// descriptions say so in words). Before the subcommands are added: they take the app's.
+void use_help_formatter(CLI::App& app);
 
 // Parses argv into `app` (its subcommands registered). Returns the exit code to end with
 // (0 after printing help, 2 after one line on stderr), or nullopt: run the chosen subcommand.

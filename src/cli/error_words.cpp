@@ -37,6 +37,7 @@ const std::map<std::string, FlagWords>& flag_of_field() {
         {"time", {"--time"}},
         {"time step", {"--step"}},
         {"pitch grid", {"--grid"}},
+        {"pitch search range start", {"--lo"}},
         {"pitch search range end", {"--hi"}},
         {"speed limit", {"--limit"}},
         {"decimals", {"--digits"}},

@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
     app.name("dragon");
     app.require_subcommand(1);
     app.set_version_flag("--version", "dragon 0.1.0");
+    cli::use_help_formatter(app);
     cli::Registry reg;
     cli::register_simulate(app, reg);
     cli::register_solve(app, reg);

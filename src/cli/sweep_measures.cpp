@@ -29,7 +29,7 @@ std::string cell(const Json& v) {
     if (v.is_null()) return "";
     if (v.is_string()) return v.get<std::string>();
     if (v.is_number_float() && !std::isfinite(v.get<double>())) return "";
-    return v.dump(-1, ' ', false, Json::error_handler_t::replace);
+    return json_text(v);
 }
 
 // Every leaf key of `v` under `prefix`: objects are walked, anything else (a null object too)
@@ -157,6 +157,16 @@ MeasureResult run_measure(const MeasureInfo& m, const Scenario& scenario, const 
         std::string jam;
         out.answer = m.answer(s, options, jam);
         if (!jam.empty()) out.state = State::jam, out.note = fmt::format("jam ({}): {}", m.name, jam);
+    } catch (const OverlapAtStart& e) {
+        // The chain collides: a verdict on the scenario, as min-pitch gives it, not a refusal.
+        const std::string& start = e.value();  // "0 m" (head travel) or "420" (seconds)
+        const std::string at = start.size() > 2 && start.compare(start.size() - 2, 2, " m") == 0
+                                   ? start + " of head travel"
+                                   : "t = " + start + " s";
+        out = {State::collides, std::nullopt,
+               overlap_note_prefix(m) + fmt::format("benches {} and {} already overlap at {}, where the search "
+                                                    "starts (by {:.6f} m): their first contact is before it",
+                                                    e.bench_a, e.bench_b, at, e.depth)};
     } catch (const InputError& e) {
         out = {State::refused, std::nullopt, fmt::format("refused ({}): {}", m.name, e.what())};
     } catch (const std::exception& e) {
@@ -165,6 +175,8 @@ MeasureResult run_measure(const MeasureInfo& m, const Scenario& scenario, const 
     }
     return out;
 }
+
+std::string overlap_note_prefix(const MeasureInfo& m) { return fmt::format("collides at the start ({}): ", m.name); }
 
 std::vector<std::string> flatten(const Json& answer, const std::vector<std::string>& columns) {
     std::vector<std::string> keys;

@@ -65,12 +65,15 @@ struct MeasureOptions {
 
 // One measure on one scenario, on the calling thread.
 struct MeasureResult {
-    enum class State { ok, jam, refused, failed };
+    // collides: benches overlap where the analysis starts (a verdict, with no answer's cells).
+    enum class State { ok, jam, collides, refused, failed };
     State state = State::ok;
     std::optional<Json> answer;  // the command's --json (without its bulky tables); none when refused or failed
     std::string note;            // for the row's status: why it was refused or failed, where the jam is
 };
 MeasureResult run_measure(const MeasureInfo& m, const Scenario& s, const MeasureOptions& options);
+// How a row's status begins the note of State::collides: "collides at the start (collide): ".
+std::string overlap_note_prefix(const MeasureInfo& m);
 
 // The cells of `answer` for `columns`: "" where a key is null or missing (a null object's keys
 // too); text as it is; numbers, booleans, arrays and objects as compact JSON. Throws

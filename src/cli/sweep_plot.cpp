@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "cli/wording.hpp"
+
 namespace dragon::cli {
 
 namespace {
@@ -24,6 +26,20 @@ std::string jam_meaning(const MeasureInfo& m) {
     return "cut short: the dragon cannot follow the S-curve";
 }
 
+// Whether a row's status says this measure found the chain overlapping where it starts: a
+// collision, not a refusal (min-pitch calls such a pitch "collides" too).
+bool collides_at_start(const std::string& status, const MeasureInfo& m) {
+    return status.find(overlap_note_prefix(m)) != std::string::npos;
+}
+
+// The value of `values` that is `v` up to the rounding of a sweep's values (12 significant
+// digits), if any: where the contest's dragon lies on an axis, if it lies on one.
+std::optional<double> on_axis(const std::vector<double>& values, double v) {
+    for (double a : values)
+        if (std::abs(a - v) <= 1e-11 * std::max(1.0, std::abs(v))) return a;
+    return std::nullopt;
+}
+
 // The fixed values that are not the contest's, for the map's note.
 std::string fixed_note(const SweepSetup& setup, const std::vector<std::size_t>& plotted) {
     const Scenario contest;
@@ -39,7 +55,7 @@ std::string fixed_note(const SweepSetup& setup, const std::vector<std::size_t>& 
     }
     const std::string fixed = differ.empty() ? "Everything else as in the contest"
                                              : fmt::format("Fixed: {}; the rest as in the contest", fmt::join(differ, ", "));
-    return fmt::format("{}. {} scenarios.", fixed, setup.grid.size());
+    return fmt::format("{}. {}.", fixed, count_of(static_cast<long long>(setup.grid.size()), "scenario"));
 }
 
 }  // namespace
@@ -81,9 +97,14 @@ void MapCollector::add(const std::string& csv_row) {
                                           fields.begin() + static_cast<long>(column + info.columns.size()),
                                           [](const std::string& f) { return !f.empty(); });
         const std::string& value = at(info.key);
+        const auto has = [&](const std::string& key) {
+            return std::find(info.columns.begin(), info.columns.end(), key) != info.columns.end();
+        };
         MapCell state = MapCell::value;
-        if (!answered) state = MapCell::refused;
+        if (!answered) state = collides_at_start(fields.back(), info) ? MapCell::overlapping : MapCell::refused;
         else if (info.jam_cuts_answer && !at("jam.time").empty()) state = MapCell::jam;
+        else if (value.empty() && has("below_range") && at("below_range") == "true") state = MapCell::below_range;
+        else if (value.empty() && has("above_range") && at("above_range") == "true") state = MapCell::above_range;
         else if (value.empty()) state = MapCell::no_value;
         cells_[m][cell] = state;
         values_[m][cell] = state == MapCell::value ? std::strtod(value.c_str(), nullptr) : NAN;
@@ -108,10 +129,16 @@ SweepMap MapCollector::map() const {
         if (std::find(plotted_.begin(), plotted_.end(), k) == plotted_.end())
             contest_map = contest_map && a.values[0] == get_parameter(contest, *a.parameter);
     }
+    // ...and each plotted axis holds the contest's value: the dragon is marked on its own
+    // scenario, never between the grid's values.
+    for (std::size_t k : plotted_) {
+        const Axis& a = setup_.grid.axes()[k];
+        contest_map = contest_map && on_axis(a.values, get_parameter(contest, *a.parameter));
+    }
     const auto axis = [&](std::size_t k) {
         const Axis& a = setup_.grid.axes()[k];
         MapAxis m{a.parameter->quantity, a.parameter->unit, a.values, std::nullopt};
-        if (contest_map) m.mark = get_parameter(contest, *a.parameter);
+        if (contest_map) m.mark = on_axis(a.values, get_parameter(contest, *a.parameter));
         return m;
     };
     map.x = axis(plotted_.at(0));
@@ -120,6 +147,10 @@ SweepMap MapCollector::map() const {
     for (std::size_t m = 0; m < setup_.measures.size(); ++m) {
         const MeasureInfo& info = *setup_.measures[m];
         MapPanel panel{info.quantity, info.unit, values_[m], cells_[m], jam_meaning(info)};
+        if (std::string(info.name) == "min-pitch") {
+            panel.below_label = "minimum pitch at or below the range searched (--lo)";
+            panel.above_label = "minimum pitch, if any, above the range searched (--hi)";
+        }
         map.panels.push_back(std::move(panel));
     }
     return map;

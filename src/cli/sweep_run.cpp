@@ -7,6 +7,7 @@
 
 #include "cli/progress.hpp"
 #include "cli/status.hpp"
+#include "cli/wording.hpp"
 #include "dragon/atomic_file.hpp"
 
 namespace dragon::cli {
@@ -89,7 +90,8 @@ SweepTally run_rows(const SweepSetup& setup, const SweepOutput& o, const std::fu
             log = RowLog::create(partial, preamble);
         }
         if (tally.done_before > 0)
-            status(o.quiet, "resuming: {} of {} rows are in {} already", tally.done_before, tally.scenarios, source);
+            status(o.quiet, "resuming: {} of {} {} in {} already", tally.done_before,
+                   count_of(static_cast<long long>(tally.scenarios), "row"), tally.done_before == 1 ? "is" : "are", source);
     } else if (!o.json) {
         for (const std::string& line : preamble) fmt::print("{}\n", line);
         std::fflush(stdout);

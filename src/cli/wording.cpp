@@ -6,6 +6,10 @@
 
 namespace dragon::cli {
 
+std::string count_of(long long n, const std::string& one, const std::string& many) {
+    return fmt::format("{} {}", n, n == 1 ? one : many.empty() ? one + "s" : many);
+}
+
 std::string min_pitch_guarantee(const MinPitch& m) {
     return fmt::format(
         "feasibility evaluated on a {:.4g} m pitch grid over [{}, {}], each change narrowed to {:.0e} m "

@@ -9,6 +9,10 @@
 
 namespace dragon::cli {
 
+// "1 frame", "2 frames", "0 frames": a count and its noun, singular for one; `many` for a
+// plural that is not the noun plus "s" ("local maxima").
+std::string count_of(long long n, const std::string& one, const std::string& many = "");
+
 // One sentence: the grid, how each change is narrowed, and what a window narrower than the grid means.
 std::string min_pitch_guarantee(const MinPitch& m);
 

@@ -13,6 +13,12 @@ std::string given_start(const RunWindow& w) {
 
 }  // namespace
 
+OverlapAtStart::OverlapAtStart(const std::string& start, int a, int b, double overlap)
+    : InputError("time range start", start,
+                 fmt::format("benches {} and {} already overlap there (by {:.6f} m): their first contact is before it",
+                             a, b, overlap)),
+      bench_a(a), bench_b(b), depth(overlap) {}
+
 namespace {
 
 // The search itself: a contact at the window's start with the benches overlapping is reported
@@ -39,9 +45,7 @@ CollideAnswer collide(const Simulation& sim, const RunWindow& window, Executor* 
     CollideAnswer out = search(sim, window, executor);
     if (out.overlapping) {
         const Clearance now = clearance(out.contact->frame);
-        throw InputError("time range start", given_start(window),
-                         fmt::format("benches {} and {} already overlap there (by {:.6f} m): their first contact "
-                                     "is before it", now.bench_a, now.bench_b, -now.distance));
+        throw OverlapAtStart(given_start(window), now.bench_a, now.bench_b, -now.distance);
     }
     return out;
 }

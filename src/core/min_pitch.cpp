@@ -29,6 +29,21 @@ constexpr int kApproachSamples = 40;
 constexpr double kApproachTime = 1e-7;   // s
 constexpr int kFalsiRounds = 4;
 constexpr int kFalsiSteps = 60;
+// Interior points the k-section tests each round, whatever the executor's size: the same pitches
+// are run on one worker or many, so the answer does not depend on how many there are (3 points
+// quarter the bracket: a round takes 2 runs' time on 2 workers, as two bisections would).
+constexpr int kSectionPoints = 3;
+
+// Where the head starts on the plain spiral at this pitch: r = b theta.
+double start_radius(double pitch, double start_turn) { return Spiral(pitch).b() * kTwoPi * start_turn; }
+
+// The error of a pitch whose run cannot start: the head would start inside the turning space.
+InputError starts_inside(const std::string& field, double pitch, double start_turn, double turn_radius) {
+    return InputError(field, error_value(pitch),
+                      fmt::format("it puts the head's start (radius {:.4f} m) inside the turning space (radius {} m); "
+                                  "a pitch above {} m starts the head outside it",
+                                  start_radius(pitch, start_turn), turn_radius, turn_radius / start_turn));
+}
 
 }  // namespace
 
@@ -36,11 +51,8 @@ BoundaryRun run_to_boundary(Scenario s, double pitch) {
     s.path.kind = PathKind::spiral;
     s.path.pitch = pitch;
     const Simulation sim(s);
-    const double start_radius = Spiral(pitch).b() * kTwoPi * s.path.start_turn;  // r = b theta
-    if (start_radius <= s.path.turn_radius)
-        throw InputError("pitch", error_value(pitch),
-                         fmt::format("it puts the head's start (radius {:.4f} m) inside the turning space (radius {} m)",
-                                     start_radius, s.path.turn_radius));
+    if (start_radius(pitch, s.path.start_turn) <= s.path.turn_radius)
+        throw starts_inside("pitch", pitch, s.path.start_turn, s.path.turn_radius);
     const double t_end = boundary_time(sim);
     BoundaryRun run;
     run.jam = sim.jam_before(t_end);
@@ -65,29 +77,41 @@ struct Probe {
 };
 
 // Feasibility of several pitches at once, spread over the executor's workers: each pitch is an
-// independent run of the dragon to the boundary.
+// independent run of the dragon to the boundary. Every run is made, and a run's error is kept
+// with its pitch: the one thrown is that of the smallest pitch that failed, the one a serial
+// scan would meet first, whichever thread finished first.
 std::vector<Probe> probe_at(const Scenario& s, Executor& ex, const std::vector<double>& pitches,
                             const WorkProgress& progress = {}) {
     std::vector<Probe> out(pitches.size());
+    std::vector<std::exception_ptr> failed(pitches.size());
     std::mutex progress_lock;
     std::int64_t done = 0;  // under progress_lock: the callback hears one worker at a time
     ex.parallel_for(pitches.size(), [&](size_t k, int) {
-        const BoundaryRun run = run_to_boundary(s, pitches[k]);
-        if (run.contact) out[k] = Probe{false, run.contact->time, run.contact->bench_a, run.contact->bench_b, {}};
-        else if (run.jam) out[k] = Probe{false, run.jam->time, 0, 0, run.jam};
-        else out[k] = Probe{true, 0.0, 0, 0, {}};
+        try {
+            const BoundaryRun run = run_to_boundary(s, pitches[k]);
+            if (run.contact) out[k] = Probe{false, run.contact->time, run.contact->bench_a, run.contact->bench_b, {}};
+            else if (run.jam) out[k] = Probe{false, run.jam->time, 0, 0, run.jam};
+            else out[k] = Probe{true, 0.0, 0, 0, {}};
+        } catch (...) {
+            failed[k] = std::current_exception();
+        }
         if (progress) {
             const std::lock_guard<std::mutex> hold(progress_lock);
             progress(++done, static_cast<std::int64_t>(pitches.size()));
         }
     });
+    std::vector<size_t> order(pitches.size());
+    for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return pitches[a] < pitches[b]; });
+    for (size_t k : order)
+        if (failed[k]) std::rethrow_exception(failed[k]);
     return out;
 }
 
-// Narrows [a, b] (feasible at exactly one end) to tol::pitch by k-section: each round tests as
-// many interior points as there are workers, keeping the sub-interval where feasibility changes.
+// Narrows [a, b] (feasible at exactly one end) to tol::pitch by k-section: each round tests
+// kSectionPoints interior points (in parallel), keeping the sub-interval where feasibility changes.
 double k_section(const Scenario& s, Executor& ex, double a, double b, bool feasible_at_a) {
-    const size_t points = static_cast<size_t>(ex.workers());
+    constexpr size_t points = kSectionPoints;
     while (b - a > tol::pitch) {
         std::vector<double> probe;
         for (size_t k = 1; k <= points; ++k) probe.push_back(a + (b - a) * static_cast<double>(k) / static_cast<double>(points + 1));
@@ -195,6 +219,11 @@ MinPitch min_pitch(const Scenario& scenario, double lo, double hi, const MinPitc
     if (!(lo > s.bench.width) || !(hi > lo))
         throw InputError(fmt::format("pitch search range [{}, {}] is not allowed: it needs width {} < lo < hi",
                                      lo, hi, s.bench.width));
+    // The runs start with the head outside the turning space: from a pitch above this on (the
+    // start's radius grows with the pitch), so a range starting there holds no pitch that cannot start.
+    const double lowest = std::max(s.bench.width, s.path.turn_radius / s.path.start_turn);
+    if (start_radius(lo, s.path.start_turn) <= s.path.turn_radius)
+        throw starts_inside("pitch search range start", lo, s.path.start_turn, s.path.turn_radius);
     if (!(grid > 0.0) || !std::isfinite(grid))
         throw InputError("pitch grid", error_value(grid), "give a pitch spacing above 0, in m");
     // Grid steps: a range that is a whole number of spacings up to rounding gets that number.
@@ -206,6 +235,8 @@ MinPitch min_pitch(const Scenario& scenario, double lo, double hi, const MinPitc
     MinPitch out{};
     out.search_lo = lo;
     out.search_hi = hi;
+    out.lowest = lowest;
+    out.lowest_is_start = s.path.turn_radius / s.path.start_turn >= s.bench.width;
     // Scan on a grid, then refine each change of feasibility.
     const int n = std::max(2, static_cast<int>(steps));
     std::vector<double> pitches(static_cast<size_t>(n + 1));

@@ -56,9 +56,9 @@ void require_reach(const Scenario& s, bool spiral) {
     const double head = coil.length_to(spiral ? kTwoPi * s.path.start_turn : s.path.turn_radius / coil.b());
     if (!(head + b.chain_length() <= kMaxReach))
         refuse(value::bench | (spiral ? value::pitch | value::start_turn : value::turn_pitch | value::turn_radius),
-               fmt::format("{} benches {}: the chain would reach {:.4g} m along the spiral from its centre (the "
+               fmt::format("{} {} {}: the chain would reach {:.4g} m along the spiral from its centre (the "
                            "head {:.4g} m, the chain {:.4g} m); at most {:.0f} m keeps positions to 1e-8 m",
-                           b.bench_count, spiral ? "from this start turn and pitch" : "at this turn radius and pitch",
+                           b.bench_count, b.bench_count == 1 ? "bench" : "benches", spiral ? "from this start turn and pitch" : "at this turn radius and pitch",
                            head + b.chain_length(), head, b.chain_length(), kMaxReach));
 }
 

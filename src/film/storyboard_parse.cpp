@@ -10,13 +10,29 @@
 
 namespace dragon {
 
+namespace {
+
+// Where a storyboard's key is, and what is wrong with it, in one line. A `why` that says
+// something of the key ("= 0 is not allowed: ...", "is not a key of a shot", "must be a
+// string") has the key as its subject: "[film] fps = 0 is not allowed", "shot 2 (\"close\"):
+// rate = -5 is not allowed"; a sentence of its own follows the key: "shot 1, key 'rate': give a
+// rate ... or a duration".
+std::string storyboard_message(const std::string& file, int shot, const std::string& shot_name, const std::string& key,
+                               const std::string& why) {
+    const bool predicate = why.rfind("= ", 0) == 0 || why.rfind("is ", 0) == 0 || why.rfind("must ", 0) == 0;
+    if (shot == 0) return fmt::format("storyboard '{}', [film] {}{}{}", file, key, predicate ? " " : ": ", why);
+    const std::string where = shot_name == fmt::format("shot {}", shot)
+                                  ? fmt::format("storyboard '{}', shot {}", file, shot)
+                                  : fmt::format("storyboard '{}', shot {} ({})", file, shot, shot_name);
+    if (predicate) return fmt::format("{}: {} {}", where, key, why);
+    return fmt::format("{}, key '{}': {}", where, key, why);
+}
+
+}  // namespace
+
 StoryboardError::StoryboardError(const std::string& file, int shot_, const std::string& shot_name,
                                  const std::string& key_, const std::string& why)
-    : InputError(shot_ == 0 ? fmt::format("storyboard '{}', [film] {}: {}", file, key_, why)
-                 : shot_name == fmt::format("shot {}", shot_)
-                     ? fmt::format("storyboard '{}', shot {}, key '{}': {}", file, shot_, key_, why)
-                     : fmt::format("storyboard '{}', shot {} ({}), key '{}': {}", file, shot_, shot_name, key_, why)),
-      shot(shot_), key(key_) {}
+    : InputError(storyboard_message(file, shot_, shot_name, key_, why)), shot(shot_), key(key_) {}
 
 namespace {
 

@@ -93,8 +93,8 @@ void first_contact_zoom(const Context& c, const std::string& path) {
         SceneOptions so;
         so.theme = th;
         so.title_band = true;  // a title hides nothing
-        so.annotation = fmt::format("No contact: a chain of {} benches has no two that do not share a handle",
-                                    f.benches.size());
+        so.annotation = fmt::format("No contact: a chain of {} {} no two that do not share a handle",
+                                    f.benches.size(), f.benches.size() == 1 ? "bench has" : "benches has");
         write_scene(c, make_scene(sim, f, so), w, h, path);
         return;
     }
@@ -286,8 +286,8 @@ void clearance_over_time(const Context& c, const std::string& path) {
                              hit->bench_a, hit->bench_b, c.contest() ? "; the paper's 0.1 s grid gives 413 s." : ".");
         p.ref_lines.push_back({true, hit->time, fmt::format("{:.4f} s", hit->time), p.theme.collision});
     } else if (s.points.empty()) {
-        p.note = fmt::format("A chain of {} benches has no two that do not share a handle: nothing can touch.",
-                             c.base.bench.bench_count);
+        p.note = fmt::format("A chain of {} {} no two that do not share a handle: nothing can touch.",
+                             c.base.bench.bench_count, c.base.bench.bench_count == 1 ? "bench has" : "benches has");
     } else {
         p.note = fmt::format("Exact rectangle distances. No contact on the way in (to t = {:.2f} s): the smallest sampled "
                              "clearance is {:.6f} m, benches {} and {} at t = {:.2f} s.",

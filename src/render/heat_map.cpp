@@ -256,8 +256,7 @@ void draw_heat_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
             cairo_rectangle(c, x0 - 0.5, y0 - 0.5, x1 - x0 + 1.0, y1 - y0 + 1.0);
             cairo_fill(c);
         }
-        for (MapCell kind : {MapCell::jam, MapCell::refused, MapCell::no_value, MapCell::missing})
-            draw_other_cells(c, th, panel, s, kind, ex, ey, a, u);
+        for (MapCell kind : other_cell_kinds()) draw_other_cells(c, th, panel, s, kind, ex, ey, a, u);
         const std::optional<Mark> mark = place_mark(c, map, a, u);
         draw_contours(c, th, s, levels, fine.decimals, a, u, mark ? std::vector<Box>{mark->box} : std::vector<Box>{});
         if (mark) draw_mark(c, map, *mark, u);

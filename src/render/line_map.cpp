@@ -1,5 +1,6 @@
-// A line plot panel: one measure against one varied value, scenarios without a value marked
-// along the bottom as what they are, and the contest's dragon as a reference line.
+// A line plot panel: one measure against one varied value, the scenarios without a value marked
+// as what they are in a strip under the values (outside their axis, sharing the x axis), and the
+// contest's dragon as a reference line where the map holds it.
 #include <algorithm>
 #include <cmath>
 
@@ -33,16 +34,21 @@ void draw_line_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
     if (!(hi >= lo)) lo = 0.0, hi = 1.0;
     if (hi - lo < 1e-12 * std::max(1.0, std::abs(lo))) lo -= 0.5, hi += 0.5;
     p.series.push_back(values);
-    // Cells without a value: a row of markers just above the bottom of the frame, one series each.
+    // Scenarios without a value: a marker each in the strip under the frame, never on the
+    // value axis (a dot at "195 s" would read as a first contact then).
     const bool others = has_other_cells(panel);
-    const double strip = lo - 0.08 * (hi - lo);
-    for (MapCell kind : {MapCell::jam, MapCell::refused, MapCell::no_value}) {
-        PlotSeries s{"", {}, cell_style(th, kind, panel).marker, 1.0, false, false, true, 4.0};
-        for (std::size_t i : order)
-            if (panel.cells[i] == kind) s.points.push_back({map.x.values[i], strip});
-        if (!s.points.empty()) p.series.push_back(std::move(s));
+    if (others) {
+        p.strip_px = 24;
+        p.strip_label = "no value";
+        p.strip = [&](cairo_t* c, const PlotArea& band, double su) {
+            for (std::size_t i : order) {
+                if (panel.cells[i] == MapCell::value) continue;
+                const CellStyle st = cell_style(th, panel.cells[i], panel);
+                draw_cell_marker(c, panel.cells[i], st, band.px(map.x.values[i]), 0.5 * (band.y0 + band.y1), 4.5 * su);
+            }
+        };
     }
-    p.y_min = others ? lo - 0.14 * (hi - lo) : lo - 0.05 * (hi - lo);
+    p.y_min = lo - 0.05 * (hi - lo);
     p.y_max = hi + 0.08 * (hi - lo);
     if (map.x.mark) p.ref_lines.push_back({true, *map.x.mark, map.mark_label, th.text, true});
     const double u = std::max(0.4, std::min(w / 900.0, h / 560.0) * 1.25);  // the plot's own unit

@@ -1,6 +1,8 @@
 // The panels of a sweep's map (dragon/sweep_map.hpp), each drawn into its own box.
 #pragma once
 
+#include <vector>
+
 #include <cairo.h>
 
 #include "dragon/sweep_map.hpp"
@@ -15,6 +17,11 @@ struct CellStyle {
     Rgba marker;  // a line plot's dot for such a scenario: strong enough to see as a dot
 };
 CellStyle cell_style(const Theme& theme, MapCell cell, const MapPanel& panel);
+// Every kind but values, in the order the legend lists them.
+const std::vector<MapCell>& other_cell_kinds();
+// A line plot's marker for a scenario of this kind at (x, y), radius r: a dot, or a triangle
+// pointing down (answer below the range) or up (above it).
+void draw_cell_marker(cairo_t* cr, MapCell kind, const CellStyle& style, double x, double y, double r);
 // Diagonal hatching across the current clip, lines `spacing` apart.
 void hatch(cairo_t* cr, double x0, double y0, double x1, double y1, double spacing, double width, Rgba colour);
 // The legend of the cell kinds other than values that the panel holds (a swatch and its text

@@ -174,6 +174,9 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
     double ytw = 0;
     for (double v : yt0.values)
         ytw = std::max(ytw, render::text_width(cr, th.font, 12 * u, render::format_tick(v, yt0.decimals)));
+    const bool banded = p.strip_px > 0 && p.strip;
+    if (banded) ytw = std::max(ytw, render::text_width(cr, th.font, 11 * u, p.strip_label));
+    const double band_gap = 6 * u, band_h = banded ? p.strip_px * u : 0.0;
     // Title and note run across the frame's width, wrapped or set smaller rather than clipped;
     // the frame starts below however many lines they take.
     const double x0 = x + ytw + (p.y_label.empty() ? 18 : 40) * u, x1 = x + w - 20 * u;
@@ -187,15 +190,19 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
     const double top = title_y.empty() && note_y.empty() ? y + 16 * u
                        : note_y.empty()                  ? title_y.back() + 16 * u
                                                          : note_y.back() + 14 * u;
-    Frame2 f{x0, top, x1, y + h - (p.x_label.empty() ? 30 : 52) * u, xr, yr};
+    Frame2 f{x0, top, x1, y + h - (p.x_label.empty() ? 30 : 52) * u - (banded ? band_gap + band_h : 0.0), xr, yr};
     if (p.equal_aspect) equalise(f);
     const auto xt = render::nice_ticks(f.xr.lo, f.xr.hi, std::max(3, static_cast<int>((f.x1 - f.x0) / (90 * u))));
     const auto yt = render::nice_ticks(f.yr.lo, f.yr.hi, std::max(3, static_cast<int>((f.y1 - f.y0) / (60 * u))));
 
     // Grid, then data clipped to the plot area, then the frame and ticks on top.
+    // The band under the data area, when there is one: where the x axis's ticks go.
+    const double band_y0 = f.y1 + band_gap, axis_y = banded ? band_y0 + band_h : f.y1;
     cairo_set_line_width(cr, 1 * u);
     set_colour(cr, th.grid);
     for (double v : xt.values) cairo_move_to(cr, f.px(v), f.y0), cairo_line_to(cr, f.px(v), f.y1);
+    if (banded)
+        for (double v : xt.values) cairo_move_to(cr, f.px(v), band_y0), cairo_line_to(cr, f.px(v), axis_y);
     for (double v : yt.values) cairo_move_to(cr, f.x0, f.py(v)), cairo_line_to(cr, f.x1, f.py(v));
     cairo_stroke(cr);
 
@@ -241,16 +248,30 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
     }
     cairo_restore(cr);
 
+    if (banded) {
+        const PlotArea band{f.x0, band_y0, f.x1, axis_y, f.xr.lo, f.xr.hi, 0.0, 1.0};
+        cairo_save(cr);
+        cairo_rectangle(cr, f.x0, band_y0, f.x1 - f.x0, band_h);
+        cairo_clip(cr);
+        p.strip(cr, band, u);
+        cairo_restore(cr);
+    }
+
     set_colour(cr, th.text);
     cairo_set_line_width(cr, 1.2 * u);
     cairo_rectangle(cr, f.x0, f.y0, f.x1 - f.x0, f.y1 - f.y0);
     cairo_stroke(cr);
     const double tick = 5 * u, size = 12 * u;
-    for (double v : xt.values) {
-        cairo_move_to(cr, f.px(v), f.y1);
-        cairo_line_to(cr, f.px(v), f.y1 + tick);
+    if (banded) {
+        cairo_rectangle(cr, f.x0, band_y0, f.x1 - f.x0, band_h);
         cairo_stroke(cr);
-        render::text(cr, th.font, size, f.px(v), f.y1 + tick + 4 * u + 0.73 * size,
+        render::text(cr, th.font, 11 * u, f.x0 - tick - 4 * u, band_y0 + 0.5 * band_h, p.strip_label, 1.0, 0.5);
+    }
+    for (double v : xt.values) {
+        cairo_move_to(cr, f.px(v), axis_y);
+        cairo_line_to(cr, f.px(v), axis_y + tick);
+        cairo_stroke(cr);
+        render::text(cr, th.font, size, f.px(v), axis_y + tick + 4 * u + 0.73 * size,
                      render::format_tick(v, xt.decimals), 0.5);
     }
     for (double v : yt.values) {

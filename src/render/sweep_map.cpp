@@ -27,14 +27,44 @@ std::string axis_label(const std::string& quantity, const std::string& unit) {
 namespace render {
 
 CellStyle cell_style(const Theme& theme, MapCell cell, const MapPanel& panel) {
+    // Pale fills, away from the value ramp's colours, for the kinds that are not values; the
+    // answer outside the range searched is blue below it and rose above it; a chain that
+    // collides from the start a deep red, as strong as the verdict.
     switch (cell) {
         case MapCell::jam: return {{0.88, 0.88, 0.89}, true, panel.jam_label, {0.84, 0.37, 0.00}};
         case MapCell::refused: return {{0.60, 0.60, 0.63}, false, "refused (the row's status says why)", {0.40, 0.40, 0.43}};
-        case MapCell::no_value: return {{0.78, 0.83, 0.91}, false, "no answer in the range searched", {0.35, 0.50, 0.75}};
+        case MapCell::no_value: return {{0.92, 0.89, 0.78}, false, "no answer in the range searched", {0.62, 0.52, 0.25}};
+        case MapCell::below_range: return {{0.76, 0.84, 0.95}, false, panel.below_label, {0.20, 0.42, 0.80}};
+        case MapCell::above_range: return {{0.97, 0.80, 0.78}, false, panel.above_label, {0.82, 0.30, 0.25}};
+        case MapCell::overlapping:
+            return {{0.55, 0.11, 0.13}, false, "benches overlap at the start: the chain collides", {0.55, 0.11, 0.13}};
         case MapCell::missing: return {theme.background, false, "no row (another shard's)", {0.6, 0.6, 0.6}};
         case MapCell::value: break;
     }
     return {theme.background, false, "", theme.text};
+}
+
+const std::vector<MapCell>& other_cell_kinds() {
+    static const std::vector<MapCell> kinds = {MapCell::jam,         MapCell::refused,     MapCell::overlapping,
+                                               MapCell::below_range, MapCell::above_range, MapCell::no_value,
+                                               MapCell::missing};
+    return kinds;
+}
+
+void draw_cell_marker(cairo_t* cr, MapCell kind, const CellStyle& style, double x, double y, double r) {
+    set_colour(cr, style.marker);
+    cairo_new_sub_path(cr);
+    if (kind == MapCell::below_range || kind == MapCell::above_range) {
+        // A triangle pointing the way the answer lies.
+        const double d = kind == MapCell::below_range ? 1.0 : -1.0, s = 1.25 * r;
+        cairo_move_to(cr, x, y + d * s);
+        cairo_line_to(cr, x - s, y - d * 0.75 * s);
+        cairo_line_to(cr, x + s, y - d * 0.75 * s);
+        cairo_close_path(cr);
+    } else {
+        cairo_arc(cr, x, y, r, 0, 2 * std::numbers::pi);
+    }
+    cairo_fill(cr);
 }
 
 void hatch(cairo_t* cr, double x0, double y0, double x1, double y1, double spacing, double width, Rgba colour) {
@@ -64,7 +94,7 @@ struct Placed {
 std::vector<Placed> legend_layout(cairo_t* cr, const Theme& theme, const MapPanel& panel, double width, double u) {
     std::vector<Placed> out;
     double dx = 0, dy = 0;
-    for (MapCell kind : {MapCell::jam, MapCell::refused, MapCell::no_value, MapCell::missing}) {
+    for (MapCell kind : other_cell_kinds()) {
         if (std::find(panel.cells.begin(), panel.cells.end(), kind) == panel.cells.end()) continue;
         const double w = (kSwatch + kSwatchGap) * u + text_width(cr, theme.font, kLegendText * u, cell_style(theme, kind, panel).label);
         if (dx > 0 && dx + w > width) dx = 0, dy += kLegendRow * u;  // on to the next row
@@ -90,10 +120,7 @@ void draw_cell_legend(cairo_t* cr, const Theme& theme, const MapPanel& panel, do
         set_colour(cr, theme.text);
         text(cr, theme.font, kLegendText * u, sx + swatch + kSwatchGap * u, y, st.label, 0.0, 0.5);
         if (dots) {
-            set_colour(cr, st.marker);
-            cairo_new_sub_path(cr);
-            cairo_arc(cr, sx + 0.5 * swatch, y, 4.0 * u, 0, 2 * std::numbers::pi);
-            cairo_fill(cr);
+            draw_cell_marker(cr, e.kind, st, sx + 0.5 * swatch, y, 4.0 * u);
             continue;
         }
         cairo_save(cr);

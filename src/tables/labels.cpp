@@ -21,6 +21,15 @@ std::string format_time(double t) {
     return fmt::format("{}", r == 0.0 ? 0.0 : r);
 }
 
+std::string format_time(double t, int digits) {
+    std::string out = format_fixed(t, digits);
+    if (out.find('.') != std::string::npos) {
+        out.erase(out.find_last_not_of('0') + 1);  // 300.000000 -> 300., 0.100000 -> 0.1
+        if (out.back() == '.') out.pop_back();
+    }
+    return out == "-0" ? "0" : out;
+}
+
 std::string time_header(double t) { return format_time(t) + " s"; }
 
 std::string format_fixed(double v, int digits) {

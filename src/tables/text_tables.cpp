@@ -37,7 +37,7 @@ bool put_csv(const std::vector<Frame>& frames, std::FILE* f, int digits) {
     fmt::memory_buffer buf;
     fmt::format_to(std::back_inserter(buf), "t,handle,x,y,speed\n");
     for (const Frame& fr : frames) {
-        const std::string t = format_time(fr.time);
+        const std::string t = format_time(fr.time, digits);
         for (size_t i = 0; i < fr.handles.size(); ++i) {
             const Handle& h = fr.handles[i];
             fmt::format_to(std::back_inserter(buf), "{},{},{},{},{}\n", t, i, format_fixed(h.pos.x(), digits),
@@ -89,7 +89,7 @@ void write_json(const std::vector<Frame>& frames, const std::string& path, int d
             for (size_t i = 0; i < fr.handles.size(); ++i)
                 put("{}{}", i ? ", " : "", format_fixed(value(fr.handles[i]), digits));
         };
-        put("  {{\"t\": {}, \"x\": [", format_time(fr.time));
+        put("  {{\"t\": {}, \"x\": [", format_time(fr.time, digits));
         list([](const Handle& h) { return h.pos.x(); });
         put("], \"y\": [");
         list([](const Handle& h) { return h.pos.y(); });

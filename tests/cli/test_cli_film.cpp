@@ -79,7 +79,7 @@ INSTANTIATE_TEST_SUITE_P(
     Film, BadFilm,
     ::testing::Values(
         BadCase{"unknown_key", "[[shot]]\nname = \"a\"\nfrom = 1\nto = 2\nrate = 1\nspeeed = 2\n", "", "f.mp4",
-                "shot 1 (\"a\"), key 'speeed': is not a key of a shot"},
+                "shot 1 (\"a\"): speeed is not a key of a shot"},
         BadCase{"past_the_valid_range", "[[shot]]\nfrom = 430\nto = 440\nrate = 5\n", "", "f.mp4",
                 "shot 1, key 'to': to 440 is not allowed: the dragon can follow its path only until"},
         BadCase{"overlapping_transitions",
@@ -89,6 +89,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"png_without_at", "", "", "f.png", "give --at SECONDS"},
         BadCase{"at_past_the_end", "", "--at 99", "f.png", "--at 99 is not allowed: the film lasts 1.200 s"},
         BadCase{"at_for_a_film", "", "--at 1", "f.mp4", "--at 1 is not allowed for a film"},
+        BadCase{"poster_not_png", "", "--at 1", "p.svg", "p.svg has extension '.svg': the frame --at 1 picks is written as a .png"},
         BadCase{"tune_for_webm", "", "--tune film", "f.webm", "--tune is not allowed for .webm"},
         BadCase{"odd_size", "", "--size 97x64", "f.mp4", "yuv420p needs an even width"},
         BadCase{"bad_extension", "", "", "f.avi", "videos are .mp4"},

@@ -172,6 +172,40 @@ TEST(CliValidMotion, MinPitchSaysWhichSideOfTheRangeTheAnswerIsOn) {
     EXPECT_TRUE(std::regex_search(hit.out, std::regex("minimum pitch: 0\\.[0-9]{10} m"))) << hit.out;
 }
 
+// The advice of an answer below the range can be followed: it names how far --lo may go down,
+// and a --lo there is accepted (the head starts at radius start-turn x pitch: 0.45 m is the
+// edge of a 4.5 m turning space at start turn 10); a range that starts lower is refused as
+// --lo, with the same bound.
+TEST(CliValidMotion, MinPitchAdviceCanBeFollowed) {
+    const dragon_test::CliRun below = run_dragon("min-pitch --start-turn 10 --lo 0.451");
+    ASSERT_EQ(below.code, 0) << below.err;
+    EXPECT_TRUE(contains(below.out, "lower --lo to find it, keeping it above 0.45 m")) << below.out;
+    EXPECT_EQ(run_dragon("min-pitch --start-turn 10 --lo 0.4501").code, 0);
+    expect_refused("min-pitch --start-turn 10 --lo 0.45", "--lo 0.45 is not allowed");
+    expect_refused("min-pitch --start-turn 10 --lo 0.35", "a pitch above 0.45 m starts the head outside it");
+    // Within the tolerance of the bound there is nothing lower to search, and no advice to.
+    const dragon_test::CliRun edge = run_dragon("min-pitch --start-turn 10 --lo 0.4500000005");
+    ASSERT_EQ(edge.code, 0) << edge.err;
+    EXPECT_FALSE(contains(edge.out, "lower --lo")) << edge.out;
+    EXPECT_TRUE(contains(edge.out, "there is no lower pitch to search")) << edge.out;
+}
+
+// The same input, the same bytes: the refusal (once a race between the pitches run in
+// parallel, naming 0.35 or 0.3525) and an answer narrowed by k-section (whose points were
+// one per worker), each run several times.
+TEST(CliValidMotion, MinPitchPrintsTheSameBytesEveryRun) {
+    for (const std::string args : {"min-pitch --start-turn 10 --lo 0.35",
+                                   "min-pitch --turn-radius 1.2 --lo 0.85 --hi 0.95 --grid 0.01"}) {
+        const dragon_test::CliRun first = run_dragon(args);
+        for (int k = 0; k < 6; ++k) {
+            const dragon_test::CliRun again = run_dragon(args);
+            EXPECT_EQ(again.code, first.code) << args;
+            EXPECT_EQ(again.out, first.out) << args;
+            EXPECT_EQ(again.err, first.err) << args;
+        }
+    }
+}
+
 TEST(CliValidMotion, MinPitchNamesRunsThatCannotReachTheBoundary) {
     // A turning space of radius 1 m: wide pitches coil in without contact, but the dragon stops
     // following the spiral before its head gets there.

@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "dragon/analyses.hpp"
 #include "dragon/constants.hpp"
+#include "dragon/executor.hpp"
 
 using namespace dragon;
 
@@ -209,6 +211,77 @@ TEST(Q3, AFinerScanAgreesWithTheReportedIntervals) {
             if (p >= iv.lo && p <= iv.hi) reported = iv.feasible;
         if (std::abs(p - m.pitch) < 1e-6) continue;  // on the cut itself
         EXPECT_EQ(!contact_before_boundary(Scenario{}, p).has_value(), reported) << "pitch " << p;
+    }
+}
+
+// The same pitches are run on one worker or many (the k-section's points are fixed, not one per
+// worker), so every number of the answer is the same bits; the jam's change (turning space 1.2
+// m, 0.89..0.90 m: feasibility changes from a jam, which only the k-section narrows) included.
+TEST(Q3, TheAnswerDoesNotDependOnTheExecutor) {
+    struct Case {
+        Scenario s;
+        double lo, hi, grid;
+    };
+    Scenario ring;
+    ring.path.turn_radius = 1.2;
+    Scenario late_start;
+    late_start.path.start_turn = 10;
+    const std::vector<Case> cases = {{Scenario{}, 0.35, 0.55, kDefaultPitchGrid},
+                                     {ring, 0.85, 0.95, 0.01},
+                                     {late_start, 0.451, 0.55, kDefaultPitchGrid}};
+    InlineExecutor serial;
+    ThreadPool two(2), three(3), seven(7);
+    for (const Case& c : cases) {
+        MinPitchOptions o;
+        o.grid = c.grid;
+        o.executor = &serial;
+        const MinPitch want = min_pitch(c.s, c.lo, c.hi, o);
+        for (Executor* ex : std::initializer_list<Executor*>{&two, &three, &seven}) {
+            o.executor = ex;
+            const MinPitch got = min_pitch(c.s, c.lo, c.hi, o);
+            const std::string where = "range " + std::to_string(c.lo) + ".." + std::to_string(c.hi) + ", " +
+                                      std::to_string(ex->workers()) + " workers";
+            EXPECT_TRUE(std::isnan(want.pitch) ? std::isnan(got.pitch) : want.pitch == got.pitch) << where;
+            EXPECT_EQ(want.below_range, got.below_range) << where;
+            EXPECT_EQ(want.grid, got.grid) << where;
+            ASSERT_EQ(want.intervals.size(), got.intervals.size()) << where;
+            for (size_t k = 0; k < want.intervals.size(); ++k) {
+                EXPECT_EQ(want.intervals[k].lo, got.intervals[k].lo) << where;
+                EXPECT_EQ(want.intervals[k].hi, got.intervals[k].hi) << where;
+                EXPECT_EQ(want.intervals[k].feasible, got.intervals[k].feasible) << where;
+            }
+            ASSERT_EQ(want.jam.has_value(), got.jam.has_value()) << where;
+            if (want.jam) {
+                EXPECT_EQ(want.jam->pitch, got.jam->pitch) << where;
+                EXPECT_EQ(want.jam->jam.time, got.jam->jam.time) << where;
+            }
+        }
+    }
+}
+
+// A range whose low end starts the head inside the turning space is refused as the range's, the
+// same error on one worker or many; the range may start anywhere above that pitch, and the
+// answer says how far down a lower start may go.
+TEST(Q3, ARangeStartingInsideTheTurningSpaceIsRefusedAsSuch) {
+    Scenario s;
+    s.path.start_turn = 10;  // the head starts at radius 10 p: inside 4.5 m for p <= 0.45
+    InlineExecutor serial;
+    ThreadPool four(4);
+    for (Executor* ex : std::initializer_list<Executor*>{&serial, &four}) {
+        MinPitchOptions o;
+        o.executor = ex;
+        try {
+            min_pitch(s, 0.35, 0.55, o);
+            ADD_FAILURE() << "not refused";
+        } catch (const InputError& e) {
+            EXPECT_EQ(e.field(), "pitch search range start");
+            EXPECT_EQ(e.value(), "0.35");
+        }
+        EXPECT_THROW(min_pitch(s, 0.45, 0.55, o), InputError);
+        const MinPitch m = min_pitch(s, 0.45 + 1e-6, 0.55, o);
+        EXPECT_TRUE(m.below_range);
+        EXPECT_TRUE(m.lowest_is_start);
+        EXPECT_DOUBLE_EQ(m.lowest, 0.45);
     }
 }
 

@@ -1,15 +1,20 @@
 // Maps of a sweep: contour lines by marching squares (on a plane exactly where it has the
 // level; around a bowl one closed ring; none through a square without a value), and a golden
-// image of a small heat map with its contour lines, colour bar, cells cut short, refused and
-// without a value, and the contest's dragon marked. Text is drawn in the pinned DejaVu Sans.
+// image of a small heat map with its contour lines, colour bar, a cell of every kind that is not
+// a value (cut short, refused, overlapping at the start, the answer below or above the range, no
+// answer), and the contest's dragon marked. Text is drawn in the pinned DejaVu Sans.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <optional>
 
 #include "render/cairo_handles.hpp"
 #include "dragon/sweep_map.hpp"
 #include "golden.hpp"
 #include "render/contours.hpp"
+#include "render/map_panels.hpp"
+#include "dragon/plot.hpp"
 
 namespace dragon {
 namespace {
@@ -75,6 +80,9 @@ TEST(GoldenMap, SmallHeatMapWithEveryKindOfCell) {
     for (int j = 3; j < 5; ++j) panel.cells[at(6, j)] = MapCell::jam, panel.values[at(6, j)] = NAN;
     panel.cells[at(0, 0)] = MapCell::refused, panel.values[at(0, 0)] = NAN;
     panel.cells[at(3, 4)] = MapCell::no_value, panel.values[at(3, 4)] = NAN;
+    panel.cells[at(1, 0)] = MapCell::below_range, panel.values[at(1, 0)] = NAN;
+    panel.cells[at(5, 4)] = MapCell::above_range, panel.values[at(5, 4)] = NAN;
+    panel.cells[at(0, 4)] = MapCell::overlapping, panel.values[at(0, 4)] = NAN;
     map.panels.push_back(panel);
     constexpr int w = 480, h = 320;
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h));
@@ -82,9 +90,85 @@ TEST(GoldenMap, SmallHeatMapWithEveryKindOfCell) {
     test::outline_fonts(cr.get());
     draw_sweep_map(cr.get(), map, w, h);
     ASSERT_EQ(cairo_status(cr.get()), CAIRO_STATUS_SUCCESS);
-    const auto r = test::compare_golden(surface.get(), "sweep_heat_map_7x5_jam_refused_novalue_mark_480x320.png");
+    const auto r = test::compare_golden(surface.get(), "sweep_heat_map_7x5_every_cell_kind_mark_480x320.png");
     if (r.rebaselined) std::printf("%s\n", r.message.c_str());
     EXPECT_TRUE(r.ok) << r.message;
+}
+
+// A plot's band for marks without a value lies under the data area, outside the value axis,
+// and maps x as the data area does.
+TEST(PlotStrip, UnderTheValuesSharingTheXAxis) {
+    Plot p;
+    p.series.push_back({"", {Vec2(0.0, 200.0), Vec2(1.0, 450.0)}, {0, 0, 1}});
+    p.strip_px = 24;
+    p.strip_label = "no value";
+    std::optional<PlotArea> band;
+    p.strip = [&](cairo_t*, const PlotArea& b, double) { band = b; };
+    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 600, 400));
+    cairo::Context cr = cairo::make_context(surface.get());
+    const PlotArea a = draw_plot(cr.get(), p, 0, 0, 600, 400);
+    ASSERT_TRUE(band.has_value());
+    EXPECT_GT(band->y0, a.y1);
+    EXPECT_GT(band->y1, band->y0);
+    for (double x : {0.0, 0.3, 1.0}) EXPECT_DOUBLE_EQ(band->px(x), a.px(x));
+}
+
+// On a line plot every scenario without a value is a marker under the values' frame, outside
+// the value axis (a dot at "195 s" inside the frame would read as a first contact).
+TEST(LineMap, ScenariosWithoutAValueAreMarkedOutsideTheValueAxis) {
+    SweepMap map;
+    map.x = {"pitch", "m", steps(0.1, 0.9, 9), std::nullopt};
+    MapPanel panel{"first contact", "s", {}, {}};
+    for (double x : map.x.values) {
+        const bool refused = x < 0.35, jam = x > 0.75;
+        panel.values.push_back(refused || jam ? NAN : 200.0 + 500.0 * (x - 0.4));
+        panel.cells.push_back(refused ? MapCell::refused : jam ? MapCell::jam : MapCell::value);
+    }
+    map.panels.push_back(panel);
+    const auto [w, h] = sweep_map_size(map);
+    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h));
+    cairo::Context cr = cairo::make_context(surface.get());
+    draw_sweep_map(cr.get(), map, w, h);
+    cairo_surface_flush(surface.get());
+    // The value line's colour and the markers': the lowest pixel of the one, the highest of the others.
+    const Rgba line = series_colour(map.theme, 0);
+    const Rgba marker = render::cell_style(map.theme, MapCell::refused, panel).marker;
+    const auto is = [](std::uint32_t px, const Rgba& c) {
+        const auto ch = [&](int shift, double v) { return std::abs(static_cast<int>((px >> shift) & 0xff) - static_cast<int>(std::lround(v * 255))) <= 2; };
+        return ch(16, c.r) && ch(8, c.g) && ch(0, c.b);
+    };
+    const unsigned char* data = cairo_image_surface_get_data(surface.get());
+    const int stride = cairo_image_surface_get_stride(surface.get());
+    // A dot's inside: the colour over 3 x 3 pixels (text's anti-aliased edges and thin lines are
+    // never that solid), the value line's dots and the markers alike.
+    const auto solid = [&](int x, int y, const Rgba& c) {
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx)
+                if (!is(*reinterpret_cast<const std::uint32_t*>(data + (y + dy) * stride + 4 * (x + dx)), c)) return false;
+        return true;
+    };
+    int lowest_line = -1, highest_marker = h, markers = 0;
+    // Above the legend under the plot (whose swatches are markers too).
+    for (int y = 1; y < h - 60; ++y)
+        for (int x = 1; x + 1 < w; ++x) {
+            if (solid(x, y, line)) lowest_line = std::max(lowest_line, y);
+            if (solid(x, y, marker)) highest_marker = std::min(highest_marker, y), ++markers;
+        }
+    ASSERT_GE(lowest_line, 0);
+    ASSERT_GT(markers, 0);
+    EXPECT_GT(highest_marker, lowest_line);
+    // And a frame's edge runs between them: the markers are outside the values' frame, not at
+    // the bottom of it.
+    bool edge = false;
+    for (int y = lowest_line + 1; y < highest_marker && !edge; ++y) {
+        int run = 0;
+        for (int x = 0; x < w && !edge; ++x) {
+            run = is(*reinterpret_cast<const std::uint32_t*>(data + y * stride + 4 * x), map.theme.text) ? run + 1 : 0;
+            edge = run > w / 2;
+        }
+    }
+    EXPECT_TRUE(edge) << "no frame edge between the lowest value (y " << lowest_line << ") and the markers (y "
+                      << highest_marker << ")";
 }
 
 TEST(SweepMapOutput, PictureFormatsOnly) {

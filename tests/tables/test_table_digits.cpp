@@ -64,6 +64,26 @@ TEST(TableDigits, CsvAndJsonTakeDigits) {
     EXPECT_THROW(write_json(frames, json.string(), -1), InputError);
 }
 
+// The time is a number of the table too: `digits` decimals, its trailing zeros dropped (so a
+// grid's times read as typed), never "-0".
+TEST(TableDigits, TheTimeTakesDigitsToo) {
+    EXPECT_EQ(format_time(300.0, 6), "300");
+    EXPECT_EQ(format_time(0.30000000000000004, 6), "0.3");
+    EXPECT_EQ(format_time(0.30000000000000004, 17), "0.30000000000000004");
+    EXPECT_EQ(format_time(412.4738376821459, 9), "412.473837682");
+    EXPECT_EQ(format_time(412.4738376821459, 3), "412.474");
+    EXPECT_EQ(format_time(-1e-9, 6), "0");
+    EXPECT_EQ(format_time(2.5, 0), "3");
+    // In the files: the contact time at 1e-12 s, to 12 decimals.
+    const Simulation sim(Scenario{});
+    Frame at = sim.frame(412.473837682146);
+    const fs::path csv = dragon_test::scratch_dir() / "t.csv", json = dragon_test::scratch_dir() / "t.json";
+    write_csv({at}, csv.string(), 12);
+    EXPECT_NE(bytes(csv).find("\n412.473837682146,0,"), std::string::npos) << bytes(csv).substr(0, 80);
+    write_json({at}, json.string(), 2);
+    EXPECT_NE(bytes(json).find("{\"t\": 412.47, "), std::string::npos) << bytes(json).substr(0, 80);
+}
+
 TEST(Workbooks, SameBytesFromRunToRun) {
     const Simulation sim(Scenario{});
     const std::vector<Frame> frames = simulate_table(sim, 0.0, 3.0, 1.0);
