@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "cli/report.hpp"
+#include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/video.hpp"
@@ -71,6 +72,13 @@ std::string word(const InputError& e) {
     const auto flag = flag_of_field().find(e.field());
     if (e.field().empty() || flag == flag_of_field().end()) return e.what();
     const FlagWords& w = flag->second;
+    // Benches already overlapping where a search starts: not a refusal of a --from the user may
+    // never have given, but what the scenario does there, and how to find the contact.
+    if (const auto* o = dynamic_cast<const OverlapAtStart*>(&e))
+        return fmt::format("benches {} and {} already overlap where the search starts, at {} (by {:.6f} m): their "
+                           "first contact lies before it (an earlier --from finds it)", o->bench_a, o->bench_b,
+                           e.value().back() == 'm' ? e.value() + " of head travel" : "t = " + e.value() + " s",
+                           o->depth);
     // A moment past the end of the valid motion: the jam in the CLI's own words.
     if (const auto* past = dynamic_cast<const PastTheValidMotion*>(&e))
         return fmt::format("{} {} is not allowed: {}", w.flag, e.value(), jam_sentence(past->jam));
