@@ -12,14 +12,16 @@ std::string count_of(long long n, const std::string& one, const std::string& man
 
 std::string min_pitch_guarantee(const MinPitch& m) {
     return fmt::format(
-        "feasibility evaluated on a {:.4g} m pitch grid over [{}, {}], each change narrowed to {:.0e} m "
-        "(where the touching pair's closest approach is zero, confirmed by full runs on either side); "
-        "each evaluation checks the whole run to the boundary with time steps no contact can fit in "
-        "(clearance over a bound on its rate of change, second order near grazing passes; benches that a bound "
-        "on how far they stray from their turn of the spiral proves apart are left out), and that the "
-        "dragon can follow the spiral that far (a run whose motion ends first is infeasible); a window "
-        "narrower than the grid spacing could still lie unseen between two grid points of the same state "
-        "(a finer --grid rules out narrower ones)",
+        "feasibility evaluated on a {:.4g} m pitch grid over [{}, {}], each change narrowed to {:.0e} m (from a "
+        "contact to none, where the touching pair's closest approach is zero, confirmed by full runs on either "
+        "side; any other change by sections of full runs); each run checks the whole way to the boundary in steps "
+        "of head travel no pair can touch within at closing speeds up to twice those bounded at the step's start "
+        "(second order near grazing passes), and each step is checked at its end, where the gaps the step began "
+        "with must last it at the closing speeds bounded there, or it is taken again shorter: a contact inside a "
+        "step would need a pair to close faster than twice its bound at the start and than its bound at the end; "
+        "benches whose turn of the spiral keeps them apart are left out, as proved; a run whose motion ends "
+        "before the boundary is infeasible; a window narrower than the grid spacing could still lie unseen "
+        "between two grid points of the same state (a finer --grid rules out narrower ones)",
         m.grid, m.search_lo, m.search_hi, m.tolerance);
 }
 
