@@ -5,6 +5,8 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libfmt-dev libtomlplusplus-dev libcli11-dev libxlsxwriter-dev nlohmann-json3-dev
   libcairo2-dev fonts-dejavu-core
+  fonts-noto-cjk          # Chinese (and Japanese, Korean) glyphs: the pictures' fallback font
+  doxygen                 # the API reference of include/ (scripts/api-docs.sh)
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   libgtest-dev libbenchmark-dev
   python3 python3-openpyxl

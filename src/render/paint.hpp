@@ -15,7 +15,13 @@ inline void set_colour(cairo_t* cr, const Rgba& c) { cairo_set_source_rgba(cr, c
 // The colour at t in [0, 1] along evenly spaced stops (clamped), linear in sRGB.
 Rgba ramp_colour(const std::vector<Rgba>& stops, double t);
 
-// Text with Cairo's toy API (DejaVu Sans by default): `align` 0 = left, 0.5 = centre, 1 = right
+// Fonts for the characters the theme's font lacks, tried in order: Chinese first (the contest's
+// language; fonts-noto-cjk, installed by scripts/install-deps.sh), then others that Debian ships.
+inline constexpr const char* kFallbackFonts[] = {"Noto Sans CJK SC", "WenQuanYi Micro Hei", "Noto Sans CJK JP",
+                                                 "Droid Sans Fallback"};
+
+// Text with Cairo's toy API (DejaVu Sans by default; each character the font lacks in the first
+// of kFallbackFonts that has it): `align` 0 = left, 0.5 = centre, 1 = right
 // of x; `valign` 0 = baseline at y, 0.5 = middle of the capitals at y, 1 = capitals' top at y.
 void text(cairo_t* cr, const std::string& font, double size_px, double x, double y,
           const std::string& s, double align = 0.0, double valign = 0.0, bool bold = false);
@@ -26,7 +32,7 @@ double text_width(cairo_t* cr, const std::string& font, double size_px, const st
                   bool bold = false);
 
 // Text set to fit `room` px across: on one line at `size` if it fits, or a little smaller;
-// else wrapped at spaces into at most `max_lines` lines, smaller still if need be. Measured,
+// else wrapped at spaces (and between the characters of Chinese text) into at most `max_lines` lines, smaller still if need be. Measured,
 // not scaled: hinting rounds every glyph's advance, so a width does not shrink in proportion
 // to the size.
 struct FittedText {
