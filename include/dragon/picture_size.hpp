@@ -1,6 +1,7 @@
 // A picture's size as people write it, "1280x720": one parser for every place that reads one
 // (the CLI's --size for render, video and film, a storyboard's [film] size), so they all accept
-// and refuse the same texts with the same words.
+// and refuse the same texts with the same words. And a picture's size on a page: a width in
+// inches and a text size in points, laid out in pixels for PNG, SVG and PDF.
 #pragma once
 
 #include <string_view>
@@ -22,5 +23,45 @@ inline constexpr int kMaxPictureSide = 16384;
 // each side kMinPictureSide..max_side px. Callers whose output allows less (a video's codecs:
 // kMaxVideoSide) pass their own largest side.
 PictureSize parse_picture_size(std::string_view text, int max_side = kMaxPictureSide);
+
+// A picture for a page: its width there, the size of its text, and a PNG's pixels per inch.
+// The body text (labels, ticks, legends, scale bar) is font_pt; titles, captions and clocks a
+// fifth larger; lines and gaps follow the text (a 1 pt line at 8 pt text).
+struct PrintSize {
+    double width_in = 3.5;
+    double font_pt = 8.0;
+    double dpi = 300.0;  // PNG only: PDF and SVG are vector pages of width_in
+};
+inline constexpr double kMinPrintWidthIn = 1.0, kMaxPrintWidthIn = 40.0;  // a stamp to a poster
+inline constexpr double kMinFontPt = 4.0, kMaxFontPt = 36.0;              // readable to headline
+inline constexpr double kMinDpi = 72.0, kMaxDpi = 1200.0;                 // screen to photo print
+inline constexpr double kCmPerInch = 2.54;
+
+// The named sizes: "column" (3.5 in, 8 pt: one column of a two-column paper), "page" (7 in,
+// 9 pt: across both columns), "a4" (16 cm, 10.5 pt: the text width of an A4 page with 2.5 cm
+// margins, at the size of Chinese body text, wuhao), each at 300 dpi. Throws InputError (field
+// "print size") for any other name.
+PrintSize print_preset(std::string_view name);
+// Throws InputError naming the first value outside its range above (fields "print width",
+// "font size", "dpi").
+void check_print_size(const PrintSize& size);
+
+// Where a picture goes on a page: its size in points (PDF, SVG) and the resolution a PNG
+// states (its pHYs chunk, which LaTeX and Word read). Zero: 96 px to the inch, none stated.
+struct Page {
+    double width_pt = 0, height_pt = 0;
+    double dpi = 0;
+};
+
+// A picture of aspect height / width at a print size: drawn on width_px x height_px (96 px to
+// the inch on a vector page, size.dpi on a PNG), its body text text_px tall, on `page`.
+struct PrintLayout {
+    int width_px = 0, height_px = 0;
+    double text_px = 0;
+    Page page;
+};
+// Throws InputError (check_print_size's, or a sentence when the pixels would exceed max_side
+// or either side fall under kMinPictureSide).
+PrintLayout print_layout(const PrintSize& size, double aspect, bool raster, int max_side = kMaxPictureSide);
 
 }  // namespace dragon

@@ -74,11 +74,17 @@ struct Plot {
     double strip_px = 0;
     std::string strip_label;
     std::function<void(cairo_t* cr, const PlotArea& band, double u)> strip;
+    // The body text's size (ticks, labels, legend), px, for a plot at a print size: the title
+    // a fifth larger, lines and gaps following the text. 0: sizes follow the plot's box.
+    double text_px = 0.0;
 };
 
 // A qualitative colour for series i (colour-blind-safe order, Okabe-Ito), darker or lighter to
 // suit the theme's background.
 Rgba series_colour(const Theme& theme, int i);
+
+// The plot's unit of line widths and gaps in a box of w x h, px (the text's, at a print size).
+double plot_unit(const Plot& plot, double w, double h);
 
 // Draws the plot inside the box (x, y, w, h) of cr's current user space, background included;
 // returns where its data area is.

@@ -13,6 +13,7 @@
 #include "dragon/chain.hpp"
 #include "dragon/collision.hpp"
 #include "dragon/geometry.hpp"
+#include "dragon/picture_size.hpp"
 
 namespace dragon {
 
@@ -130,6 +131,8 @@ struct SceneOptions {
     // in the touching colour, each overlap's deepest corner marked, the deepest labelled with
     // its depth. Overlaps under kTouchingDepth are touching, not crossing, and left as drawn.
     bool mark_overlaps = true;
+    // Scene::text_px: the body text's size for a picture at a print size, px; 0 on screen.
+    double text_px = 0.0;
 };
 inline constexpr double kTouchingDepth = 1e-6;  // m
 
@@ -201,6 +204,10 @@ struct Scene {
     bool show_handles = true, show_scale_bar = true, show_colour_bar = true, show_text = true;
     std::string annotation;
     bool title_band = false;  // SceneOptions::title_band
+    // The size of the body text (labels, legend, scale bar, colour-bar numbers), px, for a
+    // picture at a print size: titles, captions and the clock are a fifth larger, and lines and
+    // gaps follow the text. 0: every size follows the picture's (kMinTextPx at least).
+    double text_px = 0.0;
 
     // Screen furniture (films mostly). Text is set at a size that follows the picture's height
     // but never below kMinTextPx, so it reads on a 400 x 300 GIF as on a 4K frame.
@@ -238,11 +245,16 @@ void draw(cairo_t* cr, const Scene& scene, int width_px, int height_px);
 void require_drawable(const Scene& scene, int width_px, int height_px);
 
 // Whole files, written all-or-nothing (AtomicFile). Throw InputError for a bad size or path or
-// a view require_drawable refuses, std::runtime_error if Cairo fails.
-void render_png(const Scene& scene, int width_px, int height_px, const std::string& path);
+// a view require_drawable refuses, std::runtime_error if Cairo fails. A PNG states the page's
+// resolution when it has one.
+void render_png(const Scene& scene, int width_px, int height_px, const std::string& path, const Page& page = {});
 // SVG in px as asked; PDF in points at 96 px to the inch (1600 px: 1200 pt), fonts embedded
-// and text selectable.
-void render_svg(const Scene& scene, int width_px, int height_px, const std::string& path);
-void render_pdf(const Scene& scene, int width_px, int height_px, const std::string& path);
+// and text selectable; with a page, both exactly the page's size in points.
+void render_svg(const Scene& scene, int width_px, int height_px, const std::string& path, const Page& page = {});
+void render_pdf(const Scene& scene, int width_px, int height_px, const std::string& path, const Page& page = {});
+// The scene at a print size (its width on the page, its text in points; aspect: height over
+// width), in the format of the path's extension (.png at size.dpi, .svg, .pdf). Throws as
+// print_layout and the writers above do.
+void render_print(Scene scene, const PrintSize& size, double aspect, const std::string& path);
 
 }  // namespace dragon

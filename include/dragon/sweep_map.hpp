@@ -57,6 +57,8 @@ struct SweepMap {
     std::vector<MapPanel> panels;
     std::string note;          // under each panel's title: what was held fixed
     std::string mark_label = "the contest's dragon";
+    // The body text's size, px, for a map at a print size (Plot::text_px); 0: on screen.
+    double text_px = 0.0;
 };
 
 // "bench width (m)", or "benches" without a unit.

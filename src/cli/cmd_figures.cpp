@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/print_flags.hpp"
 #include "cli/progress.hpp"
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
@@ -14,12 +15,14 @@ namespace dragon::cli {
 namespace {
 struct FiguresOptions {
     ScenarioFlags scenario;
+    PrintFlags print;
     std::string out = "renders";
     std::string theme = "light";
     std::string format = "png";
     double scale = 1.0;
     std::vector<std::string> only;
     bool list = false;
+    bool titles = false, no_titles = false;
     bool quiet = false;
 };
 }  // namespace
@@ -44,6 +47,15 @@ void register_figures(CLI::App& app, Registry& reg) {
                                          "names them)")
         ->delimiter(',')  // as solve --only q1,q2
         ->excludes(list);
+    opt->print.add_to(sub);
+    auto* titles = sub->add_flag("--titles", opt->titles, "Titles and notes on the figures at a print size too (on "
+                                                          "screen they are there by default)");
+    sub->add_flag("--no-titles", opt->no_titles, "No titles or notes on the figures (at a print size the default: a "
+                                                 "paper sets its own captions)")
+        ->excludes(titles);
+    // --list makes nothing: every option that shapes the figures would do nothing with it.
+    for (CLI::Option* o : sub->get_options())
+        if (o != list && o->get_name() != "--help" && !o->get_name().empty()) o->excludes(list);
     add_quiet_flag(sub, opt->quiet);
     reg["figures"] = [opt]() {
         if (opt->list) {
@@ -55,6 +67,12 @@ void register_figures(CLI::App& app, Registry& reg) {
         fo.scale = opt->scale;
         fo.only = opt->only;
         fo.format = opt->format;
+        fo.print = opt->print.resolve();
+        if (opt->titles) fo.titles = true;
+        if (opt->no_titles) fo.titles = false;
+        if (fo.print && opt->scale != 1.0)
+            throw InputError("--scale sizes the figures in pixels: leave it out with a print size (--print, "
+                             "--width-in, --width-cm, --font-pt, --dpi)");
         const std::int64_t total = static_cast<std::int64_t>(fo.only.empty() ? figure_list().size() : fo.only.size());
         std::int64_t done = 0;
         ProgressLine progress("figures", opt->quiet);

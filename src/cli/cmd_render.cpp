@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/print_flags.hpp"
 #include "cli/render_flags.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
@@ -19,6 +20,7 @@ namespace {
 struct RenderOptions {
     ScenarioFlags scenario;
     RenderFlags look;
+    PrintFlags print;
     std::optional<double> time;
     bool collision = false;
     std::string out;
@@ -48,6 +50,7 @@ void register_render(CLI::App& app, Registry& reg) {
     when->excludes(hit);
     sub->add_option("-o,--out", opt->out, "Output file: .png, .svg or .pdf (vector, fonts embedded, for papers)")->required();
     opt->look.add_to(sub);
+    opt->print.add_to(sub);
     add_quiet_flag(sub, opt->quiet);
     reg["render"] = [opt]() {
         const std::string ext = extension_of(opt->out);
@@ -80,13 +83,24 @@ void register_render(CLI::App& app, Registry& reg) {
                                             "{}, t = {:.3f} s)", frame.time, s.coil_pitch(), c->bench_a, c->bench_b,
                                             c->time);
         }
+        const std::optional<PrintSize> print = opt->print.resolve();
+        auto [w, h] = opt->look.size();
+        Page page;
+        if (print) {  // --size gives the shape; the print size, the pixels and the text
+            const PrintLayout layout = print_layout(*print, static_cast<double>(h) / w, ext == ".png");
+            so.text_px = layout.text_px;
+            w = layout.width_px, h = layout.height_px, page = layout.page;
+        }
         const Scene scene = make_scene(sim, frame, so);
-        const auto [w, h] = opt->look.size();
         if (opt->look.zoom()) require_zoom_resolves(scene, w, h, *opt->look.zoom());
-        if (ext == ".png") render_png(scene, w, h, opt->out);
-        else if (ext == ".svg") render_svg(scene, w, h, opt->out);
-        else render_pdf(scene, w, h, opt->out);
-        status(opt->quiet, "wrote {} ({} x {} px, t = {:.6f} s)", opt->out, w, h, frame.time);
+        if (ext == ".png") render_png(scene, w, h, opt->out, page);
+        else if (ext == ".svg") render_svg(scene, w, h, opt->out, page);
+        else render_pdf(scene, w, h, opt->out, page);
+        if (print)
+            status(opt->quiet, "wrote {} ({:g} x {:g} in, text {:g} pt{}, t = {:.6f} s)", opt->out, print->width_in,
+                   print->width_in * h / w, print->font_pt, ext == ".png" ? fmt::format(", {} x {} px at {:g} dpi", w, h, print->dpi) : "",
+                   frame.time);
+        else status(opt->quiet, "wrote {} ({} x {} px, t = {:.6f} s)", opt->out, w, h, frame.time);
         return 0;
     };
 }

@@ -46,6 +46,10 @@ const std::map<std::string, FlagWords>& flag_of_field() {
         {"shard", {"--shard"}},
         // Pictures and films.
         {"picture size", {"--size"}},
+        {"print size", {"--print"}},
+        {"print width", {"--width-in"}},
+        {"font size", {"--font-pt"}},
+        {"dpi", {"--dpi"}},
         {"map file", {"--plot"}},
         {"frame rate", {"--fps"}},
         {"speedup", {"--speedup"}},

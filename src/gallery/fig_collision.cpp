@@ -27,6 +27,9 @@ double last_moment(const Context& c, const Simulation& sim) {
 // one or two neighbours.
 int others(int bench, int n) { return n - 1 - (bench > 1) - (bench < n); }
 
+// The height on the page of a picture w x h px that is as wide as the print size asks, in.
+double opt_height_in(const PrintSize& print, int w, int h) { return print.width_in * h / w; }
+
 }  // namespace
 
 void broad_phase(const Context& c, const std::string& path) {
@@ -77,7 +80,7 @@ void broad_phase(const Context& c, const std::string& path) {
     s.labels.push_back(label(r.centre + Vec2{0, half_diagonal(r) + margin},
                              fmt::format("bench {}'s bounding circle + margin", focus), th.head, 14, 6, -8));
     s.labels.push_back(label({x1, r.centre.y() - 0.42 * extent}, "sweep band on x", th.text, 14, 6, 0));
-    write_scene(c, s, c.px(900), c.px(900), path);
+    write_scene(c, s, 900, 900, path);
 }
 
 void first_contact_zoom(const Context& c, const std::string& path) {
@@ -88,14 +91,13 @@ void first_contact_zoom(const Context& c, const std::string& path) {
     // Without a contact, the closest pair at the last moment, said to be apart.
     const Clearance closest = clearance(f);
     const int bench_a = hit ? hit->bench_a : closest.bench_a, bench_b = hit ? hit->bench_b : closest.bench_b;
-    const int w = c.px(1000), h = c.px(1000);
     if (bench_a == 0) {  // fewer than three benches: no pair that could touch
         SceneOptions so;
         so.theme = th;
         so.title_band = true;  // a title hides nothing
         so.annotation = fmt::format("No contact: a chain of {} {} no two that do not share a handle",
                                     f.benches.size(), f.benches.size() == 1 ? "bench has" : "benches has");
-        write_scene(c, make_scene(sim, f, so), w, h, path);
+        write_scene(c, make_scene(sim, f, so), 1000, 1000, path);
         return;
     }
     const Rect& a = f.benches[bench_a - 1];
@@ -150,7 +152,7 @@ void first_contact_zoom(const Context& c, const std::string& path) {
             l.benches = i == 0 ? 1 : 2;
             s.labels.push_back(l);
         }
-    write_scene(c, s, w, h, path);
+    write_scene(c, s, 1000, 1000, path);
 }
 
 // Panel pitches a round step apart around `centre`, none below `lo`: three below it and three
@@ -223,33 +225,54 @@ void pitch_states(const Context& c, const std::string& path) {
     c.tell(title);
     for (const auto& caption : captions) c.tell(caption);
 
-    const int pw = c.px(440), ph = c.px(440), gap = 6, caption_h = c.px(24);
-    const int cols = 3, rows = 2;
-    const int w = cols * pw + (cols + 1) * gap;
-    // The title wraps rather than run off the picture: measured on a scratch surface first,
-    // because the picture's height depends on it.
-    const double title_size = 18.0 * c.opt.scale;
-    render::FittedText fitted;
+    // Three panels a row; two at a print size, where a third of a column is too narrow for a
+    // caption at the text size asked. There the captions wrap at that size instead of shrinking.
+    const bool print = c.print();
+    const double text = print ? c.size(1000, 1000).text_px : 0.0;
+    const int cols = print ? 2 : 3, rows = 6 / cols;
+    const int gap = print ? std::max(2, static_cast<int>(std::lround(0.3 * text))) : 6;
+    const int w = print ? c.size(1000, 1000).w : cols * c.px(440) + (cols + 1) * gap;
+    const int pw = (w - (cols + 1) * gap) / cols, ph = pw;
+    const double title_size = print ? 1.2 * text : 18.0 * c.opt.scale;
+    const double inner = print ? 0.4 * text : 8.0;  // the title's indent beyond the gap
+    // The title and captions wrap rather than run off the picture: measured on a scratch
+    // surface first, because the picture's height depends on them.
+    render::FittedText fitted;  // no lines: no title
+    int caption_h = c.px(24);
     {
         cairo::Surface scratch(cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1));
         cairo::Context m = cairo::make_context(scratch.get());
-        fitted = render::fit_text(m.get(), th.font, title_size, title, w - 2.0 * (gap + 8), true);
+        if (c.titles()) fitted = render::fit_text(m.get(), th.font, title_size, title, w - 2.0 * (gap + inner), true, 2, print);
+        if (print) {
+            std::size_t lines = 1;
+            for (const auto& caption : captions)
+                lines = std::max(lines, render::fit_text(m.get(), th.font, text, caption, pw - 0.6 * text, false, 1, true)
+                                            .lines.size());
+            caption_h = static_cast<int>(std::ceil((1.3 * static_cast<double>(lines) + 0.5) * text));
+        }
     }
+    for (Scene& p : panels) p.text_px = text;
     const double line_h = 1.3 * fitted.size;
-    const int title_h = c.px(40) + static_cast<int>(std::ceil(line_h * (static_cast<double>(fitted.lines.size()) - 1)));
+    const int title_top = !c.titles() ? 0 : print ? static_cast<int>(std::ceil(2.2 * title_size)) : c.px(40);
+    const int title_h = fitted.lines.empty() ? 0 : title_top + static_cast<int>(std::ceil(line_h * (static_cast<double>(fitted.lines.size()) - 1)));
     const int h = rows * (ph + caption_h) + (rows + 1) * gap + title_h;
+    Page page;
+    if (print) {
+        const double height_in = opt_height_in(*c.opt.print, w, h);
+        page = {c.opt.print->width_in * 72.0, height_in * 72.0, c.opt.format == "png" ? c.opt.print->dpi : 0.0};
+    }
     write_picture(w, h, path, 64, [&](cairo_t* cr) {
         cairo_set_source_rgb(cr, th.background.r, th.background.g, th.background.b);
         cairo_paint(cr);
         cairo_save(cr);
         cairo_translate(cr, 0, title_h);
-        draw_panels(cr, panels, captions, cols, pw, ph, caption_h, th, gap);
+        draw_panels(cr, panels, captions, cols, pw, ph, caption_h, th, gap, text);
         cairo_restore(cr);
         cairo_set_source_rgb(cr, th.text.r, th.text.g, th.text.b);
         for (std::size_t i = 0; i < fitted.lines.size(); ++i)
-            render::text(cr, th.font, fitted.size, gap + 8, c.px(40) * 0.7 + line_h * static_cast<double>(i),
+            render::text(cr, th.font, fitted.size, gap + inner, title_top * 0.7 + line_h * static_cast<double>(i),
                          fitted.lines[i], 0.0, 0.0, true);
-    });
+    }, page);
 }
 
 void clearance_over_time(const Context& c, const std::string& path) {
@@ -303,7 +326,7 @@ void clearance_over_time(const Context& c, const std::string& path) {
     for (Vec2 q : s.points) top = std::max(top, q.y());
     p.y_min = -0.1 * (top > 0 ? top : 0.2);
     if (s.points.empty()) p.y_max = 1.0;
-    write_plot(c, p, c.px(1000), c.px(600), path);
+    write_plot(c, p, 1000, 600, path);
 }
 
 }  // namespace dragon::fig

@@ -82,16 +82,19 @@ void link_geometry(const Context& c, const std::string& path) {
         const bool chosen = distance(r, h1) < 1e-6;
         s.markers.push_back({r, chosen ? accent : soft, chosen ? 6.0 : 5.0, true});
     }
-    s.labels.push_back(label(h1, "handle 1: the nearest root behind", accent, 13, 10, 22));
+    // At a print size the labels are shorter: the paper's caption says the rest.
+    const bool brief = c.print();
+    s.labels.push_back(label(h1, brief ? "handle 1" : "handle 1: the nearest root behind", accent, 13, 10, 22));
     const auto roots = chord_roots(sim.path(), h0, d1, s_head - 80.0, s_head - 0.5);
-    if (roots.size() > 1) s.labels.push_back(label(roots[roots.size() - 2], "other roots of the chord equation", soft, 12, 10, 4));
+    if (roots.size() > 1) s.labels.push_back(label(roots[roots.size() - 2], brief ? "other roots" : "other roots of the chord equation", soft, 12, 10, 4));
 
     // Chords, with their lengths.
     Polyline chord1{{h0, h1}, ink, 1.4, true}, chord2{{h1, h2}, ink, 1.4, true};
     s.polylines.push_back(chord1);
     s.polylines.push_back(chord2);
-    s.labels.push_back(label(0.5 * (h0 + h1), fmt::format("d\u2081 = {:.2f} m (head: {:.2f} \u2212 2\u00d7{:.3f})", d1,
-                                                           spec.head_length, spec.hole_offset), ink, 13, 70, 30));
+    s.labels.push_back(label(0.5 * (h0 + h1), brief ? fmt::format("d\u2081 = {:.2f} m", d1)
+                                                    : fmt::format("d\u2081 = {:.2f} m (head: {:.2f} \u2212 2\u00d7{:.3f})", d1,
+                                                                  spec.head_length, spec.hole_offset), ink, 13, 70, 30));
     s.labels.push_back(label(0.5 * (h1 + h2), fmt::format("d\u2082 = {:.2f} m", d2), ink, 13, 10, 6));
 
     // Velocities: v_i T_i at each end of the head link, and the link direction u. Rigidity makes
@@ -101,14 +104,19 @@ void link_geometry(const Context& c, const std::string& path) {
     const Handle& b = f.handles[1];
     s.polylines.push_back(arrow(h0, h0 + k * a.speed * a.tangent, th.tail));
     s.polylines.push_back(arrow(h1, h1 + k * b.speed * b.tangent, th.tail));
-    s.polylines.push_back(arrow(h1 - 0.2 * u, h1 + 0.9 * u, th.highlight, 1.6));
+    // u beside the link, on the side away from the centre, so that it crowds neither the head
+    // bench nor v1's arrow at handle 1.
+    Vec2 side = perp(u);
+    if (dot(side, 0.5 * (h0 + h1)) < 0) side = -side;
+    const Vec2 u_from = 0.5 * (h0 + h1) + 0.75 * side - 0.45 * u;
+    s.polylines.push_back(arrow(u_from, u_from + 0.9 * u, th.highlight, 1.6));
     s.labels.push_back(label(h0 + k * a.speed * a.tangent, fmt::format("v\u2080 = {:.6f} m/s", a.speed), th.tail, 13, 6, 14));
     s.labels.push_back(label(h1 + k * b.speed * b.tangent, fmt::format("v\u2081 = {:.6f} m/s", b.speed), th.tail, 13, 6, 14));
-    s.labels.push_back(label(h1 + 0.9 * u, "u", th.highlight, 14, 4, -4));
-    s.labels.push_back(label(h0, "handle 0 (head front)", ink, 13, 10, -10));
+    s.labels.push_back(label(u_from + 0.9 * u, "u", th.highlight, 14, 4, -4));
+    s.labels.push_back(label(h0, brief ? "handle 0" : "handle 0 (head front)", ink, 13, 10, -10));
     s.labels.push_back(label(h2, "handle 2", ink, 13, 10, -8));
 
-    write_scene(c, s, c.px(1000), c.px(1000), path);
+    write_scene(c, s, 1000, 1000, path);
 }
 
 }  // namespace dragon::fig

@@ -11,6 +11,11 @@
 
 namespace dragon::fig {
 
+namespace {
+// A colour two thirds as bright: a guide's shade made to read as a line of a plot.
+Rgba darker(Rgba c) { return {0.66 * c.r, 0.66 * c.g, 0.66 * c.b, c.a}; }
+}  // namespace
+
 void speeds_by_handle(const Context& c, const std::string& path) {
     const Simulation sim(c.base);
     Plot p;
@@ -35,7 +40,7 @@ void speeds_by_handle(const Context& c, const std::string& path) {
     }
     p.x_min = 0;
     p.x_max = static_cast<double>(c.base.bench.bench_count);
-    write_plot(c, p, c.px(1000), c.px(600), path);
+    write_plot(c, p, 1000, 600, path);
 }
 
 void s_curve_geometry(const Context& c, const std::string& path) {
@@ -46,7 +51,8 @@ void s_curve_geometry(const Context& c, const std::string& path) {
     const Theme& th = c.opt.theme;
     Plot p;
     p.theme = th;
-    p.title = fmt::format("The turnaround S-curve: two tangent arcs, r\u2081 = {:g} r\u2082", sc.path.arc_ratio);
+    p.title = fmt::format("The turnaround S-curve: two tangent arcs, r\u2081 = {:g} r\u2082, entering tangent to the "
+                          "coil-in spiral at A and leaving tangent to the coil-out one at B", sc.path.arc_ratio);
     p.note = fmt::format("Pitch {:g} m, turning space radius {:g} m: r\u2081 = {:.6f} m, r\u2082 = {:.6f} m, length {:.6f} m",
                          d.pitch, sc.path.turn_radius, d.r1, d.r2, d.length);
     p.x_label = "x (m)";
@@ -68,8 +74,12 @@ void s_curve_geometry(const Context& c, const std::string& path) {
     p.series.push_back(space);
     // About one turn of each spiral either side of the turning space.
     const double turn = 2 * std::numbers::pi * (R + 0.5 * d.pitch);
-    p.series.push_back({"coil-in spiral", sample(-turn, 0, 400), th.guide, 1.6});
-    p.series.push_back({"coil-out spiral", sample(d.length, d.length + turn, 400), th.guide_out, 1.6});
+    // The two spirals told apart by more than a shade of grey: the coil-out one dashed and both
+    // drawn darker than the guides of a scene.
+    p.series.push_back({"coil-in spiral", sample(-turn, 0, 400), darker(th.guide), 1.6});
+    PlotSeries out{"coil-out spiral", sample(d.length, d.length + turn, 400), darker(th.guide_out), 1.6};
+    out.dashed = true;
+    p.series.push_back(out);
     p.series.push_back({fmt::format("arc 1, r\u2081 = {:.3f} m", d.r1), sample(0, d.length1, 200), th.s_curve, 3.0});
     p.series.push_back({fmt::format("arc 2, r\u2082 = {:.3f} m", d.r2), sample(d.length1, d.length, 200), th.head, 3.0});
     // Radii to the tangent points: each centre lies on the normal at both ends of its arc,
@@ -82,14 +92,14 @@ void s_curve_geometry(const Context& c, const std::string& path) {
         PlotLabel l{at, std::move(text), col, dx, dy, 13, true, align};
         p.labels.push_back(l);
     };
-    point(d.entry, "A: enters, tangent to the coil-in spiral", th.text, 8, -8, 0.0);
-    point(d.exit, "B = \u2212A: leaves, tangent to the coil-out spiral", th.text, -8, 18, 1.0);
-    point(d.joint, "joint: the arcs are tangent", th.text, -10, 20, 1.0);
+    point(d.entry, "A: entry", th.text, 8, -8, 0.0);
+    point(d.exit, "B = \u2212A: exit", th.text, -8, -10, 1.0);
+    point(d.joint, "joint", th.text, 8, 18, 0.0);
     point(d.c1, "C\u2081", th.s_curve, 6, -6);
     point(d.c2, "C\u2082", th.head, 6, -6);
     point({0, 0}, "O", soft, 6, 16);
     p.x_min = -R - 1.2, p.x_max = R + 1.2, p.y_min = -R - 1.2, p.y_max = R + 1.2;
-    write_plot(c, p, c.px(900), c.px(860), path);
+    write_plot(c, p, 900, 860, path);
 }
 
 void speed_ratio_on_turnaround(const Context& c, const std::string& path) {
@@ -101,7 +111,7 @@ void speed_ratio_on_turnaround(const Context& c, const std::string& path) {
     p.theme = c.opt.theme;
     p.title = "Largest handle speed over the head's, on the turnaround path";
     p.x_label = "time (s); the head enters the S-curve at 0";
-    p.y_label = "max handle speed / head speed";
+    p.y_label = c.print() ? "speed ratio" : "max handle speed / head speed";
     p.legend = Plot::Legend::none;
     PlotSeries s{"", {}, series_colour(p.theme, 0), 1.6};
     // Q4's window, 100 m of head travel either side of the turn (100 s at 1 m/s), 1600 samples.
@@ -120,12 +130,15 @@ void speed_ratio_on_turnaround(const Context& c, const std::string& path) {
     const std::string who = run                    ? fmt::format("handles {}-{}", q5.tied.front(), q5.tied.back())
                             : q5.tied.size() > 1 ? fmt::format("handles {}", fmt::join(q5.tied, ", "))
                                                  : fmt::format("handle {}", q5.handle);
-    p.labels.push_back({{q5.time, q5.ratio}, fmt::format("max {:.6f} at t = {:.6f} s", q5.ratio, q5.time),
-                        p.theme.text, 10, 4, 13, true});
-    p.y_max = 1.0 + 1.12 * (q5.ratio - 1.0);
+    // Left of the peak, below the S-curve's label at the top.
+    p.labels.push_back({{q5.time, q5.ratio},
+                        c.print() ? fmt::format("max {:.6f}", q5.ratio)
+                                  : fmt::format("max {:.6f} at t = {:.6f} s", q5.ratio, q5.time),
+                        p.theme.text, -8, 4, 13, true, 1.0});
+    p.y_max = 1.0 + 1.35 * (q5.ratio - 1.0);
     p.note = fmt::format("Sampled every {:g} s; the maximum refined ({}). Head speed limit: 2 / {:.6f} = {:.6f} m/s.",
                          (span.to - span.from) / 1600, who, q5.ratio, q5.max_head_speed);
-    write_plot(c, p, c.px(1000), c.px(600), path);
+    write_plot(c, p, 1000, 600, path);
 }
 
 }  // namespace dragon::fig

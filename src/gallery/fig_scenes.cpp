@@ -31,7 +31,7 @@ void dragon_at_300s(const Context& c, const std::string& path) {
     s.labels.push_back(h);
     s.labels.push_back(tl);
     // Coloured by speed: a full palette keeps the colour map smooth.
-    write_scene(c, s, c.px(1100), c.px(1000), path, 256);
+    write_scene(c, s, 1100, 1000, path, 256);
 }
 
 void turnaround_scene(const Context& c, const std::string& path) {
@@ -52,7 +52,7 @@ void turnaround_scene(const Context& c, const std::string& path) {
     so.annotation = fmt::format("Turnaround at t = {:.1f} s, 1 s after the head leaves the S-curve (orange), pitch {:g} m\n"
                                 "The head bench pivots: handles behind it run up to {:.3f} m/s while the head keeps {:g} m/s",
                                 t, sc.path.turn_pitch, fastest, sc.head_speed);
-    write_scene(c, make_scene(sim, f, so), c.px(1000), c.px(1000), path, 256);
+    write_scene(c, make_scene(sim, f, so), 1000, 1000, path, 256);
 }
 
 }  // namespace dragon::fig

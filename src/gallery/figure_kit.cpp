@@ -61,7 +61,7 @@ Rgba with_alpha(Rgba c, double a) {
 }
 
 void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, const std::vector<std::string>& captions, int cols,
-                 int pw, int ph, int caption_h, const Theme& theme, int gap) {
+                 int pw, int ph, int caption_h, const Theme& theme, int gap, double caption_px) {
     cairo_set_source_rgb(cr, theme.grid.r, theme.grid.g, theme.grid.b);
     cairo_paint(cr);
     for (std::size_t i = 0; i < panels.size(); ++i) {
@@ -76,9 +76,17 @@ void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, const std::vecto
             // Captions outside the picture, at a size that reads whatever the panel's size, on
             // one line: smaller rather than cut at the panel's edge.
             cairo_set_source_rgb(cr, theme.text.r, theme.text.g, theme.text.b);
-            const render::FittedText t =
-                render::fit_text(cr, theme.font, 0.6 * caption_h, captions[i], pw - 0.6 * caption_h, false, 1);
-            render::text(cr, theme.font, t.size, 0.3 * caption_h, 0.72 * caption_h, captions[i]);
+            if (caption_px > 0) {
+                const render::FittedText t =
+                    render::fit_text(cr, theme.font, caption_px, captions[i], pw - 0.6 * caption_px, false, 1, true);
+                for (std::size_t k = 0; k < t.lines.size(); ++k)
+                    render::text(cr, theme.font, caption_px, 0.3 * caption_px,
+                                 (1.05 + 1.3 * static_cast<double>(k)) * caption_px, t.lines[k]);
+            } else {
+                const render::FittedText t =
+                    render::fit_text(cr, theme.font, 0.6 * caption_h, captions[i], pw - 0.6 * caption_h, false, 1);
+                render::text(cr, theme.font, t.size, 0.3 * caption_h, 0.72 * caption_h, captions[i]);
+            }
         }
         cairo_translate(cr, 0, caption_h);
         cairo_rectangle(cr, 0, 0, pw, ph);
@@ -88,10 +96,17 @@ void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, const std::vecto
     }
 }
 
-void write_picture(int w, int h, const std::string& path, int colours, const std::function<void(cairo_t*)>& paint) {
+Context::Size Context::size(double gallery_w, double gallery_h) const {
+    if (!opt.print) return {px(gallery_w), px(gallery_h), 0.0, {}};
+    const PrintLayout l = print_layout(*opt.print, gallery_h / gallery_w, opt.format == "png");
+    return {l.width_px, l.height_px, l.text_px, l.page};
+}
+
+void write_picture(int w, int h, const std::string& path, int colours, const std::function<void(cairo_t*)>& paint,
+                   const Page& page) {
     const render::PictureFormat format = render::picture_format(path);
     if (format != render::PictureFormat::png) {
-        render::write_vector(path, format, w, h, paint);
+        render::write_vector(path, format, w, h, paint, page);
         return;
     }
     // The gallery is kept small (it lives in the repository): palette PNGs.
@@ -100,7 +115,7 @@ void write_picture(int w, int h, const std::string& path, int colours, const std
         cairo::Context cr = cairo::make_context(surface.get());
         paint(cr.get());
     }
-    render::write_png8(surface.get(), path, colours);
+    render::write_png8(surface.get(), path, colours, page.dpi);
 }
 
 void Context::tell(const std::string& text) const {
@@ -120,14 +135,21 @@ void Context::tell(const Plot& p) const {
     for (const PlotLabel& l : p.labels) tell(l.text);
 }
 
-void write_scene(const Context& c, const Scene& scene, int w, int h, const std::string& path, int colours) {
+void write_scene(const Context& c, Scene scene, double gallery_w, double gallery_h, const std::string& path,
+                 int colours) {
     c.tell(scene);
-    write_picture(w, h, path, colours, [&](cairo_t* cr) { draw(cr, scene, w, h); });
+    if (!c.titles()) scene.annotation.clear();
+    const Context::Size z = c.size(gallery_w, gallery_h);
+    scene.text_px = z.text_px;
+    write_picture(z.w, z.h, path, colours, [&](cairo_t* cr) { draw(cr, scene, z.w, z.h); }, z.page);
 }
 
-void write_plot(const Context& c, const Plot& plot, int w, int h, const std::string& path) {
+void write_plot(const Context& c, Plot plot, double gallery_w, double gallery_h, const std::string& path) {
     c.tell(plot);
-    write_picture(w, h, path, 64, [&](cairo_t* cr) { draw_plot(cr, plot, 0, 0, w, h); });
+    if (!c.titles()) plot.title.clear(), plot.note.clear();
+    const Context::Size z = c.size(gallery_w, gallery_h);
+    plot.text_px = z.text_px;
+    write_picture(z.w, z.h, path, 64, [&](cairo_t* cr) { draw_plot(cr, plot, 0, 0, z.w, z.h); }, z.page);
 }
 
 }  // namespace dragon::fig

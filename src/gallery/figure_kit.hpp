@@ -22,6 +22,16 @@ struct Context {
     std::shared_ptr<Answers> answers;  // the scenario's answers, shared by the run's figures
     std::string figure;                // the file stem of the figure being made
     int px(double gallery_px) const { return static_cast<int>(gallery_px * opt.scale + 0.5) & ~1; }
+    // A figure the gallery draws gallery_w x gallery_h px at scale 1: its pixels, its text size
+    // (0 on screen) and its page, at the scale or at the print size asked.
+    struct Size {
+        int w = 0, h = 0;
+        double text_px = 0;
+        Page page;
+    };
+    Size size(double gallery_w, double gallery_h) const;
+    bool print() const { return opt.print.has_value(); }
+    bool titles() const { return opt.titles.value_or(!opt.print); }
     // Remarks about the contest's paper only for the contest's own scenario.
     bool contest() const { return is_contest_default(base); }
     // Hands every text a figure puts on its picture to opt.on_text (a no-op without one).
@@ -41,15 +51,20 @@ std::string seconds(double t);
 
 // Several scenes side by side: cols x rows panels of equal size, each drawn by draw() under a
 // caption strip caption_h pixels tall.
+// caption_px > 0 (a print size): captions at that size, wrapped into as many lines as the strip
+// holds; 0: on one line, sized from the strip.
 void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, const std::vector<std::string>& captions, int cols,
-                 int panel_w, int panel_h, int caption_h, const Theme& theme, int gap_px);
+                 int panel_w, int panel_h, int caption_h, const Theme& theme, int gap_px, double caption_px = 0);
 // A picture of w x h px painted by `paint`, in the figures' format by the path's extension: a
 // palette PNG (64 colours suit flat drawings; speed-coloured pictures need 256 so the colour
 // map stays smooth), an SVG or a PDF.
-void write_picture(int w, int h, const std::string& path, int colours, const std::function<void(cairo_t*)>& paint);
-// One scene or one plot as the whole picture, its texts told first.
-void write_scene(const Context& c, const Scene& scene, int w, int h, const std::string& path, int colours = 64);
-void write_plot(const Context& c, const Plot& plot, int w, int h, const std::string& path);
+void write_picture(int w, int h, const std::string& path, int colours, const std::function<void(cairo_t*)>& paint,
+                   const Page& page = {});
+// One scene or one plot as the whole picture, its texts told first, drawn gallery_w x
+// gallery_h px at scale 1 (Context::size: scaled, or at the print size).
+void write_scene(const Context& c, Scene scene, double gallery_w, double gallery_h, const std::string& path,
+                 int colours = 64);
+void write_plot(const Context& c, Plot plot, double gallery_w, double gallery_h, const std::string& path);
 
 // The figures (one file each).
 void link_geometry(const Context& c, const std::string& path);

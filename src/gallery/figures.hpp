@@ -3,9 +3,11 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "dragon/picture_size.hpp"
 #include "dragon/render.hpp"
 #include "dragon/scenario.hpp"
 
@@ -18,6 +20,12 @@ struct FigureOptions {
     // "png" (palette PNGs, small for a repository), "svg" or "pdf" (for papers: vector shapes,
     // fonts embedded, text selectable).
     std::string format = "png";
+    // A print size (a width on the page, text in points): every figure that wide, its text at
+    // that size, PNGs at its dpi; `scale` is then unused. Unset: the gallery's pixel sizes.
+    std::optional<PrintSize> print;
+    // Titles and notes on the figures. Unset: on screen yes, at a print size no (a paper sets
+    // its own caption under a figure; the words stay in the figure's data file, see `data`).
+    std::optional<bool> titles;
     // Hears every text each figure puts on its picture (titles, notes, captions, labels, axis
     // names), with the figure's name: what the figures say, without reading their pixels.
     std::function<void(const std::string& figure, const std::string& text)> on_text;

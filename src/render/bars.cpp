@@ -18,7 +18,7 @@ Box draw_scale_bar(cairo_t* cr, const Scene& s, const Units& un, double px_per_m
     const double u = un.u;
     const double metres = nice_floor(0.2 * s.view_width);
     const double len = metres * px_per_m;
-    const double x0 = 16 * u, y0 = un.h - 16 * u, tick = 5 * u, size = 13 * un.ut;
+    const double x0 = 16 * u, y0 = un.h - 16 * u, tick = 5 * u, size = un.text(13);
     const double label_w = s.show_text ? text_width(cr, s.theme.font, size, scale_label(metres)) : 0.0;
     const double box_w = std::max(len, label_w) + 12 * u;
     const double box_h = s.show_text ? 18 * u + size + 4 * un.ut : 18 * u;
@@ -65,9 +65,9 @@ void draw_colour_bar(cairo_t* cr, const Scene& s, const Units& un, double room, 
         cairo_move_to(cr, x + bar_w, y);
         cairo_line_to(cr, x + bar_w + 4 * u, y);
         cairo_stroke(cr);
-        text(cr, s.theme.font, 11 * ut, x + bar_w + 6 * u, y, format_tick(t, ticks.decimals), 0.0, 0.5);
+        text(cr, s.theme.font, un.text(11), x + bar_w + 6 * u, y, format_tick(t, ticks.decimals), 0.0, 0.5);
     }
-    text(cr, s.theme.font, 12 * ut, un.w - 0.5 * room - 3 * ut, y0 - 14 * ut, "speed (m/s)", 0.5);
+    text(cr, s.theme.font, un.text(12), un.w - 0.5 * room - 3 * ut, y0 - 14 * ut, "speed (m/s)", 0.5);
 }
 
 Box draw_inset(cairo_t* cr, const Scene& s, const Units& un, double right, const Vec2& lo, const Vec2& hi) {

@@ -225,7 +225,7 @@ void draw_handles(cairo_t* cr, const Scene& s, const View& v, double u) {
 }  // namespace
 
 void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
-    const render::Units un = render::Units::of(width_px, height_px);
+    const render::Units un = render::Units::of(width_px, height_px, s.text_px);
     const double w = un.w, h = un.h, u = un.u;
     cairo_save(cr);
     cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);

@@ -10,11 +10,12 @@
 
 namespace dragon::render {
 
-Units Units::of(double w, double h) {
+Units Units::of(double w, double h, double body_px) {
+    if (body_px > 0) return {w, h, body_px / 12.0, body_px / 12.0, body_px};
     // Sizes are given for an 800 px picture and scale with the shorter side, so a 4K frame
     // looks like a large 800 px one rather than a thin sketch.
     const double u = std::max(0.25, std::min(w, h) / 800.0);
-    return {w, h, u, std::max(u, kMinTextPx / 13.0)};
+    return {w, h, u, std::max(u, kMinTextPx / 13.0), 0.0};
 }
 
 void backdrop(cairo_t* cr, const Theme& theme, double x, double y, double w, double h, double opacity) {
@@ -35,7 +36,7 @@ std::vector<FittedText> annotation_blocks(cairo_t* cr, const Scene& s, const Uni
     for (std::size_t at = 0;;) {
         const std::size_t nl = s.annotation.find('\n', at);
         const std::string line = s.annotation.substr(at, nl == std::string::npos ? std::string::npos : nl - at);
-        blocks.push_back(fit_text(cr, s.theme.font, (blocks.empty() ? 15 : 13) * un.ut, line, room));
+        blocks.push_back(fit_text(cr, s.theme.font, un.text(blocks.empty() ? 15 : 13), line, room, false, 2, un.body_px > 0));
         if (nl == std::string::npos) break;
         at = nl + 1;
     }
@@ -151,7 +152,7 @@ void draw_swatch(cairo_t* cr, const Scene& s, const Entry& e, double x, double y
 Box draw_legend(cairo_t* cr, const Scene& s, const Units& un, double top) {
     if (!s.legend || !s.show_text) return {{0, top}, {0, top}};
     const std::vector<Entry> entries = legend_entries(s);
-    const double size = 12 * un.ut, row = 1.5 * size, sw = 1.6 * size, sh = 0.6 * size, pad = 8 * un.ut;
+    const double size = un.text(12), row = 1.5 * size, sw = 1.6 * size, sh = 0.6 * size, pad = 8 * un.ut;
     double tw = 0;
     for (const auto& e : entries) tw = std::max(tw, text_width(cr, s.theme.font, size, e.label));
     const double x = 8 * un.u, y = top + 6 * un.u;
@@ -172,7 +173,7 @@ Box draw_legend(cairo_t* cr, const Scene& s, const Units& un, double top) {
 
 Box draw_clock(cairo_t* cr, const Scene& s, const Units& un, double right) {
     if (!s.show_text || (s.clock.empty() && s.rate.empty())) return {{right, 0}, {right, 0}};
-    const double big = 17 * un.ut, small = 13 * un.ut, pad = 8 * un.ut;
+    const double big = un.text(17), small = un.text(13), pad = 8 * un.ut;
     // The clock's width is that of its widest reading ("t = 888.888 s"): digits of DejaVu Sans
     // share one advance, so the box keeps still while the time runs.
     std::string widest = s.clock;
@@ -191,7 +192,7 @@ Box draw_clock(cairo_t* cr, const Scene& s, const Units& un, double right) {
 
 void draw_captions(cairo_t* cr, const Scene& s, const Units& un, double left, double right, double lift) {
     if (!s.show_text || s.captions.empty()) return;
-    const double size = 16 * un.ut, pad = 8 * un.ut, margin = 10 * un.u;
+    const double size = un.text(16), pad = 8 * un.ut, margin = 10 * un.u;
     // Centred on the picture between the bottom corners' furniture, or above it when that
     // leaves too little room for a sentence.
     const double half = std::min(0.5 * un.w - left, right - 0.5 * un.w) - margin;
@@ -200,7 +201,7 @@ void draw_captions(cairo_t* cr, const Scene& s, const Units& un, double left, do
     double bottom = between ? un.h - margin : lift - margin;
     for (auto it = s.captions.rbegin(); it != s.captions.rend(); ++it) {
         if (it->opacity <= 0 || it->text.empty()) continue;
-        const FittedText t = fit_text(cr, s.theme.font, size, it->text, room, true);
+        const FittedText t = fit_text(cr, s.theme.font, size, it->text, room, true, 2, un.body_px > 0);
         double tw = 0;
         for (const auto& line : t.lines) tw = std::max(tw, text_width(cr, s.theme.font, t.size, line, true));
         const double line_h = 1.3 * t.size;

@@ -7,14 +7,20 @@
 
 #include "dragon/render.hpp"
 #include "render/clip.hpp"
+#include "render/paint.hpp"
 
 namespace dragon::render {
 
-// The sizes of one picture: `u` scales lines and gaps (1 at 800 px on the shorter side), `ut`
-// scales text the same way but never below kMinTextPx for a 13 px label.
+// The sizes of one picture. On screen `u` scales lines and gaps (1 at 800 px on the shorter
+// side) and `ut` scales text the same way but never below kMinTextPx for a 13 px label. At a
+// print size (body_px > 0: Scene::text_px) the text is the size asked whatever the picture's
+// size, and lines and gaps follow the text: u = ut = body_px / 12.
 struct Units {
     double w = 0, h = 0, u = 1, ut = 1;
-    static Units of(double w, double h);
+    double body_px = 0;
+    // The size of a text set at `nominal` px in an 800 px picture.
+    double text(double nominal) const { return text_size(nominal, ut, body_px); }
+    static Units of(double w, double h, double body_px = 0);
 };
 
 // Width kept free on the right for the colour bar, px (0 without one).

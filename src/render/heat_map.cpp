@@ -68,7 +68,8 @@ Sorted sort_panel(const SweepMap& map, const MapPanel& panel) {
 }
 
 void draw_colour_bar(cairo_t* cr, const Theme& th, const MapPanel& panel, const Sorted& s, const Ticks& ticks,
-                     const std::vector<double>& levels, const PlotArea& a, double x, double u) {
+                     const std::vector<double>& levels, const PlotArea& a, double x, double u, double body) {
+    const auto T = [&](double n) { return text_size(n, u, body); };
     const double bw = 16 * u, y0 = a.y0, y1 = a.y1;
     const auto py = [&](double v) { return y1 - (v - s.lo) / (s.hi - s.lo) * (y1 - y0); };
     constexpr int kSteps = 128;
@@ -94,13 +95,13 @@ void draw_colour_bar(cairo_t* cr, const Theme& th, const MapPanel& panel, const 
         cairo_line_to(cr, x + bw + 4 * u, py(v));
         cairo_stroke(cr);
         const std::string label = format_tick(v, ticks.decimals);
-        text(cr, th.font, 12 * u, x + bw + 7 * u, py(v), label, 0.0, 0.5);
-        widest = std::max(widest, text_width(cr, th.font, 12 * u, label));
+        text(cr, th.font, T(12), x + bw + 7 * u, py(v), label, 0.0, 0.5);
+        widest = std::max(widest, text_width(cr, th.font, T(12), label));
     }
     cairo_save(cr);
     cairo_translate(cr, x + bw + 16 * u + widest, 0.5 * (y0 + y1));
     cairo_rotate(cr, std::numbers::pi / 2);
-    text(cr, th.font, 13 * u, 0, 0, axis_label(panel.quantity, panel.unit), 0.5);
+    text(cr, th.font, T(13), 0, 0, axis_label(panel.quantity, panel.unit), 0.5);
     cairo_restore(cr);
 }
 
@@ -146,7 +147,8 @@ Vec2 along(const std::vector<Vec2>& pts, double fraction) {
 
 // Contour lines, each labelled with its value where the label clears the others (and `taken`).
 void draw_contours(cairo_t* cr, const Theme& th, const Sorted& s, const std::vector<double>& levels, int decimals,
-                   const PlotArea& a, double u, std::vector<Box> taken) {
+                   const PlotArea& a, double u, double body, std::vector<Box> taken) {
+    const auto T = [&](double n) { return text_size(n, u, body); };
     const Rgba line{th.text.r, th.text.g, th.text.b, 0.75};
     struct Pending {
         Vec2 at = Vec2::Zero();
@@ -169,7 +171,7 @@ void draw_contours(cairo_t* cr, const Theme& th, const Sorted& s, const std::vec
             if (length < 90 * u) continue;  // too short to carry its value
             // Neighbouring levels try different places first, so parallel lines' labels step apart.
             const std::string text = format_tick(levels[n], decimals);
-            const double w = text_width(cr, th.font, 11 * u, text) + 6 * u, h = 15 * u;
+            const double w = text_width(cr, th.font, T(11), text) + 6 * u, h = 15 * u;
             for (double f : {0.5, 0.3, 0.7, 0.15, 0.85, 0.4, 0.6}) {
                 const double shifted = n % 2 ? 1.0 - f : f;
                 const Vec2 at = along(px, shifted);
@@ -183,7 +185,7 @@ void draw_contours(cairo_t* cr, const Theme& th, const Sorted& s, const std::vec
         }
     }
     for (const Pending& p : labels)
-        halo_text(cr, th.font, 11 * u, p.at.x(), p.at.y() + 4 * u, p.text, th.text, th.background, 3 * u, 0.5);
+        halo_text(cr, th.font, T(11), p.at.x(), p.at.y() + 4 * u, p.text, th.text, th.background, 3 * u, 0.5);
 }
 
 // Where the contest's dragon is marked, and the box its label takes (none if it is not shown).
@@ -193,16 +195,18 @@ struct Mark {
     Box box;
 };
 std::optional<Mark> place_mark(cairo_t* cr, const SweepMap& map, const PlotArea& a, double u) {
+    const auto T = [&](double n) { return text_size(n, u, map.text_px); };
     if (!map.x.mark || !map.y->mark) return std::nullopt;
     const double mx = a.px(*map.x.mark), my = a.py(*map.y->mark);
     if (mx < a.x0 || mx > a.x1 || my < a.y0 || my > a.y1) return std::nullopt;
-    const double tw = text_width(cr, map.theme.font, 13 * u, map.mark_label);
+    const double tw = text_width(cr, map.theme.font, T(13), map.mark_label);
     const bool left = mx + 12 * u + tw > a.x1;
     const double x0 = left ? mx - 16 * u - tw : mx - 9 * u, x1 = left ? mx + 9 * u : mx + 16 * u + tw;
     return Mark{mx, my, left, {x0, my - 10 * u, x1, my + 10 * u}};
 }
 
 void draw_mark(cairo_t* cr, const SweepMap& map, const Mark& m, double u) {
+    const auto T = [&](double n) { return text_size(n, u, map.text_px); };
     cairo_new_sub_path(cr);
     cairo_arc(cr, m.x, m.y, 6.5 * u, 0, 2 * std::numbers::pi);
     set_colour(cr, {1, 1, 1, 0.9});
@@ -212,7 +216,7 @@ void draw_mark(cairo_t* cr, const SweepMap& map, const Mark& m, double u) {
     cairo_stroke(cr);
     cairo_arc(cr, m.x, m.y, 2.2 * u, 0, 2 * std::numbers::pi);
     cairo_fill(cr);
-    halo_text(cr, map.theme.font, 13 * u, m.x + (m.left ? -12 : 12) * u, m.y + 4.5 * u, map.mark_label,
+    halo_text(cr, map.theme.font, T(13), m.x + (m.left ? -12 : 12) * u, m.y + 4.5 * u, map.mark_label,
               {0.05, 0.05, 0.07}, {1, 1, 1}, 3.5 * u, m.left ? 1.0 : 0.0);
 }
 
@@ -220,7 +224,10 @@ void draw_mark(cairo_t* cr, const SweepMap& map, const Mark& m, double u) {
 
 void draw_heat_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, double x, double y, double w, double h) {
     const Theme& th = map.theme;
-    const double u = std::max(0.4, std::min(w / 900.0, h / 560.0) * 1.25);
+    Plot p;
+    p.text_px = map.text_px;
+    const double u = plot_unit(p, w, h);
+    const auto T = [&](double n) { return text_size(n, u, map.text_px); };
     const Sorted s = sort_panel(map, panel);
     const Ticks ticks = nice_ticks(s.lo, s.hi, 6);
     // Contour lines at the colour bar's ticks inside the range (more if there are too few).
@@ -237,7 +244,6 @@ void draw_heat_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
     if (!s.any) levels.clear();
     const std::vector<double> ex = edges(s.xs), ey = edges(s.ys);
 
-    Plot p;
     p.theme = th;
     p.title = fmt::format("{} over {} and {}", capitalised(panel.quantity), map.x.quantity, map.y->quantity);
     p.note = map.note;
@@ -258,19 +264,19 @@ void draw_heat_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
         }
         for (MapCell kind : other_cell_kinds()) draw_other_cells(c, th, panel, s, kind, ex, ey, a, u);
         const std::optional<Mark> mark = place_mark(c, map, a, u);
-        draw_contours(c, th, s, levels, fine.decimals, a, u, mark ? std::vector<Box>{mark->box} : std::vector<Box>{});
+        draw_contours(c, th, s, levels, fine.decimals, a, u, map.text_px, mark ? std::vector<Box>{mark->box} : std::vector<Box>{});
         if (mark) draw_mark(c, map, *mark, u);
     };
     // Room on the right for the colour bar, and under the plot for the legend of other cells.
     double widest = 0;
-    for (double v : ticks.values) widest = std::max(widest, text_width(cr, th.font, 12 * u, format_tick(v, ticks.decimals)));
+    for (double v : ticks.values) widest = std::max(widest, text_width(cr, th.font, T(12), format_tick(v, ticks.decimals)));
     const double bar_room = 16 * u + 7 * u + widest + 30 * u;
     // The legend under the frame, across the panel.
     const double legend_x = x + 18 * u, legend_w = w - 36 * u;
-    const double legend_room = cell_legend_height(cr, th, panel, legend_w, u);
+    const double legend_room = cell_legend_height(cr, th, panel, legend_w, u, map.text_px);
     const PlotArea a = draw_plot(cr, p, x, y, w - bar_room, h - legend_room);
-    if (s.any) draw_colour_bar(cr, th, panel, s, ticks, levels, a, x + w - bar_room, u);
-    if (legend_room > 0) draw_cell_legend(cr, th, panel, legend_x, y + h - legend_room, legend_w, u);
+    if (s.any) draw_colour_bar(cr, th, panel, s, ticks, levels, a, x + w - bar_room, u, map.text_px);
+    if (legend_room > 0) draw_cell_legend(cr, th, panel, legend_x, y + h - legend_room, legend_w, u, map.text_px);
 }
 
 }  // namespace dragon::render

@@ -51,11 +51,12 @@ void draw_line_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
     p.y_min = lo - 0.05 * (hi - lo);
     p.y_max = hi + 0.08 * (hi - lo);
     if (map.x.mark) p.ref_lines.push_back({true, *map.x.mark, map.mark_label, th.text, true});
-    const double u = std::max(0.4, std::min(w / 900.0, h / 560.0) * 1.25);  // the plot's own unit
+    p.text_px = map.text_px;
+    const double u = plot_unit(p, w, h);  // the plot's own unit
     const double legend_x = x + 18 * u, legend_w = w - 36 * u;
-    const double legend_room = cell_legend_height(cr, th, panel, legend_w, u);
+    const double legend_room = cell_legend_height(cr, th, panel, legend_w, u, map.text_px);
     draw_plot(cr, p, x, y, w, h - legend_room);
-    if (legend_room > 0) draw_cell_legend(cr, th, panel, legend_x, y + h - legend_room, legend_w, u, true);
+    if (legend_room > 0) draw_cell_legend(cr, th, panel, legend_x, y + h - legend_room, legend_w, u, map.text_px, true);
 }
 
 }  // namespace dragon::render

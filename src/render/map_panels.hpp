@@ -26,10 +26,12 @@ void draw_cell_marker(cairo_t* cr, MapCell kind, const CellStyle& style, double 
 void hatch(cairo_t* cr, double x0, double y0, double x1, double y1, double spacing, double width, Rgba colour);
 // The legend of the cell kinds other than values that the panel holds (a swatch and its text
 // each), in rows as wide as `width` allows, from (x, top): its height, and the drawing.
-double cell_legend_height(cairo_t* cr, const Theme& theme, const MapPanel& panel, double width, double u);
+// `body_px`: the map's text size at a print size (SweepMap::text_px), 0 on screen.
+double cell_legend_height(cairo_t* cr, const Theme& theme, const MapPanel& panel, double width, double u,
+                          double body_px);
 // `dots`: each entry's swatch is its marker (line plots), else its cell.
 void draw_cell_legend(cairo_t* cr, const Theme& theme, const MapPanel& panel, double x, double top, double width,
-                      double u, bool dots = false);
+                      double u, double body_px, bool dots = false);
 // Whether the panel holds cells of any kind but values.
 bool has_other_cells(const MapPanel& panel);
 

@@ -6,6 +6,7 @@
 #include <cairo-svg.h>
 #include <fmt/format.h>
 
+#include "render/png8.hpp"
 #include "render/vector_out.hpp"
 
 #include "dragon/atomic_file.hpp"
@@ -32,7 +33,7 @@ void check(cairo_status_t st, const char* what) {
 
 }  // namespace
 
-void render_png(const Scene& scene, int w, int h, const std::string& path) {
+void render_png(const Scene& scene, int w, int h, const std::string& path, const Page& page) {
     check_size(w, h);
     require_drawable(scene, w, h);
     AtomicFile out(path);
@@ -44,9 +45,13 @@ void render_png(const Scene& scene, int w, int h, const std::string& path) {
         draw(cr.get(), scene, w, h);
         check(cairo_status(cr.get()), "drawing");
     }
-    errno = 0;
-    if (const cairo_status_t st = cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()))
-        throw out.write_error(errno != 0 ? std::strerror(errno) : cairo_status_to_string(st));
+    if (page.dpi > 0) {  // libpng states the resolution; Cairo's writer cannot
+        render::write_png(surface.get(), out, page.dpi);
+    } else {
+        errno = 0;
+        if (const cairo_status_t st = cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()))
+            throw out.write_error(errno != 0 ? std::strerror(errno) : cairo_status_to_string(st));
+    }
     out.commit();
 }
 
@@ -61,19 +66,22 @@ PictureFormat picture_format(const std::string& path) {
 }
 
 void write_vector(const std::string& path, PictureFormat format, int w, int h,
-                  const std::function<void(cairo_t*)>& paint) {
+                  const std::function<void(cairo_t*)>& paint, const Page& page) {
     AtomicFile out(path);
     {
-        // CSS pixels: 96 to the inch, 72 points to the inch.
+        // CSS pixels: 96 to the inch, 72 points to the inch; or the page a print size asks.
         constexpr double pt_per_px = 72.0 / 96.0;
-        cairo::Surface surface(format == PictureFormat::pdf
-                                   ? cairo_pdf_surface_create(out.temp_path().c_str(), w * pt_per_px, h * pt_per_px)
-                                   : cairo_svg_surface_create(out.temp_path().c_str(), w, h));
+        const bool printed = page.width_pt > 0 && page.height_pt > 0;
+        const double page_w = printed ? page.width_pt : w * pt_per_px, page_h = printed ? page.height_pt : h * pt_per_px;
+        cairo::Surface surface(format == PictureFormat::pdf ? cairo_pdf_surface_create(out.temp_path().c_str(), page_w, page_h)
+                               : printed ? cairo_svg_surface_create(out.temp_path().c_str(), page_w, page_h)
+                                         : cairo_svg_surface_create(out.temp_path().c_str(), w, h));
         check(cairo_surface_status(surface.get()), "creating the vector surface");
-        if (format == PictureFormat::svg) cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
+        if (format == PictureFormat::svg)
+            cairo_svg_surface_set_document_unit(surface.get(), printed ? CAIRO_SVG_UNIT_PT : CAIRO_SVG_UNIT_PX);
         else cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "benchdragon");
         cairo::Context cr = cairo::make_context(surface.get());
-        if (format == PictureFormat::pdf) cairo_scale(cr.get(), pt_per_px, pt_per_px);
+        if (format == PictureFormat::pdf || printed) cairo_scale(cr.get(), page_w / w, page_h / h);
         paint(cr.get());
         check(cairo_status(cr.get()), "drawing");
         cr.reset();
@@ -87,16 +95,26 @@ void write_vector(const std::string& path, PictureFormat format, int w, int h,
 
 }  // namespace render
 
-void render_svg(const Scene& scene, int w, int h, const std::string& path) {
+void render_svg(const Scene& scene, int w, int h, const std::string& path, const Page& page) {
     check_size(w, h);
     require_drawable(scene, w, h);
-    render::write_vector(path, render::PictureFormat::svg, w, h, [&](cairo_t* cr) { draw(cr, scene, w, h); });
+    render::write_vector(path, render::PictureFormat::svg, w, h, [&](cairo_t* cr) { draw(cr, scene, w, h); }, page);
 }
 
-void render_pdf(const Scene& scene, int w, int h, const std::string& path) {
+void render_pdf(const Scene& scene, int w, int h, const std::string& path, const Page& page) {
     check_size(w, h);
     require_drawable(scene, w, h);
-    render::write_vector(path, render::PictureFormat::pdf, w, h, [&](cairo_t* cr) { draw(cr, scene, w, h); });
+    render::write_vector(path, render::PictureFormat::pdf, w, h, [&](cairo_t* cr) { draw(cr, scene, w, h); }, page);
+}
+
+void render_print(Scene scene, const PrintSize& size, double aspect, const std::string& path) {
+    const render::PictureFormat format = render::picture_format(path);
+    const PrintLayout layout = print_layout(size, aspect, format == render::PictureFormat::png);
+    scene.text_px = layout.text_px;
+    const int w = layout.width_px, h = layout.height_px;
+    if (format == render::PictureFormat::png) render_png(scene, w, h, path, layout.page);
+    else if (format == render::PictureFormat::svg) render_svg(scene, w, h, path, layout.page);
+    else render_pdf(scene, w, h, path, layout.page);
 }
 
 }  // namespace dragon

@@ -253,8 +253,9 @@ bool fits(cairo_t* cr, const std::string& font, double size, const std::vector<s
 }  // namespace
 
 FittedText fit_text(cairo_t* cr, const std::string& font, double size, const std::string& s, double room, bool bold,
-                    int max_lines) {
+                    int max_lines, bool keep_size) {
     if (s.empty()) return {size, {}};
+    if (keep_size) return {size, fits(cr, font, size, {s}, room, bold) ? std::vector<std::string>{s} : wrap(cr, font, size, s, room, bold)};
     // One line, down to 88 % of the size: reads better than a second line holding one word.
     for (double k = 1.0; k >= 0.875; k -= 0.025)
         if (fits(cr, font, k * size, {s}, room, bold)) return {k * size, {s}};

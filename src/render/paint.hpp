@@ -39,8 +39,17 @@ struct FittedText {
     double size = 0.0;
     std::vector<std::string> lines;
 };
+// `keep_size` (a picture at a print size, whose text must stay the size asked): never smaller,
+// wrapped into as many lines as it takes.
 FittedText fit_text(cairo_t* cr, const std::string& font, double size_px, const std::string& s, double room,
-                    bool bold = false, int max_lines = 2);
+                    bool bold = false, int max_lines = 2, bool keep_size = false);
+
+// The size of a text set at `nominal` px in an 800 px picture whose text unit is `unit` px:
+// nominal * unit on screen; at a print size (body_px > 0) the body size for labels, ticks and
+// legends (nominal 14 px and under), a fifth larger for titles, captions and clocks.
+inline double text_size(double nominal, double unit, double body_px) {
+    return body_px > 0 ? body_px * (nominal > 14 ? 1.2 : 1.0) : nominal * unit;
+}
 
 // Tick positions for [lo, hi]: about `target` steps of 1, 2 or 5 times a power of ten.
 struct Ticks {

@@ -115,12 +115,68 @@ void draw_series(cairo_t* cr, const Frame2& f, const PlotSeries& s, double u) {
     }
 }
 
-void draw_legend(cairo_t* cr, const Plot& p, const Frame2& f, double u) {
+std::vector<const PlotSeries*> legend_entries(const Plot& p) {
     std::vector<const PlotSeries*> entries;
+    if (p.legend == Plot::Legend::none) return entries;
     for (const auto& s : p.series)
         if (!s.label.empty()) entries.push_back(&s);
-    if (entries.empty() || p.legend == Plot::Legend::none) return;
-    const double size = 12 * u, row = 18 * u, sample = 24 * u, pad = 8 * u;
+    return entries;
+}
+
+void draw_sample(cairo_t* cr, const PlotSeries& s, double x, double y, double sample, double u) {
+    set_colour(cr, s.colour);
+    if (s.line) {
+        cairo_move_to(cr, x, y);
+        cairo_line_to(cr, x + sample, y);
+        cairo_set_line_width(cr, s.width_px * u);
+        set_dash(cr, s.dashed, u);
+        cairo_stroke(cr);
+        set_dash(cr, false, u);
+    }
+    if (s.markers) {
+        cairo_arc(cr, x + 0.5 * sample, y, s.marker_px * u, 0, 2 * std::numbers::pi);
+        cairo_fill(cr);
+    }
+}
+
+// At a print size the legend goes above the frame, its entries in rows across the frame's
+// width: inside, at a column's width, it would cover the data. Where each entry goes, as
+// offsets from the legend's top left, and the legend's height.
+struct LegendRows {
+    std::vector<Vec2> at;
+    double height = 0;
+};
+LegendRows legend_rows(cairo_t* cr, const Plot& p, double width, double u) {
+    LegendRows out;
+    const std::vector<const PlotSeries*> entries = legend_entries(p);
+    if (entries.empty()) return out;
+    const double size = render::text_size(12, u, p.text_px), row = 1.45 * size, sample = 20 * u, gap = 14 * u;
+    double x = 0, y = 0;
+    for (const PlotSeries* s : entries) {
+        const double w = sample + 5 * u + render::text_width(cr, p.theme.font, size, s->label);
+        if (x > 0 && x + w > width) x = 0, y += row;
+        out.at.push_back({x, y});
+        x += w + gap;
+    }
+    out.height = y + row;
+    return out;
+}
+
+void draw_legend_rows(cairo_t* cr, const Plot& p, const LegendRows& rows, double x0, double y0, double u) {
+    const std::vector<const PlotSeries*> entries = legend_entries(p);
+    const double size = render::text_size(12, u, p.text_px), row = 1.45 * size, sample = 20 * u;
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        const double x = x0 + rows.at[i].x(), y = y0 + rows.at[i].y() + 0.5 * row;
+        draw_sample(cr, *entries[i], x, y, sample, u);
+        set_colour(cr, p.theme.text);
+        render::text(cr, p.theme.font, size, x + sample + 5 * u, y, entries[i]->label, 0.0, 0.5);
+    }
+}
+
+void draw_legend(cairo_t* cr, const Plot& p, const Frame2& f, double u) {
+    const std::vector<const PlotSeries*> entries = legend_entries(p);
+    if (entries.empty() || p.text_px > 0) return;  // at a print size: legend_rows, above the frame
+    const double size = render::text_size(12, u, p.text_px), row = 18 * u, sample = 24 * u, pad = 8 * u;
     double tw = 0;
     for (auto* s : entries) tw = std::max(tw, render::text_width(cr, p.theme.font, size, s->label));
     const double bw = pad + sample + 6 * u + tw + pad, bh = pad + row * entries.size() + 2 * u;
@@ -139,19 +195,7 @@ void draw_legend(cairo_t* cr, const Plot& p, const Frame2& f, double u) {
     for (std::size_t i = 0; i < entries.size(); ++i) {
         const PlotSeries& s = *entries[i];
         const double y = by + pad + row * (i + 0.5);
-        set_colour(cr, s.colour);
-        if (s.line) {
-            cairo_move_to(cr, bx + pad, y);
-            cairo_line_to(cr, bx + pad + sample, y);
-            cairo_set_line_width(cr, s.width_px * u);
-            set_dash(cr, s.dashed, u);
-            cairo_stroke(cr);
-            set_dash(cr, false, u);
-        }
-        if (s.markers) {
-            cairo_arc(cr, bx + pad + 0.5 * sample, y, s.marker_px * u, 0, 2 * std::numbers::pi);
-            cairo_fill(cr);
-        }
+        draw_sample(cr, s, bx + pad, y, sample, u);
         set_colour(cr, p.theme.text);
         render::text(cr, p.theme.font, size, bx + pad + sample + 6 * u, y, s.label, 0.0, 0.5);
     }
@@ -159,8 +203,14 @@ void draw_legend(cairo_t* cr, const Plot& p, const Frame2& f, double u) {
 
 }  // namespace
 
+double plot_unit(const Plot& p, double w, double h) {
+    if (p.text_px > 0) return p.text_px / 12.0;
+    return std::max(0.4, std::min(w / 900.0, h / 560.0) * 1.25);
+}
+
 PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, double h) {
-    const double u = std::max(0.4, std::min(w / 900.0, h / 560.0) * 1.25);
+    const double u = plot_unit(p, w, h);
+    const auto T = [&](double nominal) { return render::text_size(nominal, u, p.text_px); };
     const Theme& th = p.theme;
     cairo_save(cr);
     cairo_rectangle(cr, x, y, w, h);
@@ -173,23 +223,27 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
     const auto yt0 = render::nice_ticks(yr.lo, yr.hi, 6);
     double ytw = 0;
     for (double v : yt0.values)
-        ytw = std::max(ytw, render::text_width(cr, th.font, 12 * u, render::format_tick(v, yt0.decimals)));
+        ytw = std::max(ytw, render::text_width(cr, th.font, T(12), render::format_tick(v, yt0.decimals)));
     const bool banded = p.strip_px > 0 && p.strip;
-    if (banded) ytw = std::max(ytw, render::text_width(cr, th.font, 11 * u, p.strip_label));
+    if (banded) ytw = std::max(ytw, render::text_width(cr, th.font, T(11), p.strip_label));
     const double band_gap = 6 * u, band_h = banded ? p.strip_px * u : 0.0;
     // Title and note run across the frame's width, wrapped or set smaller rather than clipped;
     // the frame starts below however many lines they take.
     const double x0 = x + ytw + (p.y_label.empty() ? 18 : 40) * u, x1 = x + w - 20 * u;
-    const render::FittedText title = render::fit_text(cr, th.font, 15 * u, p.title, x1 - x0, true);
-    const render::FittedText note = render::fit_text(cr, th.font, 12 * u, p.note, x1 - x0);
+    const bool keep = p.text_px > 0;  // at a print size, text wraps rather than shrinks
+    const render::FittedText title = render::fit_text(cr, th.font, T(15), p.title, x1 - x0, true, 2, keep);
+    const render::FittedText note = render::fit_text(cr, th.font, T(12), p.note, x1 - x0, false, 2, keep);
     std::vector<double> title_y, note_y;  // baselines
     double line_y = y + 24 * u;
     for (std::size_t i = 0; i < title.lines.size(); ++i, line_y += 1.3 * title.size) title_y.push_back(line_y);
     if (!title.lines.empty()) line_y += 20 * u - 1.3 * title.size;
     for (std::size_t i = 0; i < note.lines.size(); ++i, line_y += 1.35 * note.size) note_y.push_back(line_y);
-    const double top = title_y.empty() && note_y.empty() ? y + 16 * u
-                       : note_y.empty()                  ? title_y.back() + 16 * u
-                                                         : note_y.back() + 14 * u;
+    double top = title_y.empty() && note_y.empty() ? y + 16 * u
+                 : note_y.empty()                  ? title_y.back() + 16 * u
+                                                   : note_y.back() + 14 * u;
+    const LegendRows rows = p.text_px > 0 ? legend_rows(cr, p, x1 - x0, u) : LegendRows{};
+    const double legend_y = top - (title_y.empty() && note_y.empty() ? 10 * u : 4 * u);
+    if (rows.height > 0) top = legend_y + rows.height + 6 * u;
     Frame2 f{x0, top, x1, y + h - (p.x_label.empty() ? 30 : 52) * u - (banded ? band_gap + band_h : 0.0), xr, yr};
     if (p.equal_aspect) equalise(f);
     const auto xt = render::nice_ticks(f.xr.lo, f.xr.hi, std::max(3, static_cast<int>((f.x1 - f.x0) / (90 * u))));
@@ -226,13 +280,13 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
         if (!r.label.empty()) {
             if (r.vertical) {
                 // Right of the line, or left of it when it would run past the frame.
-                const double lw = render::text_width(cr, th.font, 11 * u, r.label);
+                const double lw = render::text_width(cr, th.font, T(11), r.label);
                 const bool left = f.px(r.value) + 4 * u + lw > f.x1;
-                render::text(cr, th.font, 11 * u, f.px(r.value) + (left ? -4 : 4) * u, f.y0 + 14 * u, r.label,
+                render::text(cr, th.font, T(11), f.px(r.value) + (left ? -4 : 4) * u, f.y0 + 14 * u, r.label,
                              left ? 1.0 : 0.0);
             }
             else
-                render::text(cr, th.font, 11 * u, f.x1 - 6 * u, f.py(r.value) - 5 * u, r.label, 1.0);
+                render::text(cr, th.font, T(11), f.x1 - 6 * u, f.py(r.value) - 5 * u, r.label, 1.0);
         }
     }
     for (const auto& s : p.series) draw_series(cr, f, s, u);
@@ -243,8 +297,12 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
             cairo_arc(cr, lx, ly, 3.2 * u, 0, 2 * std::numbers::pi);
             cairo_fill(cr);
         }
-        render::halo_text(cr, th.font, l.size_px * u, lx + l.dx_px * u, ly + l.dy_px * u, l.text, l.colour,
-                          th.background, 3.0 * u, l.align);
+        // Kept inside the frame: a label that would run past an edge moves in along its line.
+        const double size = T(l.size_px), tw = render::text_width(cr, th.font, size, l.text);
+        double left = lx + l.dx_px * u - l.align * tw;
+        left = std::max(f.x0 + 3 * u, std::min(left, f.x1 - 3 * u - tw));
+        const double base = std::max(f.y0 + 0.8 * size + 2 * u, std::min(ly + l.dy_px * u, f.y1 - 0.25 * size - 2 * u));
+        render::halo_text(cr, th.font, size, left, base, l.text, l.colour, th.background, 3.0 * u, 0.0);
     }
     cairo_restore(cr);
 
@@ -261,11 +319,11 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
     cairo_set_line_width(cr, 1.2 * u);
     cairo_rectangle(cr, f.x0, f.y0, f.x1 - f.x0, f.y1 - f.y0);
     cairo_stroke(cr);
-    const double tick = 5 * u, size = 12 * u;
+    const double tick = 5 * u, size = T(12);
     if (banded) {
         cairo_rectangle(cr, f.x0, band_y0, f.x1 - f.x0, band_h);
         cairo_stroke(cr);
-        render::text(cr, th.font, 11 * u, f.x0 - tick - 4 * u, band_y0 + 0.5 * band_h, p.strip_label, 1.0, 0.5);
+        render::text(cr, th.font, T(11), f.x0 - tick - 4 * u, band_y0 + 0.5 * band_h, p.strip_label, 1.0, 0.5);
     }
     for (double v : xt.values) {
         cairo_move_to(cr, f.px(v), axis_y);
@@ -281,12 +339,12 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
         render::text(cr, th.font, size, f.x0 - tick - 4 * u, f.py(v), render::format_tick(v, yt.decimals), 1.0, 0.5);
     }
     if (!p.x_label.empty())
-        render::text(cr, th.font, 13 * u, 0.5 * (f.x0 + f.x1), y + h - 12 * u, p.x_label, 0.5);
+        render::text(cr, th.font, T(13), 0.5 * (f.x0 + f.x1), y + h - 12 * u, p.x_label, 0.5);
     if (!p.y_label.empty()) {
         cairo_save(cr);
         cairo_translate(cr, x + 18 * u, 0.5 * (f.y0 + f.y1));
         cairo_rotate(cr, -std::numbers::pi / 2);
-        render::text(cr, th.font, 13 * u, 0, 0, p.y_label, 0.5);
+        render::text(cr, th.font, T(13), 0, 0, p.y_label, 0.5);
         cairo_restore(cr);
     }
     for (std::size_t i = 0; i < title.lines.size(); ++i)
@@ -296,6 +354,7 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
     set_colour(cr, soft);
     for (std::size_t i = 0; i < note.lines.size(); ++i) render::text(cr, th.font, note.size, x0, note_y[i], note.lines[i]);
     draw_legend(cr, p, f, u);
+    if (rows.height > 0) draw_legend_rows(cr, p, rows, x0, legend_y, u);
     cairo_restore(cr);
     return area;
 }

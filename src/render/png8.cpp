@@ -47,9 +47,12 @@ struct FileCloser {
     void operator()(FILE* f) const noexcept { std::fclose(f); }
 };
 
+// pHYs holds pixels per metre.
+png_uint_32 per_metre(double dpi) { return static_cast<png_uint_32>(std::lround(dpi / 0.0254)); }
+
 }  // namespace
 
-void write_png8(cairo_surface_t* surface, const std::string& path, int max_colours) {
+void write_png8(cairo_surface_t* surface, const std::string& path, int max_colours, double dpi) {
     cairo_surface_flush(surface);
     const int w = cairo_image_surface_get_width(surface), h = cairo_image_surface_get_height(surface);
     const int stride = cairo_image_surface_get_stride(surface);
@@ -105,6 +108,7 @@ void write_png8(cairo_surface_t* surface, const std::string& path, int max_colou
     png_set_IHDR(pw.png, pw.info, w, h, 8, PNG_COLOR_TYPE_PALETTE, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                  PNG_FILTER_TYPE_DEFAULT);
     png_set_PLTE(pw.png, pw.info, pal.data(), static_cast<int>(pal.size()));
+    if (dpi > 0) png_set_pHYs(pw.png, pw.info, per_metre(dpi), per_metre(dpi), PNG_RESOLUTION_METER);
     png_set_compression_level(pw.png, 9);
     png_set_filter(pw.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);  // palette images: no filter compresses best
     png_write_info(pw.png, pw.info);
@@ -113,6 +117,42 @@ void write_png8(cairo_surface_t* surface, const std::string& path, int max_colou
     if (std::fflush(file.get()) != 0 || std::ferror(file.get()) != 0) throw out.write_error(std::strerror(errno));
     if (std::fclose(file.release()) != 0) throw out.write_error(std::strerror(errno));
     out.commit();
+}
+
+void write_png(cairo_surface_t* surface, AtomicFile& out, double dpi) {
+    cairo_surface_flush(surface);
+    const int w = cairo_image_surface_get_width(surface), h = cairo_image_surface_get_height(surface);
+    const int stride = cairo_image_surface_get_stride(surface);
+    const unsigned char* data = cairo_image_surface_get_data(surface);
+    std::vector<png_byte> rows(static_cast<std::size_t>(w) * h * 3);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::uint32_t rgb = reinterpret_cast<const std::uint32_t*>(data + y * stride)[x];
+            png_byte* p = rows.data() + (static_cast<std::size_t>(y) * w + x) * 3;
+            for (int c = 0; c < 3; ++c) p[c] = static_cast<png_byte>(channel(rgb, c));
+        }
+    std::vector<png_bytep> row_ptrs(h);
+    for (int y = 0; y < h; ++y) row_ptrs[y] = rows.data() + static_cast<std::size_t>(y) * w * 3;
+    std::unique_ptr<FILE, FileCloser> file(std::fopen(out.temp_path().c_str(), "wb"));
+    if (!file) throw out.write_error(std::strerror(errno));
+    PngWrite pw;
+    const auto fail = [](png_structp png, png_const_charp) { png_longjmp(png, 1); };
+    const auto ignore = [](png_structp, png_const_charp) {};
+    pw.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, fail, ignore);
+    if (pw.png) pw.info = png_create_info_struct(pw.png);
+    if (!pw.png || !pw.info) throw std::runtime_error("libpng: out of memory");
+    // libpng reports errors by longjmp: nothing with a destructor may be created below.
+    errno = 0;
+    if (setjmp(png_jmpbuf(pw.png))) throw out.write_error(errno != 0 ? std::strerror(errno) : "libpng failed");
+    png_init_io(pw.png, file.get());
+    png_set_IHDR(pw.png, pw.info, w, h, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+                 PNG_FILTER_TYPE_DEFAULT);
+    if (dpi > 0) png_set_pHYs(pw.png, pw.info, per_metre(dpi), per_metre(dpi), PNG_RESOLUTION_METER);
+    png_write_info(pw.png, pw.info);
+    png_write_image(pw.png, row_ptrs.data());
+    png_write_end(pw.png, nullptr);
+    if (std::fflush(file.get()) != 0 || std::ferror(file.get()) != 0) throw out.write_error(std::strerror(errno));
+    if (std::fclose(file.release()) != 0) throw out.write_error(std::strerror(errno));
 }
 
 }  // namespace dragon::render

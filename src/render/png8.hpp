@@ -6,10 +6,17 @@
 
 #include <cairo.h>
 
+#include "dragon/atomic_file.hpp"
+
 namespace dragon::render {
 
 // Writes an image surface (RGB24 or opaque ARGB32) as an 8-bit palette PNG, all-or-nothing.
 // At most `max_colours` (2..256) palette entries.
-void write_png8(cairo_surface_t* surface, const std::string& path, int max_colours = 256);
+// `dpi` > 0: the resolution stated in the file (its pHYs chunk), for a picture at a print size.
+void write_png8(cairo_surface_t* surface, const std::string& path, int max_colours = 256, double dpi = 0);
+
+// Writes an image surface (RGB24 or opaque ARGB32) as a 24-bit PNG into `out`'s temporary
+// file, stating `dpi` (> 0) as its resolution. The caller commits `out`.
+void write_png(cairo_surface_t* surface, AtomicFile& out, double dpi);
 
 }  // namespace dragon::render

@@ -197,6 +197,7 @@ Scene make_scene(const Simulation& sim, const Frame& frame, const SceneOptions& 
     scene.annotation = opt.annotation.value_or(
         fmt::format("t = {:.3f} s   pitch = {:.3g} m", frame.time, sc.coil_pitch()));
     scene.title_band = opt.title_band;
+    scene.text_px = opt.text_px;
     scene.legend = opt.show_legend;
     scene.legend_touching = opt.collision.has_value() || !scene.overlaps.empty();
     if (opt.show_inset && opt.camera.mode != Camera::Mode::fit_dragon) scene.inset = make_inset(sim, frame, opt, scene);

@@ -91,12 +91,13 @@ struct Placed {
     MapCell kind;
     double dx, dy;
 };
-std::vector<Placed> legend_layout(cairo_t* cr, const Theme& theme, const MapPanel& panel, double width, double u) {
+std::vector<Placed> legend_layout(cairo_t* cr, const Theme& theme, const MapPanel& panel, double width, double u,
+                                  double body_px) {
     std::vector<Placed> out;
     double dx = 0, dy = 0;
     for (MapCell kind : other_cell_kinds()) {
         if (std::find(panel.cells.begin(), panel.cells.end(), kind) == panel.cells.end()) continue;
-        const double w = (kSwatch + kSwatchGap) * u + text_width(cr, theme.font, kLegendText * u, cell_style(theme, kind, panel).label);
+        const double w = (kSwatch + kSwatchGap) * u + text_width(cr, theme.font, text_size(kLegendText, u, body_px), cell_style(theme, kind, panel).label);
         if (dx > 0 && dx + w > width) dx = 0, dy += kLegendRow * u;  // on to the next row
         out.push_back({kind, dx, dy});
         dx += w + kEntryGap * u;
@@ -106,19 +107,20 @@ std::vector<Placed> legend_layout(cairo_t* cr, const Theme& theme, const MapPane
 
 }  // namespace
 
-double cell_legend_height(cairo_t* cr, const Theme& theme, const MapPanel& panel, double width, double u) {
-    const std::vector<Placed> entries = legend_layout(cr, theme, panel, width, u);
+double cell_legend_height(cairo_t* cr, const Theme& theme, const MapPanel& panel, double width, double u,
+                          double body_px) {
+    const std::vector<Placed> entries = legend_layout(cr, theme, panel, width, u, body_px);
     return entries.empty() ? 0.0 : entries.back().dy + kLegendRow * u + 8 * u;
 }
 
 void draw_cell_legend(cairo_t* cr, const Theme& theme, const MapPanel& panel, double x, double top, double width,
-                      double u, bool dots) {
+                      double u, double body_px, bool dots) {
     const double swatch = kSwatch * u;
-    for (const Placed& e : legend_layout(cr, theme, panel, width, u)) {
+    for (const Placed& e : legend_layout(cr, theme, panel, width, u, body_px)) {
         const CellStyle st = cell_style(theme, e.kind, panel);
         const double sx = x + e.dx, y = top + e.dy + 0.5 * kLegendRow * u;
         set_colour(cr, theme.text);
-        text(cr, theme.font, kLegendText * u, sx + swatch + kSwatchGap * u, y, st.label, 0.0, 0.5);
+        text(cr, theme.font, text_size(kLegendText, u, body_px), sx + swatch + kSwatchGap * u, y, st.label, 0.0, 0.5);
         if (dots) {
             draw_cell_marker(cr, e.kind, st, sx + 0.5 * swatch, y, 4.0 * u);
             continue;

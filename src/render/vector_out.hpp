@@ -6,6 +6,8 @@
 
 #include <cairo.h>
 
+#include "dragon/picture_size.hpp"
+
 namespace dragon::render {
 
 enum class PictureFormat { png, svg, pdf };
@@ -15,8 +17,9 @@ PictureFormat picture_format(const std::string& path);
 // A picture of w x h px painted by `paint` onto a vector surface, all-or-nothing (AtomicFile).
 // SVG sizes are in px, as asked; a PDF page is in points at 96 px per inch (CSS pixels: a
 // 1600 px picture is 1200 pt, 16.7 in, wide), its fonts embedded as subsets and its text real
-// text, selectable and searchable.
+// text, selectable and searchable. With a page size (a print size's), the PDF page and the SVG
+// are exactly that many points, the w x h px drawing scaled onto them.
 void write_vector(const std::string& path, PictureFormat format, int w, int h,
-                  const std::function<void(cairo_t*)>& paint);
+                  const std::function<void(cairo_t*)>& paint, const Page& page = {});
 
 }  // namespace dragon::render
