@@ -108,6 +108,9 @@ struct FilmSettings {
     int width = 1280, height = 720;
     double fps = 30.0;
     std::string theme = "light";
+    // The body text's size, px, for frames at a print size (a poster for a paper: Scene::text_px);
+    // 0: text follows the frame's size.
+    double text_px = 0.0;
 };
 
 struct Storyboard {
@@ -161,8 +164,9 @@ private:
 
 // Renders and encodes the film (opt's size and rate are the film's).
 EncodeStats write_film(const Film& film, const std::string& path, VideoOptions opt, const ProgressFn& progress = {});
-// One frame, the one shown `at` seconds into the film, as a PNG (all-or-nothing). A moment
-// outside the film is an InputError ("film moment").
-void write_film_frame(const Film& film, double at, const std::string& path);
+// One frame, the one shown `at` seconds into the film, as a PNG (all-or-nothing), stating `dpi`
+// as its resolution when > 0 (a poster at a print size). A moment outside the film is an
+// InputError ("film moment").
+void write_film_frame(const Film& film, double at, const std::string& path, double dpi = 0);
 
 }  // namespace dragon

@@ -13,6 +13,7 @@
 
 #include <cairo.h>
 
+#include "dragon/picture_size.hpp"
 #include "dragon/render.hpp"
 
 namespace dragon {
@@ -72,7 +73,9 @@ void draw_sweep_map(cairo_t* cr, const SweepMap& map, double w, double h);
 // format a map can be written in: .png, .svg or .pdf.
 void require_map_format(const std::string& path);
 // All-or-nothing .png, .svg or .pdf of sweep_map_size(map) (a PDF as render_pdf writes one: 96
-// px per inch, fonts embedded, text selectable).
-void write_sweep_map(const SweepMap& map, const std::string& path);
+// px per inch, fonts embedded, text selectable); or, given a print size, the map that wide on
+// the page with its text at that size, a PNG at its dpi: its panels a little taller than on
+// screen, without titles or notes (a paper captions its figures).
+void write_sweep_map(const SweepMap& map, const std::string& path, const std::optional<PrintSize>& print = std::nullopt);
 
 }  // namespace dragon

@@ -7,6 +7,7 @@
 
 #include "cli/wording.hpp"
 #include "cli/commands.hpp"
+#include "cli/print_flags.hpp"
 #include "cli/progress.hpp"
 #include "cli/status.hpp"
 #include "dragon/atomic_file.hpp"
@@ -22,6 +23,7 @@ struct FilmCliOptions {
     std::optional<double> fps, at;
     std::optional<int> crf, colours;
     std::optional<std::string> preset, tune;
+    PrintFlags print;
     bool quiet = false;
 };
 
@@ -34,6 +36,7 @@ void register_film(CLI::App& app, Registry& reg) {
     sub->add_option("-o,--out", opt->out, "Output: .mp4, .webm or .gif; .png with --at for one frame")->required();
     sub->add_option("--at", opt->at, "With a .png: the frame shown this many seconds into the film");
     sub->add_option("--size", opt->size, "Frame size WIDTHxHEIGHT, over the storyboard's [film] size");
+    opt->print.add_to(sub);  // a poster's size on a page (its shape stays the frame's)
     sub->add_option("--fps", opt->fps, "Frames per second, over the storyboard's [film] fps");
     sub->add_option("--crf", opt->crf, fmt::format("Quality: H.264 0-51 (default {}), VP9 0-63 (default {})",
                                                    kDefaultCrf.h264, kDefaultCrf.vp9));
@@ -70,6 +73,16 @@ void register_film(CLI::App& app, Registry& reg) {
             board.film.height = size.height;
         }
         if (opt->fps) board.film.fps = *opt->fps;
+        const std::optional<PrintSize> print = opt->print.resolve();
+        if (print && !poster)
+            throw InputError("a print size (--print, --width-in, --width-cm, --font-pt, --dpi) is for a poster frame "
+                             "(.png with --at): a film's size is --size in pixels");
+        if (print) {  // the frame's shape, at the poster's size on a page
+            const PrintLayout layout =
+                print_layout(*print, static_cast<double>(board.film.height) / board.film.width, true, kMaxVideoSide);
+            board.film.width = layout.width_px, board.film.height = layout.height_px;
+            board.film.text_px = layout.text_px;
+        }
         vo.width = board.film.width;
         vo.height = board.film.height;
         vo.fps = board.film.fps;
@@ -81,7 +94,7 @@ void register_film(CLI::App& app, Registry& reg) {
         { AtomicFile probe(opt->out); }  // an unwritable path fails here, before any work
         const Film film(board);
         if (poster) {
-            write_film_frame(film, *opt->at, opt->out);
+            write_film_frame(film, *opt->at, opt->out, print ? print->dpi : 0.0);
             status(opt->quiet, "wrote {}: frame {} of {} ({:.3f} s into the film), {}x{}", opt->out,
                    static_cast<int>(*opt->at * vo.fps), film.frame_count(), *opt->at, vo.width, vo.height);
             return 0;

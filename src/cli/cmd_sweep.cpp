@@ -9,6 +9,7 @@
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
 #include "cli/sweep_merge.hpp"
+#include "cli/print_flags.hpp"
 #include "cli/sweep_plot.hpp"
 #include "cli/sweep_run.hpp"
 #include "cli/wording.hpp"
@@ -23,17 +24,27 @@ struct SweepOptions {
     SweepRequest request;
     SweepOutput output;
     std::string plot;
+    PrintFlags print;  // the map's size on a page
     std::optional<int> workers;
     // dragon sweep merge
     CLI::App* merge = nullptr;
     std::vector<std::string> merge_files;  // OUT.csv, then the parts
     std::string merge_plot;
+    PrintFlags merge_print;
     bool merge_quiet = false;
 };
 
-void write_plot(const std::string& path, const MapCollector& maps, bool quiet) {
-    write_sweep_map(maps.map(), path);
+void write_plot(const std::string& path, const MapCollector& maps, const std::optional<PrintSize>& print, bool quiet) {
+    write_sweep_map(maps.map(), path, print);
     status(quiet, "wrote {}", path);
+}
+
+// The print size for --plot, checked before any row is computed.
+std::optional<PrintSize> plot_print(const PrintFlags& flags, const std::string& plot) {
+    const std::optional<PrintSize> print = flags.resolve();
+    if (print && plot.empty())
+        throw InputError("a print size (--print, --width-in, --width-cm, --font-pt, --dpi) sizes the map: give --plot");
+    return print;
 }
 
 int run_merge(const SweepOptions& opt) {
@@ -48,6 +59,7 @@ int run_merge(const SweepOptions& opt) {
         throw InputError(fmt::format("{} has extension '{}': the merged sweep is written as .csv", out, extension_of(out)));
     const std::vector<std::string> parts(opt.merge_files.begin() + 1, opt.merge_files.end());
     const SweepSetup whole = whole_sweep(parts);
+    const std::optional<PrintSize> print = plot_print(opt.merge_print, opt.merge_plot);
     if (!opt.merge_plot.empty()) {
         check_plot(whole, opt.merge_plot);
         AtomicFile probe(opt.merge_plot);
@@ -59,7 +71,7 @@ int run_merge(const SweepOptions& opt) {
     });
     status(opt.merge_quiet, "wrote {}: {} from {}", out, count_of(static_cast<long long>(rows), "row"),
            count_of(static_cast<long long>(parts.size()), "file"));
-    if (maps) write_plot(opt.merge_plot, *maps, opt.merge_quiet);
+    if (maps) write_plot(opt.merge_plot, *maps, print, opt.merge_quiet);
     return 0;
 }
 
@@ -71,6 +83,7 @@ int run(SweepOptions& opt) {
     }
     const SweepSetup setup = make_setup(opt.request, opt.scenario);
     check_output(opt.output);
+    const std::optional<PrintSize> print = plot_print(opt.print, opt.plot);
     if (!opt.plot.empty()) {
         check_plot(setup, opt.plot);
         AtomicFile probe(opt.plot);
@@ -84,7 +97,7 @@ int run(SweepOptions& opt) {
     if (!opt.output.out.empty())
         status(opt.output.quiet, "wrote {}: {}{}", opt.output.out, count_of(static_cast<long long>(t.done_before + t.made), "row"),
                t.done_before ? fmt::format(" ({} new)", t.made) : "");
-    if (maps) write_plot(opt.plot, *maps, opt.output.quiet);
+    if (maps) write_plot(opt.plot, *maps, print, opt.output.quiet);
     if (t.failed > 0)
         throw std::runtime_error(fmt::format("{} of {} failed ({} status says why)", t.failed,
                                              count_of(static_cast<long long>(t.made), "scenario"),
@@ -127,6 +140,7 @@ void register_sweep(CLI::App& app, Registry& reg) {
     sub->add_option("--shard", opt->request.shard, "K/N: run only the K-th of N disjoint parts (merge them after)");
     sub->add_option("--plot", opt->plot, "Also draw the map (.png, .svg or .pdf): line plots over one varied value, heat "
                                          "maps over two");
+    opt->print.add_to(sub);
     sub->add_option("--workers", opt->workers, "Scenarios run at once (default: one per core)");
     add_quiet_flag(sub, opt->output.quiet);
 
@@ -135,6 +149,7 @@ void register_sweep(CLI::App& app, Registry& reg) {
     opt->merge->add_option("files", opt->merge_files, "OUT.csv, then the parts");
     opt->merge->allow_extras();  // named by run_merge, as the command line names a command's leftovers
     opt->merge->add_option("--plot", opt->merge_plot, "Also draw the map (.png, .svg or .pdf)");
+    opt->merge_print.add_to(opt->merge);
     add_quiet_flag(opt->merge, opt->merge_quiet);
     reg["sweep"] = [opt]() { return run(*opt); };
 }

@@ -45,12 +45,13 @@ View2 between(const View2& a, const View2& b, double u) {
 
 bool is_fit(const CameraMove& c) { return c.from.kind == Window::Kind::fit && (!c.to || c.to->kind == Window::Kind::fit); }
 
-void draw_title_card(cairo_t* cr, const Theme& th, const Shot& shot, int w, int h) {
-    const double ut = std::max(std::min(w, h) / 800.0, kMinTextPx / 13.0);
+void draw_title_card(cairo_t* cr, const Theme& th, const Shot& shot, int w, int h, double text_px) {
+    const double ut = text_px > 0 ? text_px / 12.0 : std::max(std::min(w, h) / 800.0, kMinTextPx / 13.0);
+    const bool keep = text_px > 0;  // at a print size: wrapped, never smaller
     render::set_colour(cr, {th.background.r, th.background.g, th.background.b, 1.0});
     cairo_paint(cr);
-    const render::FittedText title = render::fit_text(cr, th.font, 44 * ut, shot.title, 0.86 * w, true, 2);
-    const render::FittedText sub = render::fit_text(cr, th.font, 20 * ut, shot.subtitle, 0.8 * w, false, 3);
+    const render::FittedText title = render::fit_text(cr, th.font, 44 * ut, shot.title, 0.86 * w, true, 2, keep);
+    const render::FittedText sub = render::fit_text(cr, th.font, 20 * ut, shot.subtitle, 0.8 * w, false, 3, keep);
     const double title_h = 1.25 * title.size * static_cast<double>(title.lines.size());
     const double sub_h = 1.4 * sub.size * static_cast<double>(sub.lines.size());
     double y = 0.5 * (h - title_h - (sub.lines.empty() ? 0.0 : 1.2 * sub.size + sub_h)) + 0.5 * title.size;
@@ -105,6 +106,7 @@ Scene Film::scene_at(int shot, int local, int view) const {
     so.show_legend = sh.legend && view == 0;
     so.show_inset = sh.inset && (!is_fit(cam) || closing_in);
     so.show_text = sh.text;
+    so.text_px = impl_->settings.text_px;
     so.inset_camera = v.fit;
     if (v.ends_on_contact && t == v.to) so.collision = v.contact;
     Scene s = make_scene(*v.sim, f, so);
@@ -128,7 +130,7 @@ namespace {
 void paint_shot(const Film& film, const film::ShotPlan& p, int shot, int local, cairo_t* cr, const Theme& th, int w,
                 int h) {
     if (p.shot.kind == Shot::Kind::title) {
-        draw_title_card(cr, th, p.shot, w, h);
+        draw_title_card(cr, th, p.shot, w, h, film.settings().text_px);
         return;
     }
     if (p.views.size() == 1) {

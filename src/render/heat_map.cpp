@@ -247,6 +247,7 @@ void draw_heat_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
     p.theme = th;
     p.title = fmt::format("{} over {} and {}", capitalised(panel.quantity), map.x.quantity, map.y->quantity);
     p.note = map.note;
+    if (map.text_px > 0) p.title.clear(), p.note.clear();  // at a print size: the paper's caption says it
     p.x_label = axis_label(map.x.quantity, map.x.unit);
     p.y_label = axis_label(map.y->quantity, map.y->unit);
     p.x_min = ex.front(), p.x_max = ex.back(), p.y_min = ey.front(), p.y_max = ey.back();

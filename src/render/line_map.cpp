@@ -20,6 +20,7 @@ void draw_line_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
     if (!title.empty() && title[0] >= 'a' && title[0] <= 'z') title[0] = static_cast<char>(title[0] - 'a' + 'A');
     p.title = title;
     p.note = map.note;
+    if (map.text_px > 0) p.title.clear(), p.note.clear();  // at a print size: the paper's caption says it
     p.x_label = axis_label(map.x.quantity, map.x.unit);
     p.y_label = axis_label(panel.quantity, panel.unit);
     // The line needs no legend (the axis names it); the markers' legend goes under the plot.

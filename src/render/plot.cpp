@@ -229,7 +229,16 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
     const double band_gap = 6 * u, band_h = banded ? p.strip_px * u : 0.0;
     // Title and note run across the frame's width, wrapped or set smaller rather than clipped;
     // the frame starts below however many lines they take.
-    const double x0 = x + ytw + (p.y_label.empty() ? 18 : 40) * u, x1 = x + w - 20 * u;
+    // The value axis's name runs up the left side; at a print size, where it may not shorten, it
+    // wraps onto a second line when the side is too short for it (the frame moves right by it).
+    const render::FittedText y_name =
+        render::fit_text(cr, th.font, T(13), p.y_label,
+                         std::max(h - (70 + (p.title.empty() ? 0 : 40) + (p.note.empty() ? 0 : 30)) * u -
+                                      (banded ? p.strip_px * u + 6 * u : 0.0) - (p.text_px > 0 ? 2.5 * T(12) : 0.0),
+                                  0.3 * h),
+                         false, 2, p.text_px > 0);
+    const double y_extra = y_name.lines.size() > 1 ? 1.25 * y_name.size * static_cast<double>(y_name.lines.size() - 1) : 0.0;
+    const double x0 = x + ytw + (p.y_label.empty() ? 18 : 40) * u + y_extra, x1 = x + w - 20 * u;
     const bool keep = p.text_px > 0;  // at a print size, text wraps rather than shrinks
     const render::FittedText title = render::fit_text(cr, th.font, T(15), p.title, x1 - x0, true, 2, keep);
     const render::FittedText note = render::fit_text(cr, th.font, T(12), p.note, x1 - x0, false, 2, keep);
@@ -344,7 +353,8 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
         cairo_save(cr);
         cairo_translate(cr, x + 18 * u, 0.5 * (f.y0 + f.y1));
         cairo_rotate(cr, -std::numbers::pi / 2);
-        render::text(cr, th.font, T(13), 0, 0, p.y_label, 0.5);
+        for (std::size_t i = 0; i < y_name.lines.size(); ++i)
+            render::text(cr, th.font, y_name.size, 0, 1.25 * y_name.size * static_cast<double>(i), y_name.lines[i], 0.5);
         cairo_restore(cr);
     }
     for (std::size_t i = 0; i < title.lines.size(); ++i)

@@ -14,6 +14,7 @@
 #include "dragon/scenario.hpp"
 #include "render/map_panels.hpp"
 #include "render/paint.hpp"
+#include "render/png8.hpp"
 #include "render/vector_out.hpp"
 
 namespace dragon {
@@ -169,13 +170,24 @@ void require_map_format(const std::string& path) {
         throw InputError("map file", path, "use .png, .svg or .pdf");
 }
 
-void write_sweep_map(const SweepMap& map, const std::string& path) {
+void write_sweep_map(const SweepMap& map_in, const std::string& path, const std::optional<PrintSize>& print) {
     require_map_format(path);
-    const auto [w, h] = sweep_map_size(map);
-    const auto paint = [&](cairo_t* cr) { draw_sweep_map(cr, map, w, h); };
     const render::PictureFormat format = render::picture_format(path);
+    SweepMap map = map_in;
+    auto [w, h] = sweep_map_size(map);
+    Page page;
+    if (print) {
+        // On a page: taller panels than on screen (a column is narrow) and no title or note over
+        // them (the paper's caption says what the map shows).
+        const double panel = map.y ? 0.78 : 0.62;
+        const double aspect = panel * static_cast<double>(std::max<std::size_t>(1, map.panels.size()));
+        const PrintLayout layout = print_layout(*print, aspect, format == render::PictureFormat::png);
+        w = layout.width_px, h = layout.height_px, page = layout.page;
+        map.text_px = layout.text_px;
+    }
+    const auto paint = [&](cairo_t* cr) { draw_sweep_map(cr, map, w, h); };
     if (format != render::PictureFormat::png) {
-        render::write_vector(path, format, w, h, paint);
+        render::write_vector(path, format, w, h, paint, page);
         return;
     }
     AtomicFile out(path);
@@ -188,9 +200,13 @@ void write_sweep_map(const SweepMap& map, const std::string& path) {
         if (const cairo_status_t st = cairo_status(cr.get()))
             throw std::runtime_error(fmt::format("drawing the map: {}", cairo_status_to_string(st)));
     }
-    errno = 0;
-    if (const cairo_status_t st = cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()))
-        throw out.write_error(errno != 0 ? std::strerror(errno) : cairo_status_to_string(st));
+    if (page.dpi > 0) {
+        render::write_png(surface.get(), out, page.dpi);
+    } else {
+        errno = 0;
+        if (const cairo_status_t st = cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()))
+            throw out.write_error(errno != 0 ? std::strerror(errno) : cairo_status_to_string(st));
+    }
     out.commit();
 }
 
