@@ -13,6 +13,7 @@
 #include "dragon/chain.hpp"
 #include "dragon/collision.hpp"
 #include "dragon/geometry.hpp"
+#include "dragon/language.hpp"
 #include "dragon/picture_size.hpp"
 
 namespace dragon {
@@ -133,6 +134,12 @@ struct SceneOptions {
     bool mark_overlaps = true;
     // Scene::text_px: the body text's size for a picture at a print size, px; 0 on screen.
     double text_px = 0.0;
+    // The language of the words the picture carries by itself: the legend, the colour bar's
+    // title, the default annotation, the overlap's label, the touching benches' names.
+    Language language = Language::en;
+    // Name the touching benches of `collision` on the picture ("bench 1 (head)", "bench 9"), so
+    // a reader knows which is the head without the legend.
+    bool name_touching = false;
 };
 inline constexpr double kTouchingDepth = 1e-6;  // m
 
@@ -208,6 +215,7 @@ struct Scene {
     // picture at a print size: titles, captions and the clock are a fifth larger, and lines and
     // gaps follow the text. 0: every size follows the picture's (kMinTextPx at least).
     double text_px = 0.0;
+    Language language = Language::en;  // SceneOptions::language: the legend's and colour bar's words
 
     // Screen furniture (films mostly). Text is set at a size that follows the picture's height
     // but never below kMinTextPx, so it reads on a 400 x 300 GIF as on a 4K frame.

@@ -69,9 +69,11 @@ void register_render(CLI::App& app, Registry& reg) {
             // Marked where the boards meet: the corner of one nearest the other.
             const Vec2 at = contact_point(frame.benches[c.bench_a - 1], frame.benches[c.bench_b - 1]);
             so.collision = CollisionMark{c.bench_a, c.bench_b, at};
+            so.name_touching = true;  // which magenta bench is the head, without the legend
             if (!so.annotation)
-                so.annotation = fmt::format("first contact t = {:.6f} s: benches {} and {}", c.time,
-                                            c.bench_a, c.bench_b);
+                so.annotation = fmt::format(fmt::runtime(so.language == Language::zh ? "首次碰撞 t = {:.6f} s：第 {} 与第 {} 节板凳"
+                                                                                      : "first contact t = {:.6f} s: benches {} and {}"),
+                                            c.time, c.bench_a, c.bench_b);
             if (opt->look.zoom()) so.camera = Camera::at(at, *opt->look.zoom());
         } else {
             sim.require_valid(*opt->time, "time");
@@ -79,10 +81,16 @@ void register_render(CLI::App& app, Registry& reg) {
             // Past the first contact the benches overlap (drawn marked): the annotation says so.
             const std::optional<Contact> c = first_contact_covering(sim, *opt->time, *opt->time).contact;
             if (!so.annotation && c && c->time < *opt->time)
-                so.annotation = fmt::format("t = {:.3f} s   pitch = {:.3g} m   past the first contact (benches {} and "
-                                            "{}, t = {:.3f} s)", frame.time, s.coil_pitch(), c->bench_a, c->bench_b,
-                                            c->time);
+                so.annotation = fmt::format(fmt::runtime(so.language == Language::zh
+                                                             ? "t = {:.3f} s   螺距 = {:.3g} m   已过首次碰撞（第 {} 与第 {} 节板凳，"
+                                                               "t = {:.3f} s）"
+                                                             : "t = {:.3f} s   pitch = {:.3g} m   past the first contact "
+                                                               "(benches {} and {}, t = {:.3f} s)"),
+                                            frame.time, s.coil_pitch(), c->bench_a, c->bench_b, c->time);
         }
+        // A still's title gets a band of its own: over the drawing it would hide benches (the
+        // head, at a contact zoomed in).
+        so.title_band = true;
         const std::optional<PrintSize> print = opt->print.resolve();
         auto [w, h] = opt->look.size();
         Page page;

@@ -47,6 +47,7 @@ const std::map<std::string, FlagWords>& flag_of_field() {
         // Pictures and films.
         {"picture size", {"--size"}},
         {"print size", {"--print"}},
+        {"language", {"--lang"}},
         {"print width", {"--width-in"}},
         {"font size", {"--font-pt"}},
         {"dpi", {"--dpi"}},

@@ -23,9 +23,15 @@ void require_zoom_resolves(const Scene& scene, int w, int h, double zoom) {
                                  zoom, c.x(), c.y(), w, h, narrowest_view(c, w, h)));
 }
 
+void add_language_flag(CLI::App* sub, std::string& lang) {
+    sub->add_option("--lang", lang, "Language of the words drawn: en (default) or zh (Chinese: 龙头, 龙身, 龙尾, 把手, "
+                                    "螺距, 调头空间; text you give is drawn as given)");
+}
+
 void RenderFlags::add_to(CLI::App* sub, bool with_view) {
     sub->add_option("--size", size_, "Image size in pixels, WxH (default 1600x1600)");
     sub->add_option("--theme", theme_, "Colour theme: light, dark or a .toml file (default light)");
+    add_language_flag(sub, lang_);
     if (!with_view) return;
     sub->add_flag("--speed-colours", speed_colours_, "Colour each bench by its speed, with a colour bar");
     sub->add_option("--zoom", zoom_,
@@ -53,6 +59,7 @@ SceneOptions RenderFlags::scene_options() const {
     so.annotation = annotation_;
     so.show_legend = legend_;
     so.show_inset = inset_;
+    so.language = language();
     if (zoom_) check_zoom(*zoom_);
     if (!centre_.empty() && !zoom_) throw InputError("--centre needs --zoom (the width of the view in metres)");
     for (double c : centre_)

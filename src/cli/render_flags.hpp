@@ -21,6 +21,9 @@ void check_zoom(double zoom);
 // doubles resolve its pixels.
 void require_zoom_resolves(const Scene& scene, int width_px, int height_px, double zoom);
 
+// --lang en|zh on `sub`, into `lang` (checked by parse_language: InputError "language").
+void add_language_flag(CLI::App* sub, std::string& lang);
+
 class RenderFlags {
 public:
     void add_to(CLI::App* sub, bool with_view = true);
@@ -29,12 +32,15 @@ public:
     // Theme, camera and switches (throws InputError for a bad value).
     SceneOptions scene_options() const;
     const std::string& theme_name() const { return theme_; }
+    // --lang: the language of the words the picture carries by itself.
+    Language language() const { return parse_language(lang_); }
     // --zoom: a square view of this many metres (around the contact with --collision).
     std::optional<double> zoom() const { return zoom_; }
 
 private:
     std::string size_ = "1600x1600";
     std::string theme_ = "light";
+    std::string lang_ = "en";
     std::optional<double> zoom_;
     std::vector<double> centre_;
     bool speed_colours_ = false, follow_head_ = false, no_guides_ = false, no_text_ = false;

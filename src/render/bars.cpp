@@ -5,6 +5,7 @@
 
 #include "render/furniture.hpp"
 #include "render/paint.hpp"
+#include "render/words.hpp"
 
 namespace dragon::render {
 
@@ -42,9 +43,7 @@ void draw_colour_bar(cairo_t* cr, const Scene& s, const Units& un, double room, 
     const double bar_w = 16 * u, x = un.w - room + 18 * ut;
     // y0 top (fast), y1 bottom (slow); the top clear of the clock and of the bar's own title.
     const double y0 = std::max(0.18 * un.h, top + 34 * ut), y1 = std::max(y0 + 40 * u, 0.82 * un.h);
-    // The drawing runs on under the strip (no clip, no hard edge): a backdrop keeps the bar
-    // and its numbers legible over it.
-    backdrop(cr, s.theme, x - 10 * ut, y0 - 30 * ut, room - 12 * ut, y1 - y0 + 40 * ut);
+    // The strip is the bar's own (draw() keeps the drawing out of it): no backdrop needed.
     cairo_pattern_t* grad = cairo_pattern_create_linear(0, y1, 0, y0);
     const auto& stops = s.theme.speed_ramp;
     for (std::size_t i = 0; i < stops.size(); ++i) {
@@ -67,7 +66,7 @@ void draw_colour_bar(cairo_t* cr, const Scene& s, const Units& un, double room, 
         cairo_stroke(cr);
         text(cr, s.theme.font, un.text(11), x + bar_w + 6 * u, y, format_tick(t, ticks.decimals), 0.0, 0.5);
     }
-    text(cr, s.theme.font, un.text(12), un.w - 0.5 * room - 3 * ut, y0 - 14 * ut, "speed (m/s)", 0.5);
+    text(cr, s.theme.font, un.text(12), un.w - 0.5 * room - 3 * ut, y0 - 14 * ut, words(s.language).speed_axis, 0.5);
 }
 
 Box draw_inset(cairo_t* cr, const Scene& s, const Units& un, double right, const Vec2& lo, const Vec2& hi) {

@@ -240,11 +240,12 @@ void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
     const double top = s.title_band ? render::annotation_height(cr, s, un, w) : 0.0;
     const View v = make_view(s, w, h, right, top, u);
 
-    // The world runs under the furniture (no clip, so no hard edge where a strip begins); a
-    // title band alone is kept clear, the view fitting below it.
+    // The world runs under the furniture in the corners (no hard edge there); a title band and
+    // the colour bar's strip are kept clear, the view fitting beside them: under the strip's
+    // backdrop the outer coils would show dimmed, as if they were something else.
     cairo_save(cr);
-    if (top > 0) {
-        cairo_rectangle(cr, 0, top, w, h - top);
+    if (top > 0 || right > 0) {
+        cairo_rectangle(cr, 0, top, w - right, h - top);
         cairo_clip(cr);
     }
     draw_turning_space(cr, s, v, u);

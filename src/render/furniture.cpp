@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/paint.hpp"
+#include "render/words.hpp"
 
 namespace dragon::render {
 
@@ -86,26 +87,27 @@ bool same(const Rgba& a, const Rgba& b) { return a.r == b.r && a.g == b.g && a.b
 // What the picture's colours mean, in the order the eye meets them.
 std::vector<Entry> legend_entries(const Scene& s) {
     const Theme& t = s.theme;
+    const Words& w = words(s.language);
     std::vector<Entry> e;
     if (s.colour_by_speed) {
-        e.push_back({Swatch::outlined, t.head, "head (outlined)"});
-        e.push_back({Swatch::ramp, {}, "benches by speed"});
+        e.push_back({Swatch::outlined, t.head, w.head_outlined});
+        e.push_back({Swatch::ramp, {}, w.benches_by_speed});
     } else {
-        e.push_back({Swatch::bench, t.head, "head (bench 1)"});
-        e.push_back({Swatch::bench, t.body, "body"});
-        e.push_back({Swatch::bench, t.tail, "tail"});
+        e.push_back({Swatch::bench, t.head, w.head_bench});
+        e.push_back({Swatch::bench, t.body, w.body});
+        e.push_back({Swatch::bench, t.tail, w.tail});
     }
-    if (s.legend_touching) e.push_back({Swatch::bench, t.collision, "touching benches"});
+    if (s.legend_touching) e.push_back({Swatch::bench, t.collision, w.touching});
     bool in = false, curve = false, out = false;
     for (const auto& g : s.guides) {
         in = in || same(g.colour, t.guide);
         curve = curve || same(g.colour, t.s_curve);
         out = out || same(g.colour, t.guide_out);
     }
-    if (in) e.push_back({Swatch::line, t.guide, curve || out ? "path in" : "path"});
-    if (curve) e.push_back({Swatch::line, t.s_curve, "S-curve"});
-    if (out) e.push_back({Swatch::line, t.guide_out, "path out"});
-    if (s.turning_radius) e.push_back({Swatch::dashed, t.turning_space, "turning space"});
+    if (in) e.push_back({Swatch::line, t.guide, curve || out ? w.path_in : w.path});
+    if (curve) e.push_back({Swatch::line, t.s_curve, w.s_curve});
+    if (out) e.push_back({Swatch::line, t.guide_out, w.path_out});
+    if (s.turning_radius) e.push_back({Swatch::dashed, t.turning_space, w.turning_space});
     return e;
 }
 

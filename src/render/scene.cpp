@@ -8,6 +8,7 @@
 
 #include "dragon/render.hpp"
 #include "render/guide.hpp"
+#include "render/words.hpp"
 
 namespace dragon {
 
@@ -115,7 +116,7 @@ void add_guides(Scene& scene, const Simulation& sim, const Frame& frame) {
 
 // Benches lying across each other, past the first contact: in the touching colour, each
 // overlap's deepest corner marked, the deepest one labelled with its depth.
-void mark_overlaps(Scene& scene, const Frame& frame) {
+void mark_overlaps(Scene& scene, const Frame& frame, Language language) {
     for (const Overlap& o : overlaps(frame)) {
         if (o.depth < kTouchingDepth) break;  // deepest first: the rest only touch
         scene.overlaps.push_back(o);
@@ -125,9 +126,30 @@ void mark_overlaps(Scene& scene, const Frame& frame) {
     if (scene.overlaps.empty()) return;
     const Overlap& deepest = scene.overlaps.front();
     scene.labels.push_back({deepest.point,
-                            fmt::format("overlap {:.3f} m (benches {} and {})", deepest.depth, deepest.bench_a,
-                                        deepest.bench_b),
+                            fmt::format(fmt::runtime(render::words(language).overlap), deepest.depth,
+                                        deepest.bench_a, deepest.bench_b),
                             scene.theme.collision, 13.0, 6.0, -6.0, deepest.bench_a, 1});
+}
+
+// The two touching benches named on the picture, each a little way back along its own board
+// from the contact (the label rule moves them clear of everything else): which is the head
+// reads without the legend.
+void name_touching(Scene& scene, const Frame& frame, const CollisionMark& mark, Language language) {
+    const render::Words& w = render::words(language);
+    const int n = static_cast<int>(frame.benches.size());
+    for (int k : {mark.bench_a, mark.bench_b}) {
+        if (k < 1 || k > n) continue;
+        const Rect& r = frame.benches[static_cast<std::size_t>(k - 1)];
+        const double along = std::clamp(dot(mark.point - r.centre, r.axis), -r.half_length, r.half_length);
+        const Vec2 at = r.centre + 0.5 * along * r.axis;  // halfway between the board's middle and the contact
+        Label l;
+        l.pos = at;
+        l.text = k == 1 ? std::string(w.bench_head) : fmt::format(fmt::runtime(w.bench), k);
+        l.colour = scene.theme.text;
+        l.size_px = 13.0;
+        l.bench = k;
+        scene.labels.push_back(std::move(l));
+    }
 }
 
 // The whole dragon small (draw() marks the main view's box on it): where a close-up or a
@@ -174,8 +196,9 @@ Scene make_scene(const Simulation& sim, const Frame& frame, const SceneOptions& 
         for (int k : {opt.collision->bench_a, opt.collision->bench_b})
             if (k >= 1 && k <= n) scene.benches[k - 1].style = Scene::Style::collision;
         scene.collision = opt.collision;
+        if (opt.name_touching && opt.show_text) name_touching(scene, frame, *opt.collision, opt.language);
     }
-    if (opt.mark_overlaps) mark_overlaps(scene, frame);
+    if (opt.mark_overlaps) mark_overlaps(scene, frame, opt.language);
 
     scene.handles.reserve(frame.handles.size());
     for (const Handle& h : frame.handles) scene.handles.push_back(h.pos);
@@ -195,9 +218,10 @@ Scene make_scene(const Simulation& sim, const Frame& frame, const SceneOptions& 
     scene.show_colour_bar = opt.show_colour_bar;
     scene.show_text = opt.show_text;
     scene.annotation = opt.annotation.value_or(
-        fmt::format("t = {:.3f} s   pitch = {:.3g} m", frame.time, sc.coil_pitch()));
+        fmt::format(fmt::runtime(render::words(opt.language).annotation), frame.time, sc.coil_pitch()));
     scene.title_band = opt.title_band;
     scene.text_px = opt.text_px;
+    scene.language = opt.language;
     scene.legend = opt.show_legend;
     scene.legend_touching = opt.collision.has_value() || !scene.overlaps.empty();
     if (opt.show_inset && opt.camera.mode != Camera::Mode::fit_dragon) scene.inset = make_inset(sim, frame, opt, scene);
