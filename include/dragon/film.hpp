@@ -80,7 +80,8 @@ struct CaptionSpec {
 // One scene: a scenario on its path over [from, to], seen through a camera.
 struct ShotView {
     Scenario scenario;
-    std::string label;  // the scene's annotation (top left); empty: the scenario in words
+    // The scene's annotation (top left); unset: the scenario in words; empty: none.
+    std::optional<std::string> label;
     TimeRef from, to;
     CameraMove camera;
     bool speed_colours = false;
@@ -108,6 +109,9 @@ struct FilmSettings {
     int width = 1280, height = 720;
     double fps = 30.0;
     std::string theme = "light";
+    // The language of the film's own words (the clock's, the events' captions, the scenario in
+    // words, the legend); a storyboard's `lang` key.
+    Language language = Language::en;
     // The body text's size, px, for frames at a print size (a poster for a paper: Scene::text_px);
     // 0: text follows the frame's size.
     double text_px = 0.0;

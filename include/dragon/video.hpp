@@ -186,12 +186,13 @@ struct FilmLook {
 // the first contact where the range passes it (first_contact_covering; at `from`, "past the
 // first contact", when the range starts after it), and the end of the valid motion when `to`
 // is it.
+// Worded in `language`.
 std::vector<FilmEvent> clip_events(const Simulation& sim, double from, double to,
-                                   const std::optional<CollisionMark>& contact);
+                                   const std::optional<CollisionMark>& contact, Language language = Language::en);
 // The caption of a first contact: "first contact: bench 1 touches bench 9, t = 412.473838 s".
-std::string contact_caption(const CollisionMark& mark, double time);
+std::string contact_caption(const CollisionMark& mark, double time, Language language = Language::en);
 // What a film of `s` shows, in words, for its annotation: "Coiling in: pitch 0.55 m, head 1 m/s".
-std::string scenario_line(const Scenario& s);
+std::string scenario_line(const Scenario& s, Language language = Language::en);
 
 // One view for a stretch of motion, so the picture does not zoom as the dragon coils: it fits
 // the dragon at nine moments spread over [from, to] (it coils in or out monotonically, so a

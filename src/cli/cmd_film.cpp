@@ -12,6 +12,7 @@
 #include "cli/status.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/film.hpp"
+#include "dragon/language.hpp"
 #include "dragon/picture_size.hpp"
 #include "dragon/video.hpp"
 
@@ -24,6 +25,7 @@ struct FilmCliOptions {
     std::optional<int> crf, colours;
     std::optional<std::string> preset, tune;
     PrintFlags print;
+    std::optional<std::string> lang;
     bool quiet = false;
 };
 
@@ -37,6 +39,8 @@ void register_film(CLI::App& app, Registry& reg) {
     sub->add_option("--at", opt->at, "With a .png: the frame shown this many seconds into the film");
     sub->add_option("--size", opt->size, "Frame size WIDTHxHEIGHT, over the storyboard's [film] size");
     opt->print.add_to(sub);  // a poster's size on a page (its shape stays the frame's)
+    sub->add_option("--lang", opt->lang, "Language of the film's own words (clock, captions at the events, legend): en or "
+                                         "zh, over the storyboard's [film] lang");
     sub->add_option("--fps", opt->fps, "Frames per second, over the storyboard's [film] fps");
     sub->add_option("--crf", opt->crf, fmt::format("Quality: H.264 0-51 (default {}), VP9 0-63 (default {})",
                                                    kDefaultCrf.h264, kDefaultCrf.vp9));
@@ -73,6 +77,7 @@ void register_film(CLI::App& app, Registry& reg) {
             board.film.height = size.height;
         }
         if (opt->fps) board.film.fps = *opt->fps;
+        if (opt->lang) board.film.language = parse_language(*opt->lang);
         const std::optional<PrintSize> print = opt->print.resolve();
         if (print && !poster)
             throw InputError("a print size (--print, --width-in, --width-cm, --font-pt, --dpi) is for a poster frame "

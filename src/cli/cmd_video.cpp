@@ -44,6 +44,7 @@ struct VideoCliOptions {
     bool follow_head = false;
     std::optional<double> zoom;
     std::string theme = "light";
+    std::string lang = "en";
     bool colour_by_speed = false;
     bool no_guides = false, no_text = false, no_legend = false, no_inset = false;
     bool quiet = false;
@@ -132,6 +133,7 @@ void register_video(CLI::App& app, Registry& reg) {
     sub->add_option("--zoom", opt->zoom, "Show a square of this many metres, around the head with --follow-head, "
                                          "else around the centre (default: the whole dragon over the clip)");
     sub->add_option("--theme", opt->theme, "Colour theme: light, dark or a .toml file (default light)");
+    add_language_flag(sub, opt->lang);
     sub->add_flag("--speed-colours", opt->colour_by_speed, "Colour each bench by its speed, with a colour bar");
     sub->add_flag("--no-guides", opt->no_guides, "Leave out the path and the turning-space circle");
     sub->add_flag("--no-text", opt->no_text, "Leave out all text (clock, captions, legend, labels)");
@@ -170,6 +172,7 @@ void register_video(CLI::App& app, Registry& reg) {
         const Scenario s = opt->scenario.resolve();
         SceneOptions scene;
         scene.theme = load_theme(opt->theme);
+        scene.language = parse_language(opt->lang);
         scene.colour_by_speed = opt->colour_by_speed;
         scene.show_guides = scene.show_turning_space = !opt->no_guides;
         scene.show_text = !opt->no_text;
@@ -190,7 +193,7 @@ void register_video(CLI::App& app, Registry& reg) {
         FilmLook look;
         look.legend = !opt->no_legend;
         look.inset = !opt->no_inset;
-        look.events = clip_events(sim, clip.from, clip.to, end.mark);
+        look.events = clip_events(sim, clip.from, clip.to, end.mark, scene.language);
         const Animation anim(sim, clip, vo.fps, scene, end.mark, look);
         // A followed head is furthest from the origin at an end of the clip.
         if (opt->zoom)

@@ -9,6 +9,7 @@
 #include "render/cairo_handles.hpp"
 #include "film/film_plan.hpp"
 #include "render/paint.hpp"
+#include "render/words.hpp"
 
 namespace dragon {
 
@@ -102,7 +103,8 @@ Scene Film::scene_at(int shot, int local, int view) const {
     so.colour_by_speed = v.spec.speed_colours;
     if (v.speeds) so.speed_min = v.speeds->lo, so.speed_max = v.speeds->hi;
     so.show_guides = so.show_turning_space = v.spec.guides;
-    so.annotation = v.spec.label.empty() ? scenario_line(v.spec.scenario) : v.spec.label;
+    so.annotation = v.spec.label ? *v.spec.label : scenario_line(v.spec.scenario, impl_->settings.language);
+    so.language = impl_->settings.language;
     so.show_legend = sh.legend && view == 0;
     so.show_inset = sh.inset && (!is_fit(cam) || closing_in);
     so.show_text = sh.text;
@@ -112,8 +114,9 @@ Scene Film::scene_at(int shot, int local, int view) const {
     Scene s = make_scene(*v.sim, f, so);
     s.legend_touching = v.ends_on_contact;
     if (sh.clock) {
-        s.clock = fmt::format("t = {:.3f} s", t);
-        s.rate = local >= v.moving ? "held" : fmt::format("\u00d7{:.2g}", v.map.rate_at(t));
+        const render::Words& w = render::words(impl_->settings.language);
+        s.clock = fmt::format(fmt::runtime(w.clock), t);
+        s.rate = local >= v.moving ? std::string(w.held) : fmt::format("\u00d7{:.2g}", v.map.rate_at(t));
     }
     // One caption at a time: the latest to come up.
     for (auto it = v.captions.rbegin(); it != v.captions.rend(); ++it)

@@ -118,7 +118,8 @@ void plan_captions(const Resolver& r, const Shot& shot, ViewPlan& v, int count, 
         v.captions.push_back({text, first, end, last});
     };
     if (shot.events)
-        for (const FilmEvent& e : clip_events(*v.sim, v.from, v.to, v.ends_on_contact ? v.contact : std::nullopt))
+        for (const FilmEvent& e : clip_events(*v.sim, v.from, v.to, v.ends_on_contact ? v.contact : std::nullopt,
+                                                  r.board.film.language))
             add(e.caption, e.time, 3.0);
     for (std::size_t i = 0; i < shot.captions.size(); ++i) {
         const CaptionSpec& c = shot.captions[i];

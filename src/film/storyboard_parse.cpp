@@ -46,11 +46,13 @@ struct Override {
 constexpr Override overrides[] = {
     {"pitch", value::pitch},           {"speed", value::head_speed},     {"start_turn", value::start_turn},
     {"turn_radius", value::turn_radius}, {"turn_pitch", value::turn_pitch}, {"arc_ratio", value::arc_ratio},
-    {"bench_count", value::bench_count},
+    {"bench_count", value::bench_count}, {"head_length", value::head_length}, {"body_length", value::body_length},
+    {"width", value::width},             {"hole_offset", value::hole_offset},
 };
 
 const std::set<std::string> view_keys = {"scenario", "path",  "pitch", "speed",         "start_turn",
-                                         "turn_radius", "turn_pitch", "arc_ratio", "bench_count", "from",
+                                         "turn_radius", "turn_pitch", "arc_ratio", "bench_count", "head_length",
+                                         "body_length", "width", "hole_offset", "from",
                                          "to",       "camera", "speed_colours", "guides", "label"};
 
 struct Context {
@@ -97,6 +99,10 @@ Scenario scenario_of(const Where& w, const Context& cx, const toml::table& t, co
             if (o.value == value::turn_radius) s.path.turn_radius = v;
             if (o.value == value::turn_pitch) s.path.turn_pitch = v;
             if (o.value == value::arc_ratio) s.path.arc_ratio = v;
+            if (o.value == value::head_length) s.bench.head_length = v;
+            if (o.value == value::body_length) s.bench.body_length = v;
+            if (o.value == value::width) s.bench.width = v;
+            if (o.value == value::hole_offset) s.bench.hole_offset = v;
         }
         set |= o.value;
     }
@@ -254,7 +260,7 @@ Storyboard parse_storyboard(const std::string& toml_text, const std::string& fil
     if (const toml::node* f = root.get("film")) {
         const toml::table* t = f->as_table();
         if (!t) top.fail("film", "must be a table: [film]");
-        film::check_keys(top, *t, {"size", "fps", "theme", "scenario"}, "[film]");
+        film::check_keys(top, *t, {"size", "fps", "theme", "scenario", "lang"}, "[film]");
         if (const toml::node* n = t->get("size")) std::tie(board.film.width, board.film.height) = film::size(top, *n, "size");
         if (const toml::node* n = t->get("fps")) {
             // The video's range, checked here so that the error names this key.
@@ -264,6 +270,14 @@ Storyboard parse_storyboard(const std::string& toml_text, const std::string& fil
                                             board.film.fps, kMinVideoFps, kMaxVideoFps));
         }
         if (const toml::node* n = t->get("theme")) board.film.theme = film::text(top, *n, "theme");
+        if (const toml::node* n = t->get("lang")) {
+            const std::string code = film::text(top, *n, "lang");
+            try {
+                board.film.language = parse_language(code);
+            } catch (const InputError& e) {
+                top.fail("lang", fmt::format("\"{}\" is not allowed: {}", code, e.allowed()));
+            }
+        }
         if (const toml::node* n = t->get("scenario")) cx.default_scenario = film::text(top, *n, "scenario");
     }
     const toml::array* shots = root.get_as<toml::array>("shot");

@@ -27,11 +27,16 @@ using namespace render;  // View and its shapes
 
 // The view fits the picture less the colour bar's strip on the right and the title band on
 // top. Cut shapes keep a margin wider than any line outside the picture, so no cut edge shows.
-View make_view(const Scene& s, double w, double h, double right_room, double top_room, double u) {
+// Where the picture is wider than the view needs (a whole dragon in a 16:9 frame), the view
+// moves right of the title and legend at the top left (left_room), so they cover none of it.
+View make_view(const Scene& s, double w, double h, double right_room, double top_room, double left_room, double u) {
     const double avail = std::max(1.0, w - right_room), avail_h = std::max(1.0, h - top_room);
     const double scale = std::min(avail / s.view_width, avail_h / s.view_height);
     const render::Box picture{{0, 0}, {w, h}};
-    return {s.view_centre.x(), s.view_centre.y(), scale, 0.5 * avail, top_room + 0.5 * avail_h,
+    double cx = 0.5 * avail;
+    const double shown = s.view_width * scale, margin = 6 * u;
+    if (left_room > 0 && shown + left_room + margin <= avail) cx = std::max(cx, left_room + margin + 0.5 * shown);
+    return {s.view_centre.x(), s.view_centre.y(), scale, cx, top_room + 0.5 * avail_h,
             picture.grown(4 * (w + h)), picture.grown(32 * u)};
 }
 
@@ -238,7 +243,8 @@ void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
     const bool vector_surface = cairo_surface_get_type(cairo_get_target(cr)) != CAIRO_SURFACE_TYPE_IMAGE;
     const double right = render::colour_bar_room(s, un);
     const double top = s.title_band ? render::annotation_height(cr, s, un, w) : 0.0;
-    const View v = make_view(s, w, h, right, top, u);
+    const double left = render::left_furniture(cr, s, un, s.title_band ? w : w - right);
+    const View v = make_view(s, w, h, right, top, left, u);
 
     // The world runs under the furniture in the corners (no hard edge there); a title band and
     // the colour bar's strip are kept clear, the view fitting beside them: under the strip's

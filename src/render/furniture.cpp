@@ -151,17 +151,36 @@ void draw_swatch(cairo_t* cr, const Scene& s, const Entry& e, double x, double y
 
 }  // namespace
 
-Box draw_legend(cairo_t* cr, const Scene& s, const Units& un, double top) {
+namespace {
+// The legend's box below `top`, px; an empty box when it is left out: on a picture too small
+// for a legend at a readable size (a 320 x 180 GIF) it would hide the drawing it explains.
+Box legend_box(cairo_t* cr, const Scene& s, const Units& un, double top) {
     if (!s.legend || !s.show_text) return {{0, top}, {0, top}};
     const std::vector<Entry> entries = legend_entries(s);
-    const double size = un.text(12), row = 1.5 * size, sw = 1.6 * size, sh = 0.6 * size, pad = 8 * un.ut;
+    const double size = un.text(12), row = 1.5 * size, sw = 1.6 * size, pad = 8 * un.ut;
     double tw = 0;
     for (const auto& e : entries) tw = std::max(tw, text_width(cr, s.theme.font, size, e.label));
     const double x = 8 * un.u, y = top + 6 * un.u;
     const double bw = pad + sw + 0.6 * size + tw + pad, bh = pad + row * static_cast<double>(entries.size()) - (row - size) + pad;
-    // On a picture too small for a legend at a readable size (a 320 x 180 GIF), it would hide
-    // the drawing it explains: left out.
     if (bh > 0.45 * un.h || bw > 0.45 * un.w) return {{0, top}, {0, top}};
+    return {{x, y}, {x + bw, y + bh}};
+}
+}  // namespace
+
+double left_furniture(cairo_t* cr, const Scene& s, const Units& un, double right) {
+    // The legend's column: the annotation above it is one line or two across the top, over
+    // the view's edge at most; the legend's rows would cover a band of it.
+    if (!s.show_text || !s.legend) return 0.0;
+    const double below = !s.title_band && !s.annotation.empty() ? annotation_height(cr, s, un, right) : 2 * un.u;
+    return legend_box(cr, s, un, below).hi.x();
+}
+
+Box draw_legend(cairo_t* cr, const Scene& s, const Units& un, double top) {
+    const Box box = legend_box(cr, s, un, top);
+    if (box.hi.x() <= box.lo.x()) return box;
+    const std::vector<Entry> entries = legend_entries(s);
+    const double size = un.text(12), row = 1.5 * size, sw = 1.6 * size, sh = 0.6 * size, pad = 8 * un.ut;
+    const double x = box.lo.x(), y = box.lo.y(), bw = box.hi.x() - x, bh = box.hi.y() - y;
     backdrop(cr, s.theme, x, y, bw, bh);
     double cy = y + pad + 0.5 * size;
     for (const auto& e : entries) {
@@ -170,7 +189,7 @@ Box draw_legend(cairo_t* cr, const Scene& s, const Units& un, double top) {
         text(cr, s.theme.font, size, x + pad + sw + 0.6 * size, cy, e.label, 0.0, 0.5);
         cy += row;
     }
-    return {{x, y}, {x + bw, y + bh}};
+    return box;
 }
 
 Box draw_clock(cairo_t* cr, const Scene& s, const Units& un, double right) {
@@ -195,12 +214,15 @@ Box draw_clock(cairo_t* cr, const Scene& s, const Units& un, double right) {
 void draw_captions(cairo_t* cr, const Scene& s, const Units& un, double left, double right, double lift) {
     if (!s.show_text || s.captions.empty()) return;
     const double size = un.text(16), pad = 8 * un.ut, margin = 10 * un.u;
-    // Centred on the picture between the bottom corners' furniture, or above it when that
-    // leaves too little room for a sentence.
+    // Centred on the picture between the bottom corners' furniture; where that leaves too
+    // little room for a sentence, at the bottom beside the inset (over the scale bar while it
+    // shows: the bar is back when it fades); only with no room there either, above them all.
     const double half = std::min(0.5 * un.w - left, right - 0.5 * un.w) - margin;
     const bool between = 2 * half >= 0.4 * un.w;
-    const double room = (between ? 2 * half : un.w - 2 * margin) - 2 * pad;
-    double bottom = between ? un.h - margin : lift - margin;
+    const bool beside = !between && right - 2 * margin >= 0.45 * un.w;
+    const double centre = beside ? 0.5 * right : 0.5 * un.w;
+    const double room = (between ? 2 * half : beside ? right - 2 * margin : un.w - 2 * margin) - 2 * pad;
+    double bottom = between || beside ? un.h - margin : lift - margin;
     for (auto it = s.captions.rbegin(); it != s.captions.rend(); ++it) {
         if (it->opacity <= 0 || it->text.empty()) continue;
         const FittedText t = fit_text(cr, s.theme.font, size, it->text, room, true, 2, un.body_px > 0);
@@ -209,12 +231,12 @@ void draw_captions(cairo_t* cr, const Scene& s, const Units& un, double left, do
         const double line_h = 1.3 * t.size;
         const double bh = 2 * pad + line_h * static_cast<double>(t.lines.size()) - (line_h - t.size);
         const double top = bottom - bh;
-        backdrop(cr, s.theme, 0.5 * un.w - 0.5 * tw - pad, top, tw + 2 * pad, bh, 0.88 * it->opacity);
+        backdrop(cr, s.theme, centre - 0.5 * tw - pad, top, tw + 2 * pad, bh, 0.88 * it->opacity);
         Rgba ink = s.theme.text;
         ink.a *= it->opacity;
         set_colour(cr, ink);
         for (std::size_t i = 0; i < t.lines.size(); ++i)
-            text(cr, s.theme.font, t.size, 0.5 * un.w, top + pad + 0.5 * t.size + line_h * static_cast<double>(i),
+            text(cr, s.theme.font, t.size, centre, top + pad + 0.5 * t.size + line_h * static_cast<double>(i),
                  t.lines[i], 0.5, 0.5, true);
         bottom = top - 4 * un.u;
     }

@@ -29,6 +29,10 @@ double colour_bar_room(const Scene& s, const Units& un);
 // that tall keeps the view clear of it.
 double annotation_height(cairo_t* cr, const Scene& s, const Units& un, double right);
 
+// How far from the left edge the legend reaches, px (0 without one): a view with room beside
+// it is drawn clear of it.
+double left_furniture(cairo_t* cr, const Scene& s, const Units& un, double right);
+
 // Each returns the box it covers, px (an empty box at its corner when it drew nothing).
 // The clock, top right, its right edge at `right`.
 Box draw_clock(cairo_t* cr, const Scene& s, const Units& un, double right);

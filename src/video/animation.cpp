@@ -7,6 +7,7 @@
 
 #include "dragon/scenario.hpp"
 #include "dragon/video.hpp"
+#include "render/words.hpp"
 
 namespace dragon {
 
@@ -60,8 +61,9 @@ SpeedRange speed_range_over(const Simulation& sim, double from, double to) {
     return {lo, std::max(hi, lo + 1e-9)};
 }
 
-std::string scenario_line(const Scenario& s) {
-    return fmt::format("{}: pitch {:g} m, head {:g} m/s", s.path.kind == PathKind::spiral ? "Coiling in" : "Turnaround",
+std::string scenario_line(const Scenario& s, Language language) {
+    const render::Words& w = render::words(language);
+    return fmt::format(fmt::runtime(s.path.kind == PathKind::spiral ? w.coiling_in_line : w.turnaround_line),
                        s.coil_pitch(), s.head_speed);
 }
 
@@ -110,7 +112,7 @@ Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions 
     }
     scene_.show_legend = scene_.show_legend || look_.legend;
     // The clock tells the time: the annotation names what is shown instead.
-    if (look_.clock && !scene_.annotation) scene_.annotation = scenario_line(sim.scenario());
+    if (look_.clock && !scene_.annotation) scene_.annotation = scenario_line(sim.scenario(), scene_.language);
 }
 
 int Animation::frame_of(double t) const {
@@ -130,8 +132,9 @@ Scene Animation::scene_at(int index) const {
     Scene s = make_scene(*sim_, sim_->frame(t), opt);
     if (end_mark_) s.legend_touching = true;  // the legend keeps one set of entries for the clip
     if (look_.clock) {
-        s.clock = fmt::format("t = {:.3f} s", t);
-        s.rate = index >= moving_frames_ ? "held" : fmt::format("\u00d7{:g}", clip_.speedup);
+        const render::Words& w = render::words(scene_.language);
+        s.clock = fmt::format(fmt::runtime(w.clock), t);
+        s.rate = index >= moving_frames_ ? std::string(w.held) : fmt::format("\u00d7{:g}", clip_.speedup);
     }
     // One caption at a time: the latest event's (a later one takes the place of an earlier).
     for (auto it = look_.events.rbegin(); it != look_.events.rend() && s.captions.empty(); ++it) {

@@ -68,6 +68,7 @@ split = [{ arc_ratio = 1.5, label = "left" }, { from = -5, to = "end - 0" , arc_
     EXPECT_EQ(split.views[0].scenario.path.arc_ratio, 1.5);
     EXPECT_EQ(split.views[1].scenario.path.arc_ratio, 2.5);
     EXPECT_EQ(split.views[0].label, "left");
+    EXPECT_FALSE(split.views[1].label);  // unset: the scenario in words
     // The turnaround's own default range, and the pane's.
     EXPECT_EQ(split.views[0].from.offset, -100.0);
     EXPECT_EQ(split.views[1].from.offset, -5.0);
@@ -131,8 +132,53 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{"slow_fps", "[film]\nfps = 0.005\n" + ok_shot,
             "[film] fps = 0.005 is not allowed: use a rate from 0.01 to 240 frames per second"},
         Bad{"fast_fps", "[film]\nfps = 300\n" + ok_shot, "[film] fps = 300 is not allowed"},
-        Bad{"not_toml", "[[shot]\n", "is not valid TOML"}),
+        Bad{"not_toml", "[[shot]\n", "is not valid TOML"},
+        Bad{"bad_lang", "[film]\nlang = \"fr\"\n" + ok_shot, "[film] lang: \"fr\" is not allowed: use en (English) or zh"},
+        Bad{"bad_width", ok_shot + "width = 0\n", "key 'width'"},
+        Bad{"hole_past_the_board", ok_shot + "hole_offset = 1.2\n", "key 'hole_offset'"},
+        Bad{"fractional_count", ok_shot + "bench_count = 2.5\n", "shot 1: bench_count must be a whole number"}),
     [](const auto& info) { return std::string(info.param.name); });
+
+// The bench geometry set directly in a shot (or a split's pane), no scenario file needed; an
+// empty label means no annotation, not the scenario in words; [film] lang sets the film's words.
+TEST(Storyboard, BenchGeometryLabelsAndLanguage) {
+    const Storyboard b = parse(R"(
+[film]
+lang = "zh"
+[[shot]]
+from = 0
+to = 10
+rate = 5
+width = 0.25
+head_length = 3.0
+body_length = 2.0
+hole_offset = 0.25
+bench_count = 100
+label = ""
+[[shot]]
+duration = 4
+split = [{ width = 0.28 }, { body_length = 2.4, label = "龙身 2.4 m" }]
+)");
+    EXPECT_EQ(b.film.language, Language::zh);
+    const BenchSpec& bench = b.shots[0].views[0].scenario.bench;
+    EXPECT_EQ(bench.width, 0.25);
+    EXPECT_EQ(bench.head_length, 3.0);
+    EXPECT_EQ(bench.body_length, 2.0);
+    EXPECT_EQ(bench.hole_offset, 0.25);
+    EXPECT_EQ(bench.bench_count, 100);
+    ASSERT_TRUE(b.shots[0].views[0].label);
+    EXPECT_EQ(*b.shots[0].views[0].label, "");
+    EXPECT_EQ(b.shots[1].views[0].scenario.bench.width, 0.28);
+    EXPECT_EQ(b.shots[1].views[0].scenario.bench.body_length, BenchSpec{}.body_length);
+    EXPECT_EQ(b.shots[1].views[1].scenario.bench.body_length, 2.4);
+    EXPECT_EQ(*b.shots[1].views[1].label, "龙身 2.4 m");
+    // Drawn: the empty label leaves no annotation; the Chinese film's clock and legend in Chinese.
+    const Film film(b);
+    const Scene s = film.scene_at(0, 0);
+    EXPECT_EQ(s.annotation, "");
+    EXPECT_EQ(s.language, Language::zh);
+    EXPECT_EQ(film.scene_at(1, 0, 1).annotation, "龙身 2.4 m");
+}
 
 TEST(Storyboard, ScenarioFilesAreFoundBesideTheStoryboard) {
     const Storyboard b = parse(ok_shot + "scenario = \"assets/cumcm2024.toml\"\nspeed = 2\n");
