@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dragon/chain.hpp"
+#include "dragon/decimals.hpp"
 
 namespace dragon {
 
@@ -56,7 +57,6 @@ void write_result2_xlsx(const Frame& frame, AtomicFile& out);
 // CSV and JSON.
 void write_table(const std::vector<Frame>& frames, const std::string& path, int digits = kDefaultDigits);
 
-// Rounds to 6 decimals the way the tables print, without a negative zero.
-double round6(double v);
+
 
 }  // namespace dragon

@@ -1,7 +1,7 @@
 // dragon collide (Q2): the first moment two benches touch.
 #include <fmt/format.h>
 
-#include "cli/answers.hpp"
+#include "dragon/answers.hpp"
 #include "cli/commands.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"

@@ -9,7 +9,7 @@
 
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
-#include "cli/sweep_measures.hpp"
+#include "dragon/sweep_measures.hpp"
 #include "dragon/sweep.hpp"
 
 namespace dragon::cli {

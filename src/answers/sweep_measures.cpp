@@ -1,4 +1,4 @@
-#include "cli/sweep_measures.hpp"
+#include "dragon/sweep_measures.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -6,11 +6,10 @@
 
 #include <fmt/format.h>
 
-#include "cli/answers.hpp"
-#include "cli/scenario_flags.hpp"
+#include "dragon/answers.hpp"
 #include "dragon/turnaround.hpp"
 
-namespace dragon::cli {
+namespace dragon {
 
 namespace {
 
@@ -93,11 +92,11 @@ const std::vector<MeasureInfo>& sweep_measures() {
          with_jam({"time", "travel", "benches", "head_radius", "point", "tolerance", "evaluations", "from", "to",
                    "from_travel", "to_travel"}), "time",
          "first contact", "s", true},
-        {"min-pitch", PathKind::spiral, ScenarioUse::pitch_search().all(), min_pitch_measure,
+        {"min-pitch", PathKind::spiral, value::bench | value::head_speed | value::start_turn | value::turn_radius, min_pitch_measure,
          with_jam({"pitch", "below_range", "above_range", "turn_radius", "search", "grid", "intervals"}, {"guarantee"},
                   {"jam.pitch"}),
          "pitch", "minimum pitch", "m", false},
-        {"turnaround", PathKind::turnaround, ScenarioUse::turnaround_only().all(), turnaround_measure,
+        {"turnaround", PathKind::turnaround, values_read(PathKind::turnaround), turnaround_measure,
          with_jam({"r1", "r2", "length", "ratio", "pitch", "entry_radius", "entry", "exit", "c1", "c2", "joint", "angle1",
                    "angle2", "length1", "length2", "max_radius", "followable", "first_contact.time",
                    "first_contact.travel", "first_contact.benches", "first_contact.head_radius", "first_contact.point",
@@ -106,7 +105,7 @@ const std::vector<MeasureInfo>& sweep_measures() {
                    "clearance.evaluations", "clearance.from",
                    "clearance.to", "clearance.from_travel", "clearance.to_travel"}),
          "clearance.distance", "smallest clearance", "m", true},
-        {"max-speed", PathKind::turnaround, ScenarioUse::turnaround_only().all(), max_speed_measure,
+        {"max-speed", PathKind::turnaround, values_read(PathKind::turnaround), max_speed_measure,
          with_jam({"max_head_speed", "ratio", "unbounded", "handle", "time", "travel", "tied", "head_arc", "limit",
                    "from", "to", "from_travel", "to_travel"},
                   {"scan_step", "scan_travel", "candidates", "evaluations"}),
@@ -118,8 +117,7 @@ const std::vector<MeasureInfo>& sweep_measures() {
 const MeasureInfo& find_measure(const std::string& name) {
     for (const MeasureInfo& m : sweep_measures())
         if (name == m.name) return m;
-    throw InputError(fmt::format("--measure {} is not allowed: use collide, min-pitch, turnaround or max-speed",
-                                 name.empty() ? "''" : name));
+    throw InputError("measure", name.empty() ? "''" : name, "use collide, min-pitch, turnaround or max-speed");
 }
 
 RunWindow MeasureOptions::window(PathKind kind) const {
@@ -200,4 +198,4 @@ std::vector<std::string> flatten(const Json& answer, const std::vector<std::stri
     return cells;
 }
 
-}  // namespace dragon::cli
+}  // namespace dragon

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "cli/report.hpp"
+#include "dragon/json.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/window.hpp"
 
-namespace dragon::cli {
+namespace dragon {
 
 struct MeasureOptions;
 
@@ -80,4 +80,4 @@ std::string overlap_note_prefix(const MeasureInfo& m);
 // std::logic_error for a key of the answer that has no column (the list has fallen behind).
 std::vector<std::string> flatten(const Json& answer, const std::vector<std::string>& columns);
 
-}  // namespace dragon::cli
+}  // namespace dragon
