@@ -165,8 +165,8 @@ void register_solve(CLI::App& app, Registry& reg) {
         // The long workbooks (most of the time: libxlsxwriter formats and deflates every cell)
         // are written as soon as their tables are ready, while the other questions are answered.
         // (Nothing is written on stderr meanwhile: libxlsxwriter's closing mutes it.)
-        if (result1) contest.on_q1_table = [result1](const std::vector<Frame>& t) { write_result_xlsx(t, *result1); };
-        if (result4) contest.on_q4_table = [result4](const std::vector<Frame>& t) { write_result_xlsx(t, *result4); };
+        if (result1) contest.on_q1_table = [result1](const std::vector<Frame>& t) { write_result_xlsx(t, *result1, kWorkbooks); };
+        if (result4) contest.on_q4_table = [result4](const std::vector<Frame>& t) { write_result_xlsx(t, *result4, kWorkbooks); };
         const ContestAnswers a = solve_contest(s, contest);
         Json summary = Json::object();
 
@@ -193,7 +193,7 @@ void register_solve(CLI::App& app, Registry& reg) {
             }
             // With no contact, the contest's layout with no rows, so no older answer is left
             // looking like this one's.
-            write_result2_xlsx(q2->contact ? q2->contact->frame : Frame{}, *result2);
+            write_result2_xlsx(q2->contact ? q2->contact->frame : Frame{}, *result2, kWorkbooks);
             summary["q2"] = collide_answer(*q2, false);
             summary["q2"]["file"] = "result2.xlsx";
         }
