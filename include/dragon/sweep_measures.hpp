@@ -61,6 +61,9 @@ struct MeasureOptions {
     // (default_window), as the commands take them.
     std::optional<Along> from, to;
     RunWindow window(PathKind kind) const;
+    // The measures run on the calling thread (a sweep spreads its scenarios over the cores);
+    // they stop when this executor asks (Executor::stop_requested), if given.
+    const Executor* stop_source = nullptr;
 };
 
 // One measure on one scenario, on the calling thread.

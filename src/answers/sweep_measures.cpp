@@ -45,14 +45,14 @@ void leaves(const Json& v, const std::string& prefix, std::vector<std::string>& 
 // over the cores, and work nested inside one would only queue behind them. `jam` is set to
 // where the end of the valid motion cut the analysis short.
 Json collide_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
-    InlineExecutor here;
+    InlineExecutor here(options.stop_source);
     const CollideAnswer search = collide(Simulation(s), options.window(s.path.kind), &here);
     if (search.jam) jam = "no contact before the end of the valid motion: " + jam_sentence(*search.jam);
     return collide_answer(search, false);
 }
 
 Json min_pitch_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
-    InlineExecutor here;
+    InlineExecutor here(options.stop_source);
     dragon::MinPitchOptions o;
     o.grid = options.grid;
     o.executor = &here;
@@ -66,7 +66,7 @@ Json min_pitch_measure(const Scenario& s, const MeasureOptions& options, std::st
 // The command's design, followability and check for a first contact; its length study (two
 // dozen other S-curves) is the command's to print, not a value of this scenario.
 Json turnaround_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
-    InlineExecutor here;
+    InlineExecutor here(options.stop_source);
     const SCurve design = design_s_curve(s);
     const std::optional<Jam> design_jam = turnaround_jam(Simulation(s));
     const RunClearance clear = min_clearance(s, options.window(PathKind::turnaround), {}, &here);
@@ -76,7 +76,8 @@ Json turnaround_measure(const Scenario& s, const MeasureOptions& options, std::s
 }
 
 Json max_speed_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
-    const MaxSpeed v = max_head_speed(s, options.limit, options.window(PathKind::turnaround));
+    InlineExecutor here(options.stop_source);
+    const MaxSpeed v = max_head_speed(s, options.limit, options.window(PathKind::turnaround), &here);
     if (v.jam)
         jam = v.unbounded ? fmt::format("no head speed keeps every handle at or under {} m/s: {}", options.limit,
                                         jam_sentence(*v.jam))
