@@ -2,14 +2,12 @@
 #include "dragon/scenario.hpp"
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "dragon/input_file.hpp"
 #include "dragon/path.hpp"
 
 namespace dragon {
@@ -116,17 +114,10 @@ void validate(const Scenario& s, ScenarioValues values) {
 }
 
 LoadedScenario read_scenario_file(const std::string& path, Scenario base) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw InputError(fmt::format("scenario file '{}' is a folder: give a .toml file", path));
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("scenario file '{}' cannot be read", path));
-    std::stringstream text;
-    text << in.rdbuf();
-    if (in.bad()) throw InputError(fmt::format("scenario file '{}' cannot be read", path));
+    const std::string text = read_toml_input(path, "scenario file");
     toml::table root;
     try {
-        root = toml::parse(text.str(), path);
+        root = toml::parse(text, path);
     } catch (const toml::parse_error& e) {
         const auto& where = e.source().begin;
         throw InputError(fmt::format("scenario file '{}' is not valid TOML (line {}, column {}): {}",

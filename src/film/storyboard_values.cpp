@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "dragon/input_file.hpp"
 #include "dragon/picture_size.hpp"
 
 namespace dragon::film {
@@ -45,17 +46,24 @@ bool boolean(const Where& w, const toml::node& n, const std::string& key) {
 std::string text(const Where& w, const toml::node& n, const std::string& key) {
     const std::optional<std::string> v = n.value<std::string>();
     if (!v) w.fail(key, "must be a string");
+    // Drawing text costs time by its length on every frame it shows on (a 5 MB title took 19 s a
+    // frame): no text on a frame is longer than a few lines.
+    if (v->size() > kMaxStoryboardText)
+        w.fail(key, fmt::format("\"{}\" is not allowed: a text has at most {} characters", shown_text(*v, 40),
+                                kMaxStoryboardText));
     return *v;
 }
 
 TimeRef time_ref(const Where& w, const toml::node& n, const std::string& key) {
     if (n.is_number()) return {TimeRef::Anchor::time, number(w, n, key)};
-    const std::string s = n.is_string() ? *n.value<std::string>() : std::string();
+    if (!n.is_string())
+        w.fail(key, "must be a moment: a number of seconds, or a string: collision, boundary or end, optionally "
+                    "with + or - seconds (\"collision - 5\")");
+    const std::string s = text(w, n, key);
     const auto bad = [&] {
         w.fail(key, fmt::format("'{}' is not a moment: give seconds, or collision, boundary or end, optionally "
-                                "with + or - seconds (\"collision - 5\")", s));
+                                "with + or - seconds (\"collision - 5\")", shown_text(s, 40)));
     };
-    if (!n.is_string()) bad();
     std::size_t i = 0;
     while (i < s.size() && std::isalpha(static_cast<unsigned char>(s[i]))) ++i;
     const std::string word = s.substr(0, i);
