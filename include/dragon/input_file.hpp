@@ -22,7 +22,9 @@ inline constexpr std::size_t kMaxTomlBytes = std::size_t{1} << 20;
 // socket), cannot be opened or read (with the system's reason). Closes it when destroyed.
 class InputFile {
 public:
-    InputFile(const std::string& path, std::string what, const char* expected = "a file");
+    // While a RunOutputs is open, the file is one of the run's inputs, which no output may be;
+    // `output_too`: it is the run's own output, read to be gone on with (a sweep's --resume).
+    InputFile(const std::string& path, std::string what, const char* expected = "a file", bool output_too = false);
     ~InputFile();
     InputFile(const InputFile&) = delete;
     InputFile& operator=(const InputFile&) = delete;

@@ -85,9 +85,7 @@ void register_solve(CLI::App& app, Registry& reg) {
                                            fmt::format("no question of --only {} reads it", fmt::join(opt->only, ",")));
         s.path.kind = PathKind::spiral;
         namespace fs = std::filesystem;
-        std::error_code ec;
-        fs::create_directories(opt->dir, ec);
-        if (!fs::is_directory(opt->dir))
+        if (!make_output_folder(opt->dir))
             throw InputError(fmt::format("-o {} is not allowed: the folder cannot be created", opt->dir));
 
         // Every target is checked, and its temporary file made, before any work: a folder or an

@@ -7,7 +7,9 @@
 
 #include "cli/progress.hpp"
 #include "cli/status.hpp"
+#include "cli/sweep_row_check.hpp"
 #include "dragon/atomic_file.hpp"
+#include "dragon/input_file.hpp"
 
 namespace dragon::cli {
 
@@ -23,7 +25,14 @@ void check_output(const SweepOutput& o) {
     if (extension_of(o.out) != ".csv")
         throw InputError(fmt::format("-o {} has extension '{}': a sweep writes .csv", o.out, extension_of(o.out)));
     std::error_code ec;
-    if (fs::exists(partial_path(o.out), ec) && !o.resume)
+    const fs::file_status partial = fs::symlink_status(partial_path(o.out), ec);
+    // A link there is none of the sweep's making: its rows would be read from, and the finished
+    // file renamed from, wherever it points.
+    if (fs::is_symlink(partial))
+        throw InputError(fmt::format("-o {} is not allowed: {} is a symbolic link, and a sweep keeps its unfinished "
+                                     "rows in a plain file of its own; remove the link", shown_text(o.out, 4096),
+                                     shown_text(partial_path(o.out), 4096)));
+    if (fs::exists(partial) && !o.resume)
         throw InputError(fmt::format("-o {} is not allowed: {} holds the rows of an unfinished sweep; add --resume to "
                                      "go on with it, or remove it", o.out, partial_path(o.out)));
     AtomicFile probe(o.out);  // a folder in the way, or one that takes no files, fails now
@@ -36,32 +45,35 @@ namespace {
 std::size_t take_existing(const SweepSetup& setup, const std::string& path, const std::vector<std::string>& preamble,
                           std::vector<bool>& done, SweepTally& tally,
                           const std::function<void(const std::string&)>& on_row) {
-    const std::size_t naxes = setup.grid.axes().size();
-    std::size_t number = 0;
+    std::size_t number = preamble.size();  // the line being read
     const RowFileScan scan = scan_row_file(
         path, preamble.size(),
         [&](const std::vector<std::string>& found) {
-            if (found != preamble)
-                throw InputError(fmt::format("--resume is not allowed: '{}' holds the rows of another sweep (its "
-                                             "first lines differ from this one's); run the same sweep, or remove it",
-                                             path));
+            const std::string why = found[0] != preamble[0] ? spec_difference(found[0], preamble[0])
+                                    : found[1] != preamble[1] ? "its header (line 2) differs from this sweep's"
+                                                              : "";
+            if (!why.empty())
+                throw InputError(fmt::format("--resume is not allowed: '{}' holds the rows of another sweep: {}; run "
+                                             "the same sweep, or remove it", shown_text(path, 4096), why));
         },
         [&](const std::string& row) {
             ++number;
-            const std::vector<std::string> fields = split_csv(row);
-            const std::optional<std::size_t> index =
-                fields.size() < naxes ? std::nullopt
-                                      : setup.grid.index_of(std::vector<std::string>(fields.begin(), fields.begin() + static_cast<long>(naxes)));
-            if (!index || !setup.shard.holds(*index))
-                throw InputError(fmt::format("--resume is not allowed: row {} of '{}' is no scenario of this sweep's "
-                                             "part: {:.80}", number, path, row));
-            if (done[*index])
-                throw InputError(fmt::format("--resume is not allowed: '{}' holds the scenario {} twice", path,
-                                             csv_line(setup.grid.cells(*index))));
-            done[*index] = true;
+            const RowCheck check = check_row(setup, row);
+            if (!check.index)
+                throw InputError(fmt::format("--resume is not allowed: line {} of '{}' is not a row of this sweep: {}: "
+                                             "{}", number, shown_text(path, 4096), check.problem, shown_text(row, 60)));
+            if (done[*check.index])
+                throw InputError(fmt::format("--resume is not allowed: '{}' holds the scenario {} twice (line {})",
+                                             shown_text(path, 4096), csv_line(setup.grid.cells(*check.index)), number));
+            done[*check.index] = true;
             ++tally.done_before;
             on_row(row);
-        });
+        },
+        [&] {
+            RowFileLimits limits = row_limits(setup, "sweep rows");
+            limits.output_too = true;  // this sweep's own rows, gone on with: -o may well be the file
+            return limits;
+        }());
     return scan.complete_bytes;
 }
 
@@ -77,7 +89,7 @@ SweepTally run_rows(const SweepSetup& setup, const SweepOutput& o, const std::fu
         const std::string partial = partial_path(o.out);
         std::error_code ec;
         std::string source = o.out;  // where the rows gone on with were
-        if (o.resume && fs::exists(partial, ec)) {
+        if (o.resume && fs::exists(fs::symlink_status(partial, ec))) {
             source = partial;
             log = RowLog::reopen(partial, take_existing(setup, partial, preamble, done, tally, on_row));
         } else if (o.resume && fs::exists(o.out, ec)) {

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "dragon/input_file.hpp"
+
 namespace dragon::cli {
 
 namespace {
@@ -177,6 +179,30 @@ SweepSetup read_spec_line(const std::string& line, const std::string& file) {
     } catch (const Json::exception& e) {
         throw InputError(fmt::format("'{}' is not the rows of a dragon sweep: its first line: {}", file, e.what()));
     }
+}
+
+std::string spec_difference(const std::string& found, const std::string& expected) {
+    if (found.rfind(kSpecPrefix, 0) != 0)
+        return fmt::format("its first line '{}' is not what a sweep writes (# dragon sweep {{...}})", shown_text(found, 60));
+    const Json a = Json::parse(found.substr(std::string(kSpecPrefix).size()), nullptr, false);
+    const Json b = Json::parse(expected.substr(std::string(kSpecPrefix).size()), nullptr, false);
+    if (a.is_discarded() || !a.is_object()) return "its first line holds no sweep (it is not JSON after '# dragon sweep')";
+    const auto shown = [](const Json& v) { return shown_text(v.dump(-1, ' ', false, Json::error_handler_t::replace), 60); };
+    for (const auto& [key, value] : b.items()) {
+        if (!a.contains(key)) return fmt::format("its first line has no '{}'", key);
+        if (a[key] == value) continue;
+        // The axes one by one: which values differ is what the reader needs.
+        if (key == "vary" && a[key].is_object())
+            for (const auto& [name, cells] : value.items())
+                if (!a[key].contains(name) || a[key][name] != cells)
+                    return fmt::format("it varies {} {}, and this sweep {}", name,
+                                       a[key].contains(name) ? "over " + shown(a[key][name]) : "not at all",
+                                       "over " + shown(cells));
+        return fmt::format("its first line's {} is {}, and this sweep's {}", key, shown(a[key]), shown(value));
+    }
+    for (const auto& [key, value] : a.items())
+        if (!b.contains(key)) return fmt::format("its first line has '{}', which this sweep has not", key);
+    return "its first line differs";
 }
 
 std::string whole_spec_line(const std::string& line, const std::string& file) {

@@ -10,6 +10,8 @@
 
 #include <fmt/format.h>
 
+#include "core/run_outputs.hpp"
+
 namespace dragon {
 
 namespace {
@@ -41,7 +43,7 @@ std::string shown_text(const std::string& text, std::size_t most) {
     return out;
 }
 
-InputFile::InputFile(const std::string& path, std::string what, const char* expected)
+InputFile::InputFile(const std::string& path, std::string what, const char* expected, bool output_too)
     : path_(path), what_(std::move(what)) {
     // Not blocking: opening a FIFO for reading would otherwise wait for a writer for ever.
     fd_ = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
@@ -63,6 +65,14 @@ InputFile::InputFile(const std::string& path, std::string what, const char* expe
     }
     // A regular file never blocks; the flag only mattered for the open.
     ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) & ~O_NONBLOCK);
+    if (!output_too) {
+        try {
+            run_outputs::note_input(st.st_dev, st.st_ino, what_, path_);
+        } catch (...) {
+            ::close(fd_);
+            throw;
+        }
+    }
 }
 
 InputFile::~InputFile() {
