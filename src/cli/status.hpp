@@ -11,17 +11,20 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "dragon/input_file.hpp"
+
 namespace dragon::cli {
 
 inline void add_quiet_flag(CLI::App* sub, bool& quiet) {
     sub->add_flag("-q,--quiet", quiet, "Nothing on stderr but errors: no progress line, no 'wrote' lines");
 }
 
-// One status line on stderr, unless quiet.
+// One status line on stderr, unless quiet: one line whatever a name in it holds (-o $'a\nb.csv'
+// is shown as a\nb.csv).
 template <typename... A>
 void status(bool quiet, fmt::format_string<A...> f, A&&... args) {
     if (quiet) return;
-    fmt::print(stderr, "{}\n", fmt::format(f, std::forward<A>(args)...));
+    fmt::print(stderr, "{}\n", shown_text(fmt::format(f, std::forward<A>(args)...), 8192));
 }
 
 // Throws std::system_error if what was printed on stdout did not all reach it (a full disk, a

@@ -1,6 +1,10 @@
 #include "cli/sweep_setup.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -24,25 +28,86 @@ bool has_measure(const std::vector<const MeasureInfo*>& measures, const char* na
     return std::any_of(measures.begin(), measures.end(), [&](const MeasureInfo* m) { return std::string(m->name) == name; });
 }
 
-// The file's [measure] options under the flags: a flag given wins.
-void take_file_options(const SweepFile& f, const std::string& path, SweepRequest& req) {
+// What min-pitch and max-speed refuse in an option whatever the scenario, in their words (the
+// rules of min_pitch() and max_head_speed()): a sweep refuses it once, up front, rather than
+// writing "refused" into every row. What depends on the scenario (a bound below its width)
+// stays a row's refusal.
+std::optional<std::string> limit_problem(double limit) {
+    if (!std::isfinite(limit) || limit <= 0.0) return "it must be a finite speed > 0 m/s";
+    return std::nullopt;
+}
+std::optional<std::string> grid_problem(double grid) {
+    if (!(grid > 0.0) || !std::isfinite(grid)) return "give a pitch spacing above 0, in m";
+    return std::nullopt;
+}
+constexpr double kMaxPitch = 1e3;  // m, the largest pitch a scenario takes
+
+// The options of the measures, checked: `name` words each (a flag, or a sweep file's key).
+void check_options(const MeasureOptions& o, const std::vector<const MeasureInfo*>& measures,
+                   const std::function<std::string(const char* option)>& name) {
+    if (has_measure(measures, "max-speed"))
+        if (const auto why = limit_problem(o.limit))
+            throw InputError(fmt::format("{} {} is not allowed: {}", name("limit"), error_value(o.limit), *why));
+    if (!has_measure(measures, "min-pitch")) return;
+    if (const auto why = grid_problem(o.grid))
+        throw InputError(fmt::format("{} {} is not allowed: {}", name("grid"), error_value(o.grid), *why));
+    for (const auto& [bound, option] : {std::pair{&o.lo, "lo"}, std::pair{&o.hi, "hi"}})
+        if (!bound->above_width && !(bound->offset <= kMaxPitch))
+            throw InputError(fmt::format("{} {} is not allowed: a pitch is at most {} m", name(option),
+                                         error_value(bound->offset), kMaxPitch));
+    if (!o.lo.above_width && !o.hi.above_width) {
+        if (!(o.hi.offset > o.lo.offset))
+            throw InputError(fmt::format("{} {} is not allowed with {} {}: the search needs lo < hi", name("hi"),
+                                         error_value(o.hi.offset), name("lo"), error_value(o.lo.offset)));
+        const double steps = std::ceil((o.hi.offset - o.lo.offset) / o.grid * (1.0 - 1e-12));
+        if (steps > kMaxPitchGridSteps)
+            throw InputError(fmt::format("{} {} is not allowed: it makes {:.3g} grid steps over [{}, {}]; at most {}",
+                                         name("grid"), error_value(o.grid), steps, o.lo.offset, o.hi.offset,
+                                         kMaxPitchGridSteps));
+    }
+}
+
+// The file's [measure] options under the flags: a flag given wins. Each is checked as the flag
+// would be, and named by its key.
+void take_file_options(const SweepFile& f, const std::string& path, SweepRequest& req,
+                       const std::vector<const MeasureInfo*>& measures) {
+    MeasureOptions from_file;
     for (const SweepFile::Option& o : f.options) {
-        const std::string where = fmt::format("sweep file '{}': [{}] {}", path, o.measure, o.key);
+        const std::string where = fmt::format("sweep file '{}': [{}] {}", shown_text(path, 4096), shown_text(o.measure),
+                                              shown_text(o.key));
         const auto number = [&] {
             char* end = nullptr;
             const double v = std::strtod(o.value.c_str(), &end);
             if (o.value.empty() || end != o.value.c_str() + o.value.size())
-                throw InputError(fmt::format("{} = {} is not allowed: give a number", where, o.value));
+                throw InputError(fmt::format("{} = {} is not allowed: give a number", where, shown_text(o.value)));
             return v;
         };
-        if (o.measure == "min-pitch" && o.key == "lo") req.lo = req.lo.value_or(o.value);
-        else if (o.measure == "min-pitch" && o.key == "hi") req.hi = req.hi.value_or(o.value);
-        else if (o.measure == "min-pitch" && o.key == "grid") req.grid = req.grid.value_or(number());
-        else if (o.measure == "max-speed" && o.key == "limit") req.limit = req.limit.value_or(number());
-        else
+        if (o.measure == "min-pitch" && o.key == "lo") {
+            from_file.lo = parse_pitch_bound(where + " =", o.value);
+            req.lo = req.lo.value_or(o.value);
+        } else if (o.measure == "min-pitch" && o.key == "hi") {
+            from_file.hi = parse_pitch_bound(where + " =", o.value);
+            req.hi = req.hi.value_or(o.value);
+        } else if (o.measure == "min-pitch" && o.key == "grid") {
+            from_file.grid = number();
+            if (const auto why = grid_problem(from_file.grid))
+                throw InputError(fmt::format("{} = {} is not allowed: {}", where, shown_text(o.value), *why));
+            req.grid = req.grid.value_or(from_file.grid);
+        } else if (o.measure == "max-speed" && o.key == "limit") {
+            from_file.limit = number();
+            if (const auto why = limit_problem(from_file.limit))
+                throw InputError(fmt::format("{} = {} is not allowed: {}", where, shown_text(o.value), *why));
+            req.limit = req.limit.value_or(from_file.limit);
+        } else {
             throw InputError(fmt::format("{} is not an option a sweep takes ([min-pitch] lo, hi, grid; [max-speed] "
                                          "limit)", where));
+        }
     }
+    // The file's own values, each as the file gives it (a flag over one does not excuse it).
+    check_options(from_file, measures, [&](const char* option) {
+        const std::string measure = std::string(option) == "limit" ? "max-speed" : "min-pitch";
+        return fmt::format("sweep file '{}': [{}] {} =", shown_text(path, 4096), measure, option);
+    });
 }
 
 }  // namespace
@@ -61,7 +126,9 @@ SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags) {
         vary.insert(vary.end(), req.vary.begin(), req.vary.end());
         req.vary = vary;
         if (req.measures.empty()) req.measures = f.measures;
-        take_file_options(f, req.file, req);
+        std::vector<const MeasureInfo*> all_measures;
+        for (const MeasureInfo& m : sweep_measures()) all_measures.push_back(&m);
+        take_file_options(f, req.file, req, all_measures);
         flags.fill(f.scenario, f.fixed, fmt::format("sweep file '{}': [fixed]", req.file));
     }
     std::vector<Axis> axes;
@@ -107,6 +174,7 @@ SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags) {
     if (req.hi) options.hi = parse_pitch_bound("--hi", *req.hi);
     if (req.grid) options.grid = *req.grid;
     if (req.limit) options.limit = *req.limit;
+    check_options(options, measures, [](const char* option) { return fmt::format("--{}", option); });
     return {std::move(grid), std::move(measures), base, fixed, options, parse_shard(req.shard.empty() ? "1/1" : req.shard)};
 }
 

@@ -2,6 +2,8 @@
 #include "dragon/scenario.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <set>
 
 #include <fmt/format.h>
@@ -135,15 +137,19 @@ LoadedScenario read_scenario_file(const std::string& path, Scenario base) {
                                          path, name, name));
         if (node.is_table())
             throw InputError(fmt::format("scenario file '{}': unknown section [{}] (allowed: [dragon], [path], "
-                                         "[motion])", path, name));
+                                         "[motion])", shown_text(path, 4096), shown_text(name)));
         throw InputError(fmt::format("scenario file '{}': key '{}' is outside any section: keys belong under "
-                                     "[dragon], [path] or [motion]", path, name));
+                                     "[dragon], [path] or [motion]", shown_text(path, 4096), shown_text(name)));
     }
     auto number = [&](const toml::table& t, const std::string& section, const std::string& key, double& dst,
                       ScenarioValues v) {
         const toml::node* n = t.get(key);
         if (!n) return;
-        if (auto x = n->value<double>()) {
+        // A whole number too is a number, however large: out of range is validate()'s to say
+        // (value<double>() gives none for an integer a double cannot hold exactly).
+        std::optional<double> x = n->value<double>();
+        if (!x && n->is_integer()) x = static_cast<double>(*n->value_exact<std::int64_t>());
+        if (x) {
             dst = *x;
             out.values |= v;
             return;
@@ -158,7 +164,7 @@ LoadedScenario read_scenario_file(const std::string& path, Scenario base) {
                 std::string list;
                 for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
                 throw InputError(fmt::format("scenario file '{}': unknown key [{}] {} (allowed: {})",
-                                             path, section, key.str(), list));
+                                             shown_text(path, 4096), section, shown_text(std::string(key.str())), list));
             }
         }
     };

@@ -65,14 +65,16 @@ SweepFile read_sweep_file(const std::string& path) {
             for (const auto& [k, v] : *t) {
                 const std::optional<std::string> value = as_text(v);
                 if (!value)
-                    throw InputError(fmt::format("sweep file '{}': [{}] {} must be a number or a string", path, name,
-                                                 k.str()));
+                    throw InputError(fmt::format("sweep file '{}': [{}] {} must be a number or a string",
+                                                 shown_text(path, 4096), shown_text(name),
+                                                 shown_text(std::string(k.str()))));
                 if (name == "fixed") out.fixed.emplace_back(std::string(k.str()), *value);
                 else out.options.push_back({name, std::string(k.str()), *value});
             }
         } else {
             throw InputError(fmt::format("sweep file '{}': unknown key '{}' (allowed: measure, vary, scenario, "
-                                         "[fixed] and a table of options per measure)", path, name));
+                                         "[fixed] and a table of options per measure)", shown_text(path, 4096),
+                                         shown_text(name)));
         }
     }
     return out;

@@ -72,7 +72,7 @@ Scenario scenario_of(const Where& w, Context& cx, const toml::table& t, const st
         const std::string kind = film::text(w, *n, prefix + "path");
         if (kind == "spiral") s.path.kind = PathKind::spiral;
         else if (kind == "turnaround") s.path.kind = PathKind::turnaround;
-        else w.fail(prefix + "path", fmt::format("'{}' is not a path: use \"spiral\" or \"turnaround\"", kind));
+        else w.fail(prefix + "path", fmt::format("'{}' is not a path: use \"spiral\" or \"turnaround\"", shown_text(kind)));
     }
     ScenarioValues set = 0;
     for (const Override& o : overrides) {
