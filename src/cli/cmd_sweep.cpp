@@ -1,7 +1,10 @@
 // dragon sweep: the answers mapped over the design space; dragon sweep merge: a sweep's parts
 // joined. Thin: the grid, rows and runs are the library's (dragon/sweep.hpp), the answers the
 // commands' (cli/answers.hpp).
+#include <algorithm>
+#include <cstdio>
 #include <optional>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -61,13 +64,31 @@ int run_merge(const SweepOptions& opt) {
     return 0;
 }
 
+// More workers than scenarios, or than a few per core, only wait (and each is a thread: 100000
+// of them ran for ten minutes without a row).
+constexpr int kWorkersPerCore = 4;
+
+// The workers the sweep runs on: --workers, capped at the scenarios of this run and at
+// kWorkersPerCore a core, with a note when the cap takes some away; else one per core.
+void set_workers(const std::optional<int>& asked, std::size_t scenarios, bool quiet) {
+    if (!asked) return;
+    if (*asked < 1) throw InputError(fmt::format("--workers {} is not allowed: at least 1", *asked));
+    const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    const int most = static_cast<int>(std::min<std::size_t>(std::max<std::size_t>(scenarios, 1),
+                                                            static_cast<std::size_t>(kWorkersPerCore * cores)));
+    const int workers = std::min(*asked, most);
+    if (workers < *asked && !quiet)
+        fmt::print(stderr, "dragon: note: --workers {}: {} run at once (at most one per scenario, {} here, and {} per "
+                           "core, {} here)\n", *asked, workers, scenarios, kWorkersPerCore, kWorkersPerCore * cores);
+    set_default_workers(workers);
+}
+
 int run(SweepOptions& opt) {
     if (opt.merge->parsed()) return run_merge(opt);
-    if (opt.workers) {
-        if (*opt.workers < 1) throw InputError(fmt::format("--workers {} is not allowed: at least 1", *opt.workers));
-        set_default_workers(*opt.workers);
-    }
+    if (opt.workers && *opt.workers < 1)
+        throw InputError(fmt::format("--workers {} is not allowed: at least 1", *opt.workers));
     const SweepSetup setup = make_setup(opt.request, opt.scenario);
+    set_workers(opt.workers, setup.shard.size(setup.grid.size()), opt.output.quiet);
     check_output(opt.output);
     if (!opt.plot.empty()) {
         check_plot(setup, opt.plot);
@@ -117,7 +138,9 @@ void register_sweep(CLI::App& app, Registry& reg) {
     sub->add_option("--shard", opt->request.shard, "K/N: run only the K-th of N disjoint parts (merge them after)");
     sub->add_option("--plot", opt->plot, "Also draw the map (.png, .svg or .pdf): line plots over one varied value, heat "
                                          "maps over two");
-    sub->add_option("--workers", opt->workers, "Scenarios run at once (default: one per core)");
+    sub->add_option("--workers", opt->workers,
+                    fmt::format("Scenarios run at once (default: one per core; at most one per scenario and {} per "
+                                "core: more would only wait)", kWorkersPerCore));
     add_quiet_flag(sub, opt->output.quiet);
 
     opt->merge = sub->add_subcommand("merge", "Joins a sweep's parts (its shards) into one file, checking every scenario "
