@@ -104,8 +104,14 @@ int run(SweepOptions& opt) {
         status(opt.output.quiet, "wrote {}: {} rows{}", opt.output.out, t.done_before + t.made,
                t.done_before ? fmt::format(" ({} new)", t.made) : "");
     if (maps) write_plot(opt.plot, *maps, opt.output.quiet);
+    // A run that fails leaves no finished file: the rows stay in the partial one, and --resume
+    // makes the failed rows again.
     if (t.failed > 0)
-        throw std::runtime_error(fmt::format("{} of {} scenarios failed (their rows' status says why)", t.failed, t.made));
+        throw std::runtime_error(fmt::format(
+            "{} of {} scenarios failed (their rows' status says why){}", t.failed, t.made,
+            opt.output.out.empty() ? ""
+                                   : fmt::format("; the rows stay in {}, and --resume makes the failed ones again",
+                                                 partial_path(opt.output.out))));
     return 0;
 }
 

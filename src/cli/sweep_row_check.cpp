@@ -58,7 +58,7 @@ RowCheck check_row(const SweepSetup& setup, const std::string& line) {
                                               columns[k], cells[k].size(), kMaxCellBytes)};
     const std::string& status = cells.back();
     std::size_t column = naxes;
-    bool any_note = false;
+    bool any_note = false, failed = false;
     for (const MeasureInfo* m : setup.measures) {
         bool answered = false;
         for (std::size_t k = 0; k < m->columns.size(); ++k, ++column) {
@@ -69,6 +69,7 @@ RowCheck check_row(const SweepSetup& setup, const std::string& line) {
                 return {std::nullopt, fmt::format("its {} cell '{}' does not read as the number, list or object a "
                                                   "sweep writes", columns[column], shown_text(cell, 40))};
         }
+        failed = failed || noted(status, "failed", m->name);
         const bool refused = noted(status, "refused", m->name) || noted(status, "failed", m->name);
         any_note = any_note || refused || noted(status, "jam", m->name);
         if (!answered && !refused)
@@ -81,7 +82,7 @@ RowCheck check_row(const SweepSetup& setup, const std::string& line) {
     if (status != "ok" && !any_note)
         return {std::nullopt, fmt::format("its status '{}' is neither ok nor a measure's note (\"jam (NAME): ...\", "
                                           "\"refused (NAME): ...\", \"failed (NAME): ...\")", shown_text(status, 40))};
-    return {index, ""};
+    return {index, "", failed};
 }
 
 }  // namespace dragon::cli

@@ -32,6 +32,7 @@ RowFileLimits row_limits(const SweepSetup& setup, const std::string& what);
 struct RowCheck {
     std::optional<std::size_t> index;  // the scenario, when the row is good
     std::string problem;               // else why not
+    bool failed = false;               // a good row whose status notes a measure as failed
 };
 RowCheck check_row(const SweepSetup& setup, const std::string& line);
 

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <memory>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -40,12 +42,23 @@ void check_output(const SweepOutput& o) {
 
 namespace {
 
-// The rows already written for this sweep (resuming): marks them done and hands each to on_row.
-// Returns where its complete lines end.
-std::size_t take_existing(const SweepSetup& setup, const std::string& path, const std::vector<std::string>& preamble,
-                          std::vector<bool>& done, SweepTally& tally,
-                          const std::function<void(const std::string&)>& on_row) {
+RowFileLimits own_rows_limits(const SweepSetup& setup) {
+    RowFileLimits limits = row_limits(setup, "sweep rows");
+    limits.output_too = true;  // this sweep's own rows, gone on with: -o may well be the file
+    return limits;
+}
+
+// The rows already written for this sweep (resuming): marks them done and hands each to
+// on_row. A row whose measure failed (for a reason not the scenario's) is not taken: it is
+// computed again. Returns where the file's complete lines end, and the failed rows' lines.
+struct Existing {
+    std::size_t complete_bytes = 0;
+    std::set<std::size_t> failed_lines;
+};
+Existing take_existing(const SweepSetup& setup, const std::string& path, const std::vector<std::string>& preamble,
+                       std::vector<bool>& done, SweepTally& tally, const std::function<void(const std::string&)>& on_row) {
     std::size_t number = preamble.size();  // the line being read
+    Existing out;
     const RowFileScan scan = scan_row_file(
         path, preamble.size(),
         [&](const std::vector<std::string>& found) {
@@ -65,16 +78,45 @@ std::size_t take_existing(const SweepSetup& setup, const std::string& path, cons
             if (done[*check.index])
                 throw InputError(fmt::format("--resume is not allowed: '{}' holds the scenario {} twice (line {})",
                                              shown_text(path, 4096), csv_line(setup.grid.cells(*check.index)), number));
+            if (check.failed) {
+                out.failed_lines.insert(number);
+                return;
+            }
             done[*check.index] = true;
             ++tally.done_before;
             on_row(row);
         },
-        [&] {
-            RowFileLimits limits = row_limits(setup, "sweep rows");
-            limits.output_too = true;  // this sweep's own rows, gone on with: -o may well be the file
-            return limits;
-        }());
-    return scan.complete_bytes;
+        own_rows_limits(setup));
+    out.complete_bytes = scan.complete_bytes;
+    return out;
+}
+
+// `partial` made anew from `source`'s complete lines but `dropped` (their row is computed
+// again), durably, replacing it whole; returns its size.
+std::size_t rewrite_without(const SweepSetup& setup, const std::string& source, const std::string& partial,
+                            const std::set<std::size_t>& dropped) {
+    const fs::path p(partial);
+    const std::string temp = (p.parent_path() / ("." + p.filename().string() + ".rewrite")).string();
+    std::string text;
+    std::size_t number = 2;  // the line being read
+    scan_row_file(
+        source, 2,
+        [&](const std::vector<std::string>& preamble) {
+            for (const std::string& line : preamble) text += line + "\n";
+        },
+        [&](const std::string& line) {
+            if (!dropped.count(++number)) text += line + "\n";
+        },
+        own_rows_limits(setup));
+    {
+        fs::remove(temp);
+        std::unique_ptr<RowLog> log = RowLog::create(temp, {});
+        log->append(text.substr(0, text.empty() ? 0 : text.size() - 1));
+    }
+    std::error_code ec;
+    fs::rename(temp, partial, ec);
+    if (ec) throw FileError(partial, "write", ec.message());
+    return text.size();
 }
 
 }  // namespace
@@ -89,13 +131,20 @@ SweepTally run_rows(const SweepSetup& setup, const SweepOutput& o, const std::fu
         const std::string partial = partial_path(o.out);
         std::error_code ec;
         std::string source = o.out;  // where the rows gone on with were
-        if (o.resume && fs::exists(fs::symlink_status(partial, ec))) {
-            source = partial;
-            log = RowLog::reopen(partial, take_existing(setup, partial, preamble, done, tally, on_row));
-        } else if (o.resume && fs::exists(o.out, ec)) {
-            // A finished sweep: go on with a copy, so that it stays whole until the new one is.
-            const std::size_t bytes = take_existing(setup, o.out, preamble, done, tally, on_row);
-            fs::copy_file(o.out, partial, fs::copy_options::overwrite_existing);
+        if (o.resume && (fs::exists(fs::symlink_status(partial, ec)) || fs::exists(o.out, ec))) {
+            // Going on with the unfinished rows, or with a finished sweep through a copy of it, so
+            // that it stays whole until the new one is.
+            const bool unfinished = fs::exists(fs::symlink_status(partial, ec));
+            source = unfinished ? partial : o.out;
+            const Existing existing = take_existing(setup, source, preamble, done, tally, on_row);
+            std::size_t bytes = existing.complete_bytes;
+            if (!existing.failed_lines.empty()) {
+                bytes = rewrite_without(setup, source, partial, existing.failed_lines);
+                status(o.quiet, "resuming: {} failed row{} of {} made again", existing.failed_lines.size(),
+                       existing.failed_lines.size() == 1 ? "" : "s", source);
+            } else if (!unfinished) {
+                fs::copy_file(o.out, partial, fs::copy_options::overwrite_existing);
+            }
             log = RowLog::reopen(partial, bytes);
         } else {
             log = RowLog::create(partial, preamble);
