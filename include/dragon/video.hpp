@@ -42,7 +42,7 @@ inline constexpr double kMaxVideoFps = 240.0;
 inline constexpr int kMaxVideoSide = 8192;
 // The most pixels a WebM frame may have (4096x4096, 16.8 million). libvpx's VP9 encoder keeps
 // a token buffer of ~48 bytes a pixel and its reference frames besides: ~1.4 GB resident at
-// this size (scripts/bench-video.sh --sizes), and 7.7 GB was measured at 8192x8192. Every size
+// this size (scripts/limits.sh), and 7.7 GB was measured at 8192x8192. Every size
 // a video accepts stays under 2 GB resident (H.264 allows 8192x4352 at most: ~1 GB).
 inline constexpr long kMaxWebmPixels = 4096L * 4096L;
 // The frames being drawn and waiting for the encoder take at most this much memory: two per

@@ -13,6 +13,7 @@
 #include "cli/commands.hpp"
 #include "cli/error_words.hpp"
 #include "cli/kill_cleanup.hpp"
+#include "cli/status.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/input_file.hpp"
 #include "dragon/scenario.hpp"
@@ -70,7 +71,10 @@ int main(int argc, char** argv) {
         const std::string name = app.get_subcommands().front()->get_name();
         code = reg.at(name)();
         if (!stdout_intact()) return stdout_failed(errno);
-        if (code == 0) outputs.commit();
+        if (code == 0) {
+            outputs.commit();
+            cli::print_held_status_lines();  // "wrote ...", now that it is true
+        }
     } catch (const InputError& e) {
         say(stderr, "dragon: error: " + cli::word(e));
         return 2;

@@ -37,7 +37,7 @@ CodecChoice codec_for(VideoFormat f) {
 
 // Frames above 4K UHD (3840x2160, 8.3 million pixels): the encoders are held to a few frames
 // in flight, so that every size a video accepts stays under 2 GB resident
-// (scripts/bench-video.sh --sizes measures it).
+// (scripts/limits.sh measures it).
 constexpr long kLargeFramePixels = 3840L * 2160L;
 bool large_frame(const VideoOptions& opt) { return static_cast<long>(opt.width) * opt.height > kLargeFramePixels; }
 

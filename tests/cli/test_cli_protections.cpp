@@ -171,6 +171,7 @@ TEST(FileProtections, AFailedRunWritesNothing) {
         auto r = run_dragon(with_target(c.args, target), "", "/dev/full");
         EXPECT_EQ(r.code, 1) << c.name << "\n" << r.err;
         EXPECT_TRUE(contains(r.err, "cannot write the answers to standard output")) << r.err;
+        EXPECT_FALSE(contains(r.err, "wrote")) << r.err;  // nor says it wrote anything
         EXPECT_FALSE(fs::exists(target)) << c.name;
         // An old file stays as it was. (A sweep's unfinished rows are refused without --resume:
         // they go first.)
