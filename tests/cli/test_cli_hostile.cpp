@@ -450,6 +450,9 @@ const std::vector<Hostile> kCases = {
      // The first 80 characters, and how many there were.
      "--vary arc-ratio=1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,... (100009 "
      "characters) is not allowed: it gives 1 twice"},
+    {"a_line_break_in_a_flag_value",
+     [](const fs::path&) { return std::vector<std::string>{"simulate", "--to", "1", "--pitch", "0.5\nx"}; },
+     "--pitch = 0.5\\nx"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Issue24, HostileInput, ::testing::ValuesIn(kCases),
