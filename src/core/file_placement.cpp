@@ -45,6 +45,15 @@ std::string copy_beside(const std::string& from, const std::string& place, const
     return copy;
 }
 
+void sync_folder_of(const std::string& path) {
+    fs::path dir = fs::path(path).parent_path();
+    if (dir.empty()) dir = ".";
+    const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return;  // a folder that cannot be opened for reading: the rename still stands
+    ::fsync(fd);
+    ::close(fd);
+}
+
 }  // namespace
 
 std::string hidden_name(const std::string& path, const char* kind) {
@@ -82,6 +91,8 @@ std::string resolve_target(const std::string& target) {
     if (!S_ISREG(st.st_mode))
         throw InputError(fmt::format("output path '{}' is {}: give the name of a regular file", shown(target),
                                      kind_of(st.st_mode)));
+    if ((st.st_mode & 0222) != 0 && ::access(place.c_str(), W_OK) != 0 && errno == EROFS)
+        throw InputError(fmt::format("output path '{}' is on a read-only file system", shown(target)));
     if ((st.st_mode & 0222) == 0 || ::access(place.c_str(), W_OK) != 0)
         throw InputError(fmt::format("output path '{}' is read-only (mode {:04o}): make it writable (chmod u+w) or "
                                      "write another file", shown(target), st.st_mode & 07777));
@@ -167,8 +178,11 @@ void place_all(const std::vector<Placement>& files) {
         throw FileError(files[i].target, "write", fmt::format("{}{}", std::strerror(err),
                                                                files.size() > 1 ? "; no file was changed" : ""));
     }
-    for (std::size_t i = 0; i < files.size(); ++i)
+    for (std::size_t i = 0; i < files.size(); ++i) {
         if (steps[i].copied) ::unlink(files[i].source.c_str());  // moved across: the original goes
+        // A sweep's rows are kept durable to the end: the folder's new entry too.
+        if (files[i].keep_source) sync_folder_of(files[i].place);
+    }
     for (Step& s : steps) s.copied = false;
     cleanup();
 }

@@ -24,7 +24,8 @@ struct Placement {
     std::string source, place;
     std::string target;  // as the user named it, for messages
     mode_t new_mode = 0644;
-    bool keep_source = false;  // a sweep's rows: left where they are if the placing fails
+    bool keep_source = false;  // a sweep's rows: left where they are if the placing fails, and
+                               // the folder made durable once they are in place
 };
 
 // Gives `source` the mode (and, where the system allows, the owner and group) that `place`'s

@@ -220,7 +220,6 @@ void RowLog::finish(const std::string& target) {
     if (::stat(path_.c_str(), &st) == 0) p.new_mode = st.st_mode & 0777;  // made with 0666 less the umask
     if (run_outputs::hold(p, -1)) return;
     placement::place_all({p});
-    sync_folder(p.place);
 }
 
 }  // namespace dragon

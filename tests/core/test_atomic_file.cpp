@@ -11,6 +11,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -366,4 +367,29 @@ TEST(RunOutputs, NoOutputIsAnInputOfTheRun) {
     load_scenario(sc.string());
     EXPECT_EQ(refusal(sc.string()), "accepted");
     EXPECT_EQ(read(sc), "[dragon]\nwidth = 0.3\n");
+}
+
+TEST(RunOutputs, FilesCommittedFromSeveralThreadsArePlacedTogether) {
+    const fs::path dir = dragon_test::scratch_dir() / "threads";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    {
+        RunOutputs run;
+        std::vector<std::thread> writers;
+        for (int t = 0; t < 4; ++t)
+            writers.emplace_back([&, t] {
+                for (int k = 0; k < 8; ++k) {
+                    char name[32];
+                    std::snprintf(name, sizeof name, "f%d-%d.csv", t, k);
+                    write_through((dir / name).string(), "x");
+                }
+            });
+        for (std::thread& w : writers) w.join();
+        EXPECT_EQ(hidden_files(dir).size(), 32u);  // all held, none in place
+        run.commit();
+    }
+    EXPECT_TRUE(hidden_files(dir).empty());
+    int placed = 0;
+    for (const auto& e : fs::directory_iterator(dir)) placed += read(e.path()) == "x";
+    EXPECT_EQ(placed, 32);
 }
