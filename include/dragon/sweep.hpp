@@ -136,9 +136,12 @@ std::string read_first_line(const std::string& path, const RowFileLimits& limits
 // threads; they are written one at a time.
 class RowLog {
 public:
-    // A new file at `path` holding `preamble`, made durable. Throws InputError if something is
-    // there already (a file, or a link: a log is never written through one).
-    static std::unique_ptr<RowLog> create(const std::string& path, const std::vector<std::string>& preamble);
+    // A new file at `path` holding `preamble`, made durable, with `mode` less the umask (the
+    // mode of the file it will replace, so that its rows are never more readable than that
+    // file's). Throws InputError if something is there already (a file, or a link: a log is
+    // never written through one).
+    static std::unique_ptr<RowLog> create(const std::string& path, const std::vector<std::string>& preamble,
+                                          unsigned mode = 0666);
     // The existing file at `path` (not a link), cut back to its first `complete_bytes` (a torn
     // row dropped), to append to.
     static std::unique_ptr<RowLog> reopen(const std::string& path, std::size_t complete_bytes);

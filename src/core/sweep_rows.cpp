@@ -171,9 +171,11 @@ void sync_folder(const std::string& path) {
 
 }  // namespace
 
-std::unique_ptr<RowLog> RowLog::create(const std::string& path, const std::vector<std::string>& preamble) {
+std::unique_ptr<RowLog> RowLog::create(const std::string& path, const std::vector<std::string>& preamble,
+                                       unsigned mode) {
     // A new file (never through a link left there): its mode follows the umask, as any new file's.
-    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC | O_NOFOLLOW, 0666);
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC | O_NOFOLLOW,
+                          static_cast<mode_t>(mode & 0777));
     if (fd < 0) throw InputError(fmt::format("output '{}' cannot be made: {}", path, std::strerror(errno)));
     std::unique_ptr<RowLog> log(new RowLog(path, fd));
     std::string text;

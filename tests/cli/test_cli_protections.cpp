@@ -2,8 +2,14 @@
 // workers (section 6). Modes are read from the files themselves: the tests run as root in CI,
 // and root may write a 0444 file, so the refusal is checked by the mode bits the program reads,
 // and what only an unprivileged user meets runs as nobody (setpriv), or is skipped saying why.
+#include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <thread>
 
 #include <filesystem>
 #include <fstream>
@@ -75,6 +81,19 @@ TEST(FileProtections, AReplacedOutputKeepsItsMode) {
         }
     }
     for (const std::string& n : names_in(dir)) EXPECT_NE(n.front(), '.') << n;  // no temporary file left
+    // A sweep's unfinished rows are no more readable than the file they will replace: a killed
+    // run leaves them so.
+    const fs::path rows = dir / "rows.csv";
+    fs::permissions(rows, static_cast<fs::perms>(0600));
+    const pid_t pid = dragon_test::spawn_dragon({"sweep", "--vary", "bench-count=60:130:15", "--vary", "arc-ratio=1.5,2",
+                                                 "--measure", "turnaround", "--workers", "1", "-q", "-o", rows.string()});
+    ASSERT_GT(pid, 0);
+    for (int i = 0; i < 400 && !fs::exists(rows.string() + ".partial"); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    EXPECT_EQ(mode_of(rows.string() + ".partial"), 0600u);
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, nullptr, 0);
+    fs::remove(rows.string() + ".partial");
 }
 
 TEST(FileProtections, NewFilesFollowTheUmask) {
