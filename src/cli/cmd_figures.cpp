@@ -59,7 +59,7 @@ void register_figures(CLI::App& app, Registry& reg) {
         std::int64_t done = 0;
         ProgressLine progress("figures", opt->quiet);
         write_figures(opt->out, opt->scenario.resolve(), fo, [&](const FigureInfo&, const std::string& path) {
-            if (!opt->quiet) progress.print_above(fmt::format("wrote {}", path));
+            status(opt->quiet, "wrote {}", path);  // said once the run's files are in place
             progress.update(++done, total);
         });
         return 0;

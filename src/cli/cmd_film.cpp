@@ -33,7 +33,8 @@ void register_film(CLI::App& app, Registry& reg) {
     sub->add_option("storyboard", opt->story, "The storyboard, a .toml file (see assets/films/contest.toml)")->required();
     sub->add_option("-o,--out", opt->out, "Output: .mp4, .webm or .gif; .png with --at for one frame")->required();
     sub->add_option("--at", opt->at, "With a .png: the frame shown this many seconds into the film");
-    sub->add_option("--size", opt->size, "Frame size WIDTHxHEIGHT, over the storyboard's [film] size");
+    sub->add_option("--size", opt->size, "Frame size WIDTHxHEIGHT, over the storyboard's [film] size (mp4 up to "
+                                         "8192x4352, webm up to 4096x4096 in pixels)");
     sub->add_option("--fps", opt->fps, "Frames per second, over the storyboard's [film] fps");
     sub->add_option("--crf", opt->crf, fmt::format("Quality: H.264 0-51 (default {}), VP9 0-63 (default {})",
                                                    kDefaultCrf.h264, kDefaultCrf.vp9));

@@ -143,9 +143,7 @@ void register_solve(CLI::App& app, Registry& reg) {
         contest.turn_window = opt->window.resolve(kTurnaroundWindow);
 
         namespace fs = std::filesystem;
-        std::error_code ec;
-        fs::create_directories(opt->dir, ec);
-        if (!fs::is_directory(opt->dir))
+        if (!make_output_folder(opt->dir))
             throw InputError(fmt::format("-o {} is not allowed: the folder cannot be created", opt->dir));
         // Every target is checked, and its temporary file made, before any work: a folder or an
         // unwritable name in the way fails here with no file touched. They are renamed into

@@ -1,11 +1,16 @@
 #include "cli/sweep_setup.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "cli/window_flags.hpp"
+#include "dragon/input_file.hpp"
 
 namespace dragon::cli {
 
@@ -24,27 +29,92 @@ bool has_measure(const std::vector<const MeasureInfo*>& measures, const char* na
     return std::any_of(measures.begin(), measures.end(), [&](const MeasureInfo* m) { return std::string(m->name) == name; });
 }
 
-// The file's [measure] options under the flags: a flag given wins.
-void take_file_options(const SweepFile& f, const std::string& path, SweepRequest& req) {
+// What min-pitch and max-speed refuse in an option whatever the scenario, in their words (the
+// rules of min_pitch() and max_head_speed()): a sweep refuses it once, up front, rather than
+// writing "refused" into every row. What depends on the scenario (a bound below its width)
+// stays a row's refusal.
+std::optional<std::string> limit_problem(double limit) {
+    if (!std::isfinite(limit) || limit <= 0.0) return "it must be a finite speed > 0 m/s";
+    return std::nullopt;
+}
+std::optional<std::string> grid_problem(double grid) {
+    if (!(grid > 0.0) || !std::isfinite(grid)) return "give a pitch spacing above 0, in m";
+    return std::nullopt;
+}
+constexpr double kMaxPitch = 1e3;  // m, the largest pitch a scenario takes
+
+// The options of the measures, checked: `name` words each (a flag, or a sweep file's key).
+void check_options(const MeasureOptions& o, const std::vector<const MeasureInfo*>& measures,
+                   const std::function<std::string(const char* option)>& name) {
+    if (has_measure(measures, "max-speed"))
+        if (const auto why = limit_problem(o.limit))
+            throw InputError(fmt::format("{} {} is not allowed: {}", name("limit"), error_value(o.limit), *why));
+    if (!has_measure(measures, "min-pitch")) return;
+    if (const auto why = grid_problem(o.grid))
+        throw InputError(fmt::format("{} {} is not allowed: {}", name("grid"), error_value(o.grid), *why));
+    for (const auto& [bound, option] : {std::pair{&o.lo, "lo"}, std::pair{&o.hi, "hi"}})
+        if (!bound->above_width && !(bound->offset <= kMaxPitch))
+            throw InputError(fmt::format("{} {} is not allowed: a pitch is at most {} m", name(option),
+                                         error_value(bound->offset), kMaxPitch));
+    if (!o.lo.above_width && !o.hi.above_width) {
+        if (!(o.hi.offset > o.lo.offset))
+            throw InputError(fmt::format("{} {} is not allowed with {} {}: the search needs lo < hi", name("hi"),
+                                         error_value(o.hi.offset), name("lo"), error_value(o.lo.offset)));
+        const double steps = std::ceil((o.hi.offset - o.lo.offset) / o.grid * (1.0 - 1e-12));
+        if (steps > kMaxPitchGridSteps)
+            throw InputError(fmt::format("{} {} is not allowed: it makes {:.3g} grid steps over [{}, {}]; at most {}",
+                                         name("grid"), error_value(o.grid), steps, o.lo.offset, o.hi.offset,
+                                         kMaxPitchGridSteps));
+    }
+}
+
+// The file's [measure] options under the flags: a flag given wins. Each is checked as the flag
+// would be, and named by its key.
+void take_file_options(const SweepFile& f, const std::string& path, SweepRequest& req,
+                       const std::vector<const MeasureInfo*>& measures) {
+    MeasureOptions from_file;
     for (const SweepFile::Option& o : f.options) {
-        const std::string where = fmt::format("sweep file '{}': [{}] {}", path, o.measure, o.key);
+        const std::string where = fmt::format("sweep file '{}': [{}] {}", shown_text(path, 4096), shown_text(o.measure),
+                                              shown_text(o.key));
         const auto number = [&] {
             char* end = nullptr;
             const double v = std::strtod(o.value.c_str(), &end);
             if (o.value.empty() || end != o.value.c_str() + o.value.size())
-                throw InputError(fmt::format("{} = {} is not allowed: give a number", where, o.value));
+                throw InputError(fmt::format("{} = {} is not allowed: give a number", where, shown_text(o.value)));
             return v;
         };
-        if (o.measure == "min-pitch" && o.key == "lo") req.lo = req.lo.value_or(o.value);
-        else if (o.measure == "min-pitch" && o.key == "hi") req.hi = req.hi.value_or(o.value);
-        else if (o.measure == "min-pitch" && o.key == "grid") req.grid = req.grid.value_or(number());
-        else if (o.measure == "max-speed" && o.key == "limit") req.limit = req.limit.value_or(number());
-        else if (o.measure == "window" && o.key == "from") req.from = req.from.value_or(o.value);
-        else if (o.measure == "window" && o.key == "to") req.to = req.to.value_or(o.value);
-        else
+        if (o.measure == "min-pitch" && o.key == "lo") {
+            from_file.lo = parse_pitch_bound(where + " =", o.value);
+            req.lo = req.lo.value_or(o.value);
+        } else if (o.measure == "min-pitch" && o.key == "hi") {
+            from_file.hi = parse_pitch_bound(where + " =", o.value);
+            req.hi = req.hi.value_or(o.value);
+        } else if (o.measure == "min-pitch" && o.key == "grid") {
+            from_file.grid = number();
+            if (const auto why = grid_problem(from_file.grid))
+                throw InputError(fmt::format("{} = {} is not allowed: {}", where, shown_text(o.value), *why));
+            req.grid = req.grid.value_or(from_file.grid);
+        } else if (o.measure == "max-speed" && o.key == "limit") {
+            from_file.limit = number();
+            if (const auto why = limit_problem(from_file.limit))
+                throw InputError(fmt::format("{} = {} is not allowed: {}", where, shown_text(o.value), *why));
+            req.limit = req.limit.value_or(from_file.limit);
+        } else if (o.measure == "window" && o.key == "from") {
+            from_file.from = parse_along(where + " =", o.value);
+            req.from = req.from.value_or(o.value);
+        } else if (o.measure == "window" && o.key == "to") {
+            from_file.to = parse_along(where + " =", o.value);
+            req.to = req.to.value_or(o.value);
+        } else {
             throw InputError(fmt::format("{} is not an option a sweep takes ([min-pitch] lo, hi, grid; [max-speed] "
                                          "limit; [window] from, to)", where));
+        }
     }
+    // The file's own values, each as the file gives it (a flag over one does not excuse it).
+    check_options(from_file, measures, [&](const char* option) {
+        const std::string measure = std::string(option) == "limit" ? "max-speed" : "min-pitch";
+        return fmt::format("sweep file '{}': [{}] {} =", shown_text(path, 4096), measure, option);
+    });
 }
 
 }  // namespace
@@ -63,7 +133,9 @@ SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags) {
         vary.insert(vary.end(), req.vary.begin(), req.vary.end());
         req.vary = vary;
         if (req.measures.empty()) req.measures = f.measures;
-        take_file_options(f, req.file, req);
+        std::vector<const MeasureInfo*> all_measures;
+        for (const MeasureInfo& m : sweep_measures()) all_measures.push_back(&m);
+        take_file_options(f, req.file, req, all_measures);
         flags.fill(f.scenario, f.fixed, fmt::format("sweep file '{}': [fixed]", req.file));
     }
     std::vector<Axis> axes;
@@ -117,6 +189,7 @@ SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags) {
     if (req.limit) options.limit = *req.limit;
     if (req.from) options.from = parse_along("--from", *req.from);
     if (req.to) options.to = parse_along("--to", *req.to);
+    check_options(options, measures, [](const char* option) { return fmt::format("--{}", option); });
     return {std::move(grid), std::move(measures), base, fixed, options, parse_shard(req.shard.empty() ? "1/1" : req.shard)};
 }
 
@@ -197,6 +270,30 @@ SweepSetup read_spec_line(const std::string& line, const std::string& file) {
     } catch (const Json::exception& e) {
         throw InputError(fmt::format("'{}' is not the rows of a dragon sweep: its first line: {}", file, e.what()));
     }
+}
+
+std::string spec_difference(const std::string& found, const std::string& expected) {
+    if (found.rfind(kSpecPrefix, 0) != 0)
+        return fmt::format("its first line '{}' is not what a sweep writes (# dragon sweep {{...}})", shown_text(found, 60));
+    const Json a = Json::parse(found.substr(std::string(kSpecPrefix).size()), nullptr, false);
+    const Json b = Json::parse(expected.substr(std::string(kSpecPrefix).size()), nullptr, false);
+    if (a.is_discarded() || !a.is_object()) return "its first line holds no sweep (it is not JSON after '# dragon sweep')";
+    const auto shown = [](const Json& v) { return shown_text(v.dump(-1, ' ', false, Json::error_handler_t::replace), 60); };
+    for (const auto& [key, value] : b.items()) {
+        if (!a.contains(key)) return fmt::format("its first line has no '{}'", key);
+        if (a[key] == value) continue;
+        // The axes one by one: which values differ is what the reader needs.
+        if (key == "vary" && a[key].is_object())
+            for (const auto& [name, cells] : value.items())
+                if (!a[key].contains(name) || a[key][name] != cells)
+                    return fmt::format("it varies {} {}, and this sweep {}", name,
+                                       a[key].contains(name) ? "over " + shown(a[key][name]) : "not at all",
+                                       "over " + shown(cells));
+        return fmt::format("its first line's {} is {}, and this sweep's {}", key, shown(a[key]), shown(value));
+    }
+    for (const auto& [key, value] : a.items())
+        if (!b.contains(key)) return fmt::format("its first line has '{}', which this sweep has not", key);
+    return "its first line differs";
 }
 
 std::string whole_spec_line(const std::string& line, const std::string& file) {

@@ -42,6 +42,9 @@ SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags);
 std::string spec_line(const SweepSetup& setup);
 // The setup a spec line describes; throws InputError naming `file` if it is not one.
 SweepSetup read_spec_line(const std::string& line, const std::string& file);
+// What makes a file's first line `found` differ from this sweep's `expected`, in words ("it
+// varies width over [...], and this sweep over [...]"), for refusing its rows.
+std::string spec_difference(const std::string& found, const std::string& expected);
 // The same line without its shard: the sweep the shards are parts of.
 std::string whole_spec_line(const std::string& line, const std::string& file);
 

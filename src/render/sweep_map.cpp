@@ -169,7 +169,9 @@ void require_map_format(const std::string& path) {
 
 void write_sweep_map(const SweepMap& map, const std::string& path) {
     require_map_format(path);
-    const auto [w, h] = sweep_map_size(map);
+    // Named copies: clang 14 (the fuzz build) cannot capture a structured binding.
+    const auto size = sweep_map_size(map);
+    const int w = size.first, h = size.second;
     const auto paint = [&](cairo_t* cr) { draw_sweep_map(cr, map, w, h); };
     const render::PictureFormat format = render::picture_format(path);
     if (format != render::PictureFormat::png) {
