@@ -121,6 +121,7 @@ inline constexpr std::size_t kMaxShotCaptions = 20;
 
 struct Storyboard {
     std::string file;  // for messages
+    std::string asset_dir;  // where its presets and named themes were looked for
     FilmSettings film;
     std::vector<Shot> shots;
 };

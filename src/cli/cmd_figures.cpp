@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/asset_dir.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "cli/scenario_flags.hpp"
@@ -51,7 +52,8 @@ void register_figures(CLI::App& app, Registry& reg) {
             return 0;
         }
         FigureOptions fo;
-        fo.theme = load_theme(opt->theme);
+        fo.theme = load_theme(opt->theme, asset_dir());
+        fo.asset_dir = asset_dir();
         fo.scale = opt->scale;
         fo.only = opt->only;
         fo.format = opt->format;

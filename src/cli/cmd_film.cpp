@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/asset_dir.hpp"
 #include "cli/wording.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
@@ -64,7 +65,7 @@ void register_film(CLI::App& app, Registry& reg) {
         if (format != VideoFormat::gif && opt->colours)
             throw InputError(fmt::format("--colours {} is not allowed for .{}: it sets a GIF's palette", *opt->colours,
                                          to_string(format)));
-        Storyboard board = load_storyboard(opt->story);
+        Storyboard board = load_storyboard(opt->story, asset_dir());
         if (!opt->size.empty()) {
             const PictureSize size = parse_picture_size(opt->size, kMaxVideoSide);
             board.film.width = size.width;

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/asset_dir.hpp"
 #include "cli/commands.hpp"
 #include "cli/report.hpp"
 #include "cli/progress.hpp"
@@ -171,7 +172,7 @@ void register_video(CLI::App& app, Registry& reg) {
         { AtomicFile probe(opt->out); }  // an unwritable path fails here, before any work
         const Scenario s = opt->scenario.resolve();
         SceneOptions scene;
-        scene.theme = load_theme(opt->theme);
+        scene.theme = load_theme(opt->theme, asset_dir());
         scene.colour_by_speed = opt->colour_by_speed;
         scene.show_guides = scene.show_turning_space = !opt->no_guides;
         scene.show_text = !opt->no_text;

@@ -42,7 +42,7 @@ int stdout_failed(int err) {
 int main(int argc, char** argv) {
     using namespace dragon;
     cli::install_kill_cleanup();  // first: a kill at any moment leaves no temporary file
-    cli::point_library_at_assets(argv[0]);
+    cli::find_tool_assets(argv[0]);
     CLI::App app{"dragon: exact simulation, collisions and pictures of the Bench Dragon (CUMCM 2024 A)"};
     app.name("dragon");
     app.require_subcommand(1);

@@ -261,6 +261,7 @@ Storyboard parse_storyboard(const std::string& toml_text, const std::string& fil
                                      e.source().begin.line, e.source().begin.column, e.description()));
     }
     Context cx{file, base_dir, asset_dir.empty() ? find_asset_dir() : asset_dir, "", {}};
+    board.asset_dir = cx.asset_dir;
     const Where top{file, 0, "film"};
     film::check_keys(top, root, {"film", "shot"}, "a storyboard (a [film] table and [[shot]] tables)");
     if (const toml::node* f = root.get("film")) {
