@@ -30,13 +30,15 @@ pick=head
 row_last() { pick=tail; row "$@"; pick=head; }
 row() {
   local code=0
-  "$dragon" "$@" >out.txt 2>err.txt </dev/null || code=$?
+  "$dragon" "$@" >"${stdout_to:-out.txt}" 2>err.txt </dev/null || code=$?
   local line
   if [ "$code" -eq 0 ]; then line="(works) $($pick -n 1 out.txt)"; else line=$(head -n 1 err.txt); fi
   [ "$code" -eq 0 ] && [ ! -s out.txt ] && line="(works) $(head -n 1 err.txt)"
   [ "$code" -ne 0 ] && [ "$(wc -l <err.txt)" -ne 1 ] && line="$line (+$(($(wc -l <err.txt) - 1)) more lines)"
   local shown="" a quotes="''"
   for a in "$@"; do shown+="${shown:+ }${a:-$quotes}"; done  # an empty argument shows as ''
+  shown=${shown//$'\n'/\\n}  # a line break in an argument, escaped as the program shows it
+  [ -n "${shown_as:-}" ] && shown=$shown_as
   printf '| `dragon %s` | %s | %s |\n' "$shown" "$code" "${line//|/\\|}"
   rm -rf out.* a.* film* x.* *.png *.mp4 *.gif *.webm out
 }
@@ -176,6 +178,7 @@ row video -o a.mp4 --size 1280x720 --fps 5 --to 1 --follow-head --zoom 1e-9
 row video -o a.mp4 --size 64x48 --fps 5 --from 0 --to 1 --tune cartoon
 row video -o a.gif --size 64x48 --fps 5 --from 0 --to 1 --tune film
 row video -o a.mp4 --size 8192x8192 --fps 5 --to 1
+row video -o a.webm --size 8192x8192 --fps 5 --to 1
 
 header "dragon film (tests/cli/test_cli_film.cpp, tests/film/)"
 row film story-key.toml -o a.mp4
@@ -206,6 +209,87 @@ row render --time 0 --zoom 1e-9 -o x.png
 row render --collision --zoom 1e-9 -o x.png
 row figures --only no_such_figure -o figs
 row render --time 1 --theme /tmp -o x.png
+
+header "Hostile and corrupt input files (tests/cli/test_cli_hostile.cpp; times and memory: scripts/limits.sh)"
+# Each made just before its row (row removes *.png and the like after each).
+printf '[dragon]\nwidth=0.3\n' > sc.csv; row simulate --to 1 --scenario sc.csv -o sc.csv
+ln -sf sc.csv link.csv; row simulate --to 1 --scenario sc.csv -o link.csv
+printf 'measure="max-speed"\nvary=["arc-ratio=1,2"]\n' > s2.csv; row sweep s2.csv -o s2.csv
+printf 'scenario="sc.csv"\nmeasure="max-speed"\nvary=["arc-ratio=1,2"]\n' > s3.toml; row sweep s3.toml -o sc.csv
+printf '[film]\nsize="320x180"\n[[shot]]\ntitle="a"\nduration=1\n' > st.png; row film st.png -o st.png --at 0.5
+printf '[colours]\nhead="#ff0000"\n' > t.png; row render --time 1 --theme ./t.png -o t.png
+"$dragon" sweep --vary pitch=0.5,0.6 --measure collide -q -o good.csv
+row sweep merge good.csv good.csv
+(head -2 good.csv; sed -n 3p good.csv | cut -d, -f1-5) > cut.csv.partial
+row sweep --vary pitch=0.5,0.6 --measure collide --resume -o cut.csv
+(head -2 good.csv; sed -n 3p good.csv | sed 's/$/,more/') > more.csv.partial
+row sweep --vary pitch=0.5,0.6 --measure collide --resume -o more.csv
+(head -2 good.csv; head -c 100 /dev/zero; echo) > nul.csv.partial
+row sweep --vary pitch=0.5,0.6 --measure collide --resume -o nul.csv
+(head -2 good.csv; printf '0.5,'; head -c 10000000 /dev/zero | tr '\0' x; echo) > long.csv.partial
+row sweep --vary pitch=0.5,0.6 --measure collide --resume -o long.csv
+sed 's/$/\r/' good.csv > crlf.csv.partial
+row sweep --vary pitch=0.5,0.6 --measure collide --resume -o crlf.csv
+sed 's/"0.6"/"0.7"/' good.csv > other.csv.partial
+row sweep --vary pitch=0.5,0.6 --measure collide --resume -o other.csv
+ln -sf good.csv linked.csv.partial
+row sweep --vary pitch=0.5,0.6 --measure collide --resume -o linked.csv
+(head -3 good.csv; sed -n 4p good.csv | cut -d, -f1-2) > part.csv
+row sweep merge m.csv part.csv
+row simulate --to 1 --scenario /dev/zero
+row sweep /dev/zero
+printf 'scenario="/dev/zero"\nmeasure="max-speed"\nvary=["arc-ratio=1,2"]\n' > s4.toml; row sweep s4.toml
+row sweep merge m.csv good.csv /dev/zero
+mkfifo fifo
+row simulate --to 1 --scenario fifo
+row sweep fifo
+row sweep merge m.csv good.csv fifo
+row simulate --to 1 --scenario /proc/self/mem
+row sweep /proc/self/mem
+python3 - <<'PY'
+open('million.toml', 'w').write('[film]\nsize="320x180"\n' + '[[shot]]\ntitle="a"\nduration=1\n' * 1000000)
+open('shots.toml', 'w').write('[film]\nsize="320x180"\n' + '[[shot]]\ntitle="a"\nduration=1\n' * 30000)
+open('title.toml', 'w').write('[film]\nsize="320x180"\n[[shot]]\nduration=1\ntitle="' + 'x' * 900000 + '"\n')
+open('captions.toml', 'w').write('[film]\nsize="320x180"\n[[shot]]\nfrom=0\nto=1\nrate=1\ncaptions=[' + '{text="a"},' * 21 + ']\n')
+open('key.toml', 'w').write('[dragon]\n' + 'k' * 900000 + ' = 1\n')
+PY
+row film million.toml -o poster.png --at 0.5
+row film shots.toml -o poster.png --at 0.5
+row film title.toml -o poster.png --at 0.5
+row film captions.toml -o poster.png --at 0.5
+row sweep --vary arc-ratio=1,2 --measure max-speed --limit nan
+printf 'measure="max-speed"\nvary=["arc-ratio=1,2"]\n[max-speed]\nlimit="1e999"\n' > s5.toml; row sweep s5.toml
+row sweep --vary width=0.3,0.31 --measure min-pitch --grid 0
+row sweep --vary width=0.3,0.31 --measure min-pitch --lo 0.5 --hi 0.4
+printf 'bogus=1\n' > th1.toml; row render --time 1 --theme th1.toml -o x.png
+printf '[colour]\nhead="#ff0000"\n' > th2.toml; row render --time 1 --theme th2.toml -o x.png
+cp story.toml th3.toml; row render --time 1 --theme th3.toml -o x.png
+python3 -c "print('[' + '.'.join(['a'] * 10000) + ']')" > th4.toml; row render --time 1 --theme th4.toml -o x.png
+printf 'font="No Such Font Anywhere"\n' > th5.toml; row render --time 1 --theme th5.toml -o x.png
+row render --time 1 --theme /dev/zero -o x.png
+row render --time 1 --theme fifo -o x.png
+row render --time 1 --theme ./fifo -o x.png
+printf '[dragon]\nwidth = 9223372036854775807\n' > wide.toml; row simulate --to 1 --scenario wide.toml
+ln -sf /dev/zero zero.toml
+printf '[film]\nsize="320x180"\nscenario="zero.toml"\n[[shot]]\nto=3\nrate=1\n' > story-zero.toml; row film story-zero.toml -o x.mp4
+printf '[film]\nsize="320x180"\n[[shot]]\nfrom=[1]\nto=3\nrate=1\n' > story-list.toml; row film story-list.toml -o x.mp4
+printf '[fixed]\n"wid\\u0000th" = 1\n' > s6.toml; row sweep s6.toml --vary arc-ratio=1 --measure max-speed
+row simulate --to 1 --scenario key.toml
+shown_as="sweep --measure max-speed --vary arc-ratio=1,1,...,1 (50,000 values)" \
+  row sweep --measure max-speed --vary "arc-ratio=$(python3 -c "print(','.join(['1'] * 50000))")"
+row simulate --to 1 -o $'a\nb.csv'
+rm -f $'a\nb.csv'
+
+header "Files keep their protections (tests/cli/test_cli_protections.cpp)"
+"$dragon" render --time 1 --size 64x64 -q -o prot.png; chmod 444 prot.png
+row render --time 2 --size 64x64 -o prot.png
+rm -f prot.png
+ln -sf nowhere.csv dangling.csv; row simulate --to 1 -o dangling.csv
+ln -sf /dev/null null.csv; row simulate --to 1 -o null.csv
+shown_as="video --to collision --size 64x48 --fps 1 --speedup 100 -o x.gif > /dev/full (then: ls x.gif finds nothing)" \
+  stdout_to=/dev/full row video --to collision --size 64x48 --fps 1 --speedup 100 -o x.gif
+row_workers() { local out; out=$("$dragon" "$@" 2>&1 >/dev/null | head -n 1); printf '| `dragon %s` | 0 | %s |\n' "$*" "$out"; }
+row_workers sweep --vary pitch=0.5,0.6 --measure collide --workers 100000
 
 header "Out of range (tests/cli/test_cli_extremes.cpp)"
 row simulate --start-turn 1e5 --to 1

@@ -1,6 +1,16 @@
 // Writing an output file all-or-nothing: write to a temporary file beside the target, then
 // rename over it. An error (or a kill) leaves either the old file or nothing at the target;
 // remove_live_temp_files() lets a signal handler clear the temporary files a kill interrupts.
+//
+// A target that is a symbolic link is written through: the file it points to is replaced and
+// the link stays. A replaced file keeps its mode (never wider); a new one gets what the umask
+// leaves of 0666, and the temporary file is readable by its owner alone while it is written. A
+// read-only target is refused, as cp would refuse it.
+//
+// A RunOutputs makes a run's outputs one: while it is open, files are put in place only when
+// the run commits it, all together, so that a run that fails (an error after a file was done, a
+// full stdout at the end) leaves no new output; and no output may be one of the files the run
+// reads (through InputFile: a scenario, a sweep file, a storyboard and the files it names).
 #pragma once
 
 #include <stdexcept>
@@ -15,7 +25,8 @@ class AtomicFile {
 public:
     // Creates the (empty) temporary file now, so a bad path fails before any work: throws
     // InputError naming the target and why (a folder, a missing folder, no permission, a
-    // file system that refuses it).
+    // file system that refuses it, a read-only file, a link to nothing, not a regular file,
+    // an input of the open run).
     explicit AtomicFile(std::string target);
     ~AtomicFile();  // removes the temporary file unless commit() succeeded; never throws
     AtomicFile(const AtomicFile&) = delete;
@@ -24,7 +35,8 @@ public:
     // Where to write: a unique temporary path in the target's folder, same extension.
     const std::string& temp_path() const { return temp_; }
     const std::string& target() const { return target_; }
-    // Renames the temporary file over the target. Throws std::runtime_error on failure.
+    // Renames the temporary file over the target (or hands it to the open RunOutputs, which
+    // will). Throws FileError on failure.
     void commit();
     // The error for a failed write: "cannot write '<target>': <reason>". It names the target,
     // never the hidden temporary file the user did not choose.
@@ -32,16 +44,37 @@ public:
 
 private:
     friend void commit_together(const std::vector<AtomicFile*>& files);
-    std::string target_;
+    std::string target_;  // as given: messages name it
+    std::string place_;   // where the file goes: the target, or the file its link points to
     std::string temp_;
+    unsigned new_mode_ = 0644;  // a new file's mode: 0666 less the umask
     bool committed_ = false;
     int live_slot_ = -1;  // where temp_ is registered for remove_live_temp_files()
 };
 
+// One run's outputs, held until it succeeds (see above). One at a time in a process: a second
+// while one is open is a std::logic_error. Thread-safe: files may be committed from any thread.
+class RunOutputs {
+public:
+    RunOutputs();
+    // Removes every file held and not committed (a sweep's unfinished rows stay); never throws.
+    ~RunOutputs();
+    RunOutputs(const RunOutputs&) = delete;
+    RunOutputs& operator=(const RunOutputs&) = delete;
+    // Puts every file held in place, all or none; throws FileError naming the one that failed.
+    void commit();
+};
+
 // Commits several files as one: every target ends up new or, if a rename fails, every target
 // as it was (those already renamed are put back from hard links to the old files, made first).
-// Throws std::runtime_error naming the target that failed.
+// Throws FileError naming the target that failed. (Inside a RunOutputs, they are held with the
+// run's other files.)
 void commit_together(const std::vector<AtomicFile*>& files);
+
+// Makes the folder `dir` and its missing parents for a run's outputs, and says whether it is
+// there now (false: it cannot be made). Inside a RunOutputs, the folders it made are removed
+// again when the run fails, if they are still empty: a failed run leaves no new folder either.
+bool make_output_folder(const std::string& dir);
 
 // Removes the temporary file of every AtomicFile not yet committed or destroyed. Only
 // async-signal-safe calls (no allocation, no locks): made for a handler of SIGINT, SIGTERM or

@@ -7,15 +7,28 @@
 // takes an Executor, or uses default_executor() when given none.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 
 namespace dragon {
+
+// A computation its caller stopped (StoppableExecutor::request_stop, a host's Ctrl-C): neither
+// the input's fault nor the solver's. Nothing it would have written is left behind.
+class Cancelled : public std::runtime_error {
+public:
+    Cancelled() : std::runtime_error("stopped by the caller") {}
+};
 
 class Executor {
 public:
     virtual ~Executor() = default;
+    // Whether the caller wants the work stopped. parallel_for then throws Cancelled before
+    // starting another item, and the library's long serial loops ask between their units of
+    // work (check_stop). Never, unless the executor says otherwise.
+    virtual bool stop_requested() const { return false; }
     // How many items may run at once (at least 1).
     virtual int workers() const = 0;
     // Calls body(item, worker) for every item in [0, count), each exactly once, and returns when
@@ -25,11 +38,18 @@ public:
     virtual void parallel_for(std::size_t count, const std::function<void(std::size_t item, int worker)>& body) = 0;
 };
 
-// Everything on the calling thread, in order: one worker.
+// Everything on the calling thread, in order: one worker. Work nested inside another executor's
+// item runs here, and stops when that executor would (`outer`).
 class InlineExecutor final : public Executor {
 public:
+    InlineExecutor() = default;
+    explicit InlineExecutor(const Executor* outer) : outer_(outer) {}
     int workers() const override { return 1; }
+    bool stop_requested() const override { return outer_ && outer_->stop_requested(); }
     void parallel_for(std::size_t count, const std::function<void(std::size_t, int)>& body) override;
+
+private:
+    const Executor* outer_ = nullptr;
 };
 
 // A fixed set of threads, started once and kept; the calling thread works as one of them, so
@@ -47,6 +67,27 @@ private:
     struct State;
     std::unique_ptr<State> state_;
 };
+
+// Another executor's workers, and a way to stop: request_stop() (from any thread) makes the work
+// running on it throw Cancelled at its next item or check. For a host that lets its user
+// interrupt (Python's Ctrl-C).
+class StoppableExecutor final : public Executor {
+public:
+    explicit StoppableExecutor(Executor& inner) : inner_(inner) {}
+    void request_stop() { stop_ = true; }
+    bool stop_requested() const override { return stop_.load(std::memory_order_relaxed); }
+    int workers() const override { return inner_.workers(); }
+    void parallel_for(std::size_t count, const std::function<void(std::size_t, int)>& body) override;
+
+private:
+    Executor& inner_;
+    std::atomic<bool> stop_{false};
+};
+
+// Throws Cancelled if `ex` asks to stop: long serial loops call it between their units of work.
+inline void check_stop(const Executor& ex) {
+    if (ex.stop_requested()) throw Cancelled();
+}
 
 // The executor used when a caller passes none: a ThreadPool with one worker per core, made on
 // first use. set_default_workers(n) before that first use sets its size instead (n >= 1); it

@@ -117,14 +117,24 @@ struct FilmSettings {
     double text_px = 0.0;
 };
 
+// What a storyboard may hold, so that reading and drawing it stay bounded whatever the file
+// says (a million one-line shots took 1 GB for one frame; a 5 MB title, 19 s a frame): shots,
+// characters in any one text (a title, a caption, a label), captions per shot. A frame shows
+// at most its title and subtitle, or its label and its shot's captions: a few thousand
+// characters.
+inline constexpr std::size_t kMaxStoryboardShots = 1000;
+inline constexpr std::size_t kMaxStoryboardText = 500;
+inline constexpr std::size_t kMaxShotCaptions = 20;
+
 struct Storyboard {
     std::string file;  // for messages
+    std::string asset_dir;  // where its presets and named themes were looked for
     FilmSettings film;
     std::vector<Shot> shots;
 };
 
-// Reads a storyboard: unknown keys, wrong types and values out of range are StoryboardErrors
-// naming the shot and key. A shot's scenario is a preset's name (assets/<name>.toml) or a
+// Reads a storyboard: unknown keys, wrong types, values out of range and more than the limits
+// above are StoryboardErrors naming the shot and key. A shot's scenario is a preset's name (assets/<name>.toml) or a
 // .toml file relative to the storyboard, with the shot's own keys over it. Times are checked
 // against the runs by Film.
 Storyboard load_storyboard(const std::string& path, const std::string& asset_dir = "");

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dragon/chain.hpp"
+#include "dragon/decimals.hpp"
 
 namespace dragon {
 
@@ -40,23 +41,33 @@ void print_csv(const std::vector<Frame>& frames, std::FILE* out, int digits = kD
 // {"handles": N, "frames": [{"t", "x": [...], "y": [...], "speed": [...]}]}, `digits` decimals
 // as write_csv.
 void write_json(const std::vector<Frame>& frames, const std::string& path, int digits = kDefaultDigits);
+// How a workbook is written. libxlsxwriter prints lines of its own on stderr when a write
+// fails (three for a full disk, naming a temporary file) before it returns the error, which the
+// library then throws as one FileError naming the target. An application that owns its
+// process's stderr (the dragon tool) may have those lines muted while a workbook closes: file
+// descriptor 2 points at /dev/null meanwhile, which is process-wide, so a host that shares its
+// stderr (a notebook, a server) leaves it off.
+struct WorkbookOptions {
+    bool mute_library_stderr = false;
+};
+
 // The most frames one worksheet holds: 16,384 columns, one for the labels.
 inline constexpr std::size_t kMaxWorkbookFrames = 16383;
 // result1.xlsx / result4.xlsx layout: sheets 位置 and 速度, one column per frame (at most
 // kMaxWorkbookFrames; InputError beyond).
-void write_result_xlsx(const std::vector<Frame>& frames, const std::string& path);
+void write_result_xlsx(const std::vector<Frame>& frames, const std::string& path, const WorkbookOptions& options = {});
 // result2.xlsx layout: Sheet1, one row per handle with x, y and speed.
-void write_result2_xlsx(const Frame& frame, const std::string& path);
+void write_result2_xlsx(const Frame& frame, const std::string& path, const WorkbookOptions& options = {});
 // The two workbooks into an AtomicFile the caller commits: several files made all new or all
 // old together (see commit_together). Workbooks hold 6 decimals, as the contest's templates,
 // and are the same bytes for the same frames (their creation time is fixed).
-void write_result_xlsx(const std::vector<Frame>& frames, AtomicFile& out);
-void write_result2_xlsx(const Frame& frame, AtomicFile& out);
+void write_result_xlsx(const std::vector<Frame>& frames, AtomicFile& out, const WorkbookOptions& options = {});
+void write_result2_xlsx(const Frame& frame, AtomicFile& out, const WorkbookOptions& options = {});
 // Picks CSV, JSON or XLSX by the extension; throws InputError for any other. `digits` is for
 // CSV and JSON.
-void write_table(const std::vector<Frame>& frames, const std::string& path, int digits = kDefaultDigits);
+void write_table(const std::vector<Frame>& frames, const std::string& path, int digits = kDefaultDigits,
+                 const WorkbookOptions& workbook = {});
 
-// Rounds to 6 decimals the way the tables print, without a negative zero.
-double round6(double v);
+
 
 }  // namespace dragon

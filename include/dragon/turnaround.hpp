@@ -155,8 +155,8 @@ struct RunClearance {
 };
 // Over `window` cut to the valid motion (cut_window). `progress` hears of the scan's samples
 // (most of the time taken). The first-contact search runs on `executor` (null:
-// default_executor()). Throws InputError as cut_window does, and ("clearance time range") for a
-// window too long to scan (over 1e8 bench checks).
+// default_executor()). Throws InputError as cut_window does, ("clearance time range") for a
+// window too long to scan (over 1e8 bench checks), and Cancelled when `executor` asks to stop.
 RunClearance min_clearance(const Scenario& s, const RunWindow& window = kTurnaroundWindow,
                            const WorkProgress& progress = {}, Executor* executor = nullptr);
 
@@ -186,8 +186,10 @@ struct MaxSpeed {
 // Searches `window` of the turnaround run (the scenario's kind is taken as turnaround), in head
 // travel: everything but the times is the same at any head speed. Speeds are signed along the
 // path; the limit applies to their magnitude. Throws InputError for a limit that is not a finite
-// speed > 0, as cut_window does, and ("time range") for a window too long to scan.
-MaxSpeed max_head_speed(const Scenario& s, double limit, const RunWindow& window = kTurnaroundWindow);
+// speed > 0, as cut_window does, and ("time range") for a window too long to scan. It runs on the
+// calling thread, and throws Cancelled when `executor` (if given) asks to stop.
+MaxSpeed max_head_speed(const Scenario& s, double limit, const RunWindow& window = kTurnaroundWindow,
+                        const Executor* executor = nullptr);
 
 // The largest handle speed (magnitude) over the head speed at one head arc position, and which handle.
 struct SpeedRatio {

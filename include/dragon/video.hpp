@@ -40,6 +40,17 @@ inline constexpr double kMinVideoFps = 0.01;
 inline constexpr double kMaxVideoFps = 240.0;
 // The largest side of a video, px: memory and the codecs' limits, not taste.
 inline constexpr int kMaxVideoSide = 8192;
+// The most pixels a WebM frame may have (4096x4096, 16.8 million). libvpx's VP9 encoder keeps
+// a token buffer of ~48 bytes a pixel and its reference frames besides: ~1.4 GB resident at
+// this size (scripts/limits.sh), and 7.7 GB was measured at 8192x8192. Every size
+// a video accepts stays under 2 GB resident (H.264 allows 8192x4352 at most: ~1 GB).
+inline constexpr long kMaxWebmPixels = 4096L * 4096L;
+// The frames being drawn and waiting for the encoder take at most this much memory: two per
+// drawing worker, up to 8 workers at small sizes, fewer as the frames grow (3 at 3840x2160, 2 at
+// 4096x4096, one with its two frames from 8192x4352 up: a 8192x8192 frame is 256 MiB). Above 3840x2160 the
+// encoders are held to a few frames in flight too (one reference frame and no B-frames for
+// H.264, at most 2 encoder threads for H.264 and 8 for VP9).
+inline constexpr long kMaxFrameRingBytes = 256L << 20;
 // The most frames a film may have: far beyond any sensible film (an hour at 240 fps is 864 000);
 // stops a typo from running for days.
 inline constexpr int kMaxFilmFrames = 1'000'000;

@@ -37,8 +37,11 @@ struct RunWindow {
 // The turnaround's window: the contest's 100 s before and after the turn, at 1 m/s.
 inline constexpr RunWindow kTurnaroundWindow{Along::metres(-100.0), Along::metres(100.0)};
 
-// "-100 m" / "12.5 s": how an end was given, for messages.
+// "-100 m" / "12.5 s": how an end was given, for messages; "open" for +inf (as far as the motion goes).
 std::string to_string(const Along& a);
+// "12.5", "12.5s" or "12.5 s": seconds; "-100m" or "-100 m": metres of head travel. nullopt for
+// anything else (a number that is not finite included).
+std::optional<Along> parse_along(const std::string& text);
 
 // A window as the analysis searched it: in travel and in time, after cutting it to the valid
 // motion (the ends are then where the motion ends, and the jams there say why).

@@ -1,7 +1,7 @@
 // dragon collide (Q2): the first moment two benches touch.
 #include <fmt/format.h>
 
-#include "cli/answers.hpp"
+#include "dragon/answers.hpp"
 #include "cli/commands.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
@@ -26,7 +26,7 @@ struct CollideOptions {
 // With no contact the output file still answers: the table with its header and no rows, so
 // that an older file from another run is never left looking like this one's answer.
 void write_no_contact(const std::string& path) {
-    if (extension_of(path) == ".xlsx") write_result2_xlsx(Frame{}, path);
+    if (extension_of(path) == ".xlsx") write_result2_xlsx(Frame{}, path, kWorkbooks);
     else write_table({}, path);
 }
 }  // namespace
@@ -76,7 +76,7 @@ void register_collide(CLI::App& app, Registry& reg) {
             return 0;
         }
         if (!opt->out.empty()) {
-            if (extension_of(opt->out) == ".xlsx") write_result2_xlsx(c->frame, opt->out);
+            if (extension_of(opt->out) == ".xlsx") write_result2_xlsx(c->frame, opt->out, kWorkbooks);
             else write_table({c->frame}, opt->out, digits);
             status(opt->quiet, "wrote {}", opt->out);
         }

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/asset_dir.hpp"
 #include "cli/commands.hpp"
 #include "cli/print_flags.hpp"
 #include "cli/progress.hpp"
@@ -63,7 +64,8 @@ void register_figures(CLI::App& app, Registry& reg) {
             return 0;
         }
         FigureOptions fo;
-        fo.theme = load_theme(opt->theme);
+        fo.theme = load_theme(opt->theme, asset_dir());
+        fo.asset_dir = asset_dir();
         fo.scale = opt->scale;
         fo.only = opt->only;
         fo.format = opt->format;
@@ -77,7 +79,7 @@ void register_figures(CLI::App& app, Registry& reg) {
         std::int64_t done = 0;
         ProgressLine progress("figures", opt->quiet);
         write_figures(opt->out, opt->scenario.resolve(), fo, [&](const FigureInfo&, const std::string& path) {
-            if (!opt->quiet) progress.print_above(fmt::format("wrote {}", path));
+            status(opt->quiet, "wrote {}", path);  // said once the run's files are in place
             progress.update(++done, total);
         });
         return 0;

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/asset_dir.hpp"
 #include "cli/wording.hpp"
 #include "cli/commands.hpp"
 #include "cli/print_flags.hpp"
@@ -37,7 +38,8 @@ void register_film(CLI::App& app, Registry& reg) {
     sub->add_option("storyboard", opt->story, "The storyboard, a .toml file (see assets/films/contest.toml)")->required();
     sub->add_option("-o,--out", opt->out, "Output: .mp4, .webm or .gif; .png with --at for one frame")->required();
     sub->add_option("--at", opt->at, "With a .png: the frame shown this many seconds into the film");
-    sub->add_option("--size", opt->size, "Frame size WIDTHxHEIGHT, over the storyboard's [film] size");
+    sub->add_option("--size", opt->size, "Frame size WIDTHxHEIGHT, over the storyboard's [film] size (mp4 up to "
+                                         "8192x4352, webm up to 4096x4096 in pixels)");
     opt->print.add_to(sub);  // a poster's size on a page (its shape stays the frame's)
     sub->add_option("--lang", opt->lang, "Language of the film's own words (clock, captions at the events, legend): en or "
                                          "zh, over the storyboard's [film] lang");
@@ -70,7 +72,7 @@ void register_film(CLI::App& app, Registry& reg) {
         if (format != VideoFormat::gif && opt->colours)
             throw InputError(fmt::format("--colours {} is not allowed for .{}: it sets a GIF's palette", *opt->colours,
                                          to_string(format)));
-        Storyboard board = load_storyboard(opt->story);
+        Storyboard board = load_storyboard(opt->story, asset_dir());
         if (!opt->size.empty()) {
             const PictureSize size = parse_picture_size(opt->size, kMaxVideoSide);
             board.film.width = size.width;

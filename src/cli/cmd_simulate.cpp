@@ -76,7 +76,7 @@ void register_simulate(CLI::App& app, Registry& reg) {
             print_csv(frames, stdout, digits);
             return 0;
         }
-        write_table(frames, opt->out, digits);
+        write_table(frames, opt->out, digits, kWorkbooks);
         status(opt->quiet, "wrote {} ({} x {})", opt->out, count_of(static_cast<long long>(frames.size()), "frame"),
                count_of(frames.empty() ? 0 : static_cast<long long>(frames.front().handles.size()), "handle"));
         return 0;

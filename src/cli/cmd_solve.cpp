@@ -16,7 +16,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "cli/answers.hpp"
+#include "dragon/answers.hpp"
 #include "cli/commands.hpp"
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
@@ -143,9 +143,7 @@ void register_solve(CLI::App& app, Registry& reg) {
         contest.turn_window = opt->window.resolve(kTurnaroundWindow);
 
         namespace fs = std::filesystem;
-        std::error_code ec;
-        fs::create_directories(opt->dir, ec);
-        if (!fs::is_directory(opt->dir))
+        if (!make_output_folder(opt->dir))
             throw InputError(fmt::format("-o {} is not allowed: the folder cannot be created", opt->dir));
         // Every target is checked, and its temporary file made, before any work: a folder or an
         // unwritable name in the way fails here with no file touched. They are renamed into
@@ -165,8 +163,8 @@ void register_solve(CLI::App& app, Registry& reg) {
         // The long workbooks (most of the time: libxlsxwriter formats and deflates every cell)
         // are written as soon as their tables are ready, while the other questions are answered.
         // (Nothing is written on stderr meanwhile: libxlsxwriter's closing mutes it.)
-        if (result1) contest.on_q1_table = [result1](const std::vector<Frame>& t) { write_result_xlsx(t, *result1); };
-        if (result4) contest.on_q4_table = [result4](const std::vector<Frame>& t) { write_result_xlsx(t, *result4); };
+        if (result1) contest.on_q1_table = [result1](const std::vector<Frame>& t) { write_result_xlsx(t, *result1, kWorkbooks); };
+        if (result4) contest.on_q4_table = [result4](const std::vector<Frame>& t) { write_result_xlsx(t, *result4, kWorkbooks); };
         const ContestAnswers a = solve_contest(s, contest);
         Json summary = Json::object();
 
@@ -193,7 +191,7 @@ void register_solve(CLI::App& app, Registry& reg) {
             }
             // With no contact, the contest's layout with no rows, so no older answer is left
             // looking like this one's.
-            write_result2_xlsx(q2->contact ? q2->contact->frame : Frame{}, *result2);
+            write_result2_xlsx(q2->contact ? q2->contact->frame : Frame{}, *result2, kWorkbooks);
             summary["q2"] = collide_answer(*q2, false);
             summary["q2"]["file"] = "result2.xlsx";
         }

@@ -1,7 +1,10 @@
 // dragon sweep: the answers mapped over the design space; dragon sweep merge: a sweep's parts
 // joined. Thin: the grid, rows and runs are the library's (dragon/sweep.hpp), the answers the
 // commands' (cli/answers.hpp).
+#include <algorithm>
+#include <cstdio>
 #include <optional>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -75,13 +78,31 @@ int run_merge(const SweepOptions& opt) {
     return 0;
 }
 
+// More workers than scenarios, or than a few per core, only wait (and each is a thread: 100000
+// of them ran for ten minutes without a row).
+constexpr int kWorkersPerCore = 4;
+
+// The workers the sweep runs on: --workers, capped at the scenarios of this run and at
+// kWorkersPerCore a core, with a note when the cap takes some away; else one per core.
+void set_workers(const std::optional<int>& asked, std::size_t scenarios, bool quiet) {
+    if (!asked) return;
+    if (*asked < 1) throw InputError(fmt::format("--workers {} is not allowed: at least 1", *asked));
+    const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    const int most = static_cast<int>(std::min<std::size_t>(std::max<std::size_t>(scenarios, 1),
+                                                            static_cast<std::size_t>(kWorkersPerCore * cores)));
+    const int workers = std::min(*asked, most);
+    if (workers < *asked && !quiet)
+        fmt::print(stderr, "dragon: note: --workers {}: {} run at once (at most one per scenario, {} here, and {} per "
+                           "core, {} here)\n", *asked, workers, scenarios, kWorkersPerCore, kWorkersPerCore * cores);
+    set_default_workers(workers);
+}
+
 int run(SweepOptions& opt) {
     if (opt.merge->parsed()) return run_merge(opt);
-    if (opt.workers) {
-        if (*opt.workers < 1) throw InputError(fmt::format("--workers {} is not allowed: at least 1", *opt.workers));
-        set_default_workers(*opt.workers);
-    }
+    if (opt.workers && *opt.workers < 1)
+        throw InputError(fmt::format("--workers {} is not allowed: at least 1", *opt.workers));
     const SweepSetup setup = make_setup(opt.request, opt.scenario);
+    set_workers(opt.workers, setup.shard.size(setup.grid.size()), opt.output.quiet);
     check_output(opt.output);
     const std::optional<PrintSize> print = plot_print(opt.print, opt.plot);
     if (!opt.plot.empty()) {
@@ -98,10 +119,15 @@ int run(SweepOptions& opt) {
         status(opt.output.quiet, "wrote {}: {}{}", opt.output.out, count_of(static_cast<long long>(t.done_before + t.made), "row"),
                t.done_before ? fmt::format(" ({} new)", t.made) : "");
     if (maps) write_plot(opt.plot, *maps, print, opt.output.quiet);
+    // A run that fails leaves no finished file: the rows stay in the partial one, and --resume
+    // makes the failed rows again.
     if (t.failed > 0)
-        throw std::runtime_error(fmt::format("{} of {} failed ({} status says why)", t.failed,
-                                             count_of(static_cast<long long>(t.made), "scenario"),
-                                             t.failed == 1 ? "its row's" : "their rows'"));
+        throw std::runtime_error(fmt::format(
+            "{} of {} failed ({} status says why){}", t.failed, count_of(static_cast<long long>(t.made), "scenario"),
+            t.failed == 1 ? "its row's" : "their rows'",
+            opt.output.out.empty() ? ""
+                                   : fmt::format("; the rows stay in {}, and --resume makes the failed ones again",
+                                                 partial_path(opt.output.out))));
     return 0;
 }
 
@@ -141,7 +167,9 @@ void register_sweep(CLI::App& app, Registry& reg) {
     sub->add_option("--plot", opt->plot, "Also draw the map (.png, .svg or .pdf): line plots over one varied value, heat "
                                          "maps over two");
     opt->print.add_to(sub);
-    sub->add_option("--workers", opt->workers, "Scenarios run at once (default: one per core)");
+    sub->add_option("--workers", opt->workers,
+                    fmt::format("Scenarios run at once (default: one per core; at most one per scenario and {} per "
+                                "core: more would only wait)", kWorkersPerCore));
     add_quiet_flag(sub, opt->output.quiet);
 
     opt->merge = sub->add_subcommand("merge", "Joins a sweep's parts (its shards) into one file, checking every scenario "

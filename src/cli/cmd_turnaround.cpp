@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/answers.hpp"
+#include "dragon/answers.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "cli/report.hpp"

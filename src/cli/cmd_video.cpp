@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/asset_dir.hpp"
 #include "cli/commands.hpp"
 #include "cli/report.hpp"
 #include "cli/progress.hpp"
@@ -119,7 +120,8 @@ void register_video(CLI::App& app, Registry& reg) {
     sub->add_option("--fps", opt->fps, "Frames per second of video, 0.01 to 240 (default 30)");
     sub->add_option("--speedup", opt->speedup, "Simulated seconds per second of video (default 10)");
     sub->add_option("--hold", opt->hold, "Seconds the last moment stays on screen, 0..3600, drawn once (default 1 at a collision, else 0)");
-    sub->add_option("--size", opt->size, "Picture size in pixels, WIDTHxHEIGHT (default 1280x720; even for mp4/webm)");
+    sub->add_option("--size", opt->size, "Picture size in pixels, WIDTHxHEIGHT (default 1280x720; even for mp4/webm; "
+                                         "mp4 up to 8192x4352, webm up to 4096x4096 in pixels)");
     sub->add_option("--crf", opt->crf,
                     fmt::format("Quality, lower is better: H.264 0-51 (default {}), VP9 0-63 (default {}); not for GIF",
                                 kDefaultCrf.h264, kDefaultCrf.vp9));
@@ -127,7 +129,8 @@ void register_video(CLI::App& app, Registry& reg) {
                                          "encodes ~2x faster into ~5x larger files)");
     sub->add_option("--tune", opt->tune, "libx264 tune: animation (default, for line art), film, stillimage, "
                                        "grain, psnr, ssim, fastdecode, zerolatency or none");
-    sub->add_option("--threads", opt->threads, "Encoder threads, 0 = automatic (default)");
+    sub->add_option("--threads", opt->threads, "Encoder threads, 0 = automatic (default); above 3840x2160 at most 2 "
+                                               "for mp4 and 8 for webm, to stay under 2 GB");
     sub->add_option("--colours", opt->colours, "GIF palette size, 2-256 (default 64, 256 with --speed-colours)");
     sub->add_flag("--follow-head", opt->follow_head, "Keep the head in the middle of the picture (a 12 m square unless --zoom)");
     sub->add_option("--zoom", opt->zoom, "Show a square of this many metres, around the head with --follow-head, "
@@ -171,7 +174,7 @@ void register_video(CLI::App& app, Registry& reg) {
         { AtomicFile probe(opt->out); }  // an unwritable path fails here, before any work
         const Scenario s = opt->scenario.resolve();
         SceneOptions scene;
-        scene.theme = load_theme(opt->theme);
+        scene.theme = load_theme(opt->theme, asset_dir());
         scene.language = parse_language(opt->lang);
         scene.colour_by_speed = opt->colour_by_speed;
         scene.show_guides = scene.show_turning_space = !opt->no_guides;

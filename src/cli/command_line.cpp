@@ -10,6 +10,7 @@
 #include <fmt/ranges.h>
 
 #include "cli/scenario_flags.hpp"
+#include "dragon/input_file.hpp"
 
 namespace dragon::cli {
 
@@ -55,7 +56,10 @@ std::vector<std::string> option_names(const CLI::App& sub) {
     return names;
 }
 
-void refuse(const std::string& line) { std::fputs(fmt::format("dragon: error: {}\n", line).c_str(), stderr); }
+// One line whatever the user typed: control characters in a value or a name are shown escaped.
+void refuse(const std::string& line) {
+    std::fputs(fmt::format("dragon: error: {}\n", shown_text(line, 2000)).c_str(), stderr);
+}
 
 bool looks_like_number(const std::string& s) {
     char* end = nullptr;

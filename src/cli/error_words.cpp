@@ -43,6 +43,7 @@ const std::map<std::string, FlagWords>& flag_of_field() {
         {"speed limit", {"--limit"}},
         {"decimals", {"--digits"}},
         {"sweep axis", {"--vary"}},
+        {"measure", {"--measure"}},
         {"shard", {"--shard"}},
         // Pictures and films.
         {"picture size", {"--size"}},

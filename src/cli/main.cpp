@@ -13,6 +13,9 @@
 #include "cli/commands.hpp"
 #include "cli/error_words.hpp"
 #include "cli/kill_cleanup.hpp"
+#include "cli/status.hpp"
+#include "dragon/atomic_file.hpp"
+#include "dragon/input_file.hpp"
 #include "dragon/scenario.hpp"
 
 namespace {
@@ -21,6 +24,13 @@ namespace {
 // pipe, `> /dev/full`) has failed, whatever it wrote to files. Buffered output fails only when
 // flushed, so the check is at the end. Returns false, with errno set, if anything was lost.
 bool stdout_intact() { return std::fflush(stdout) == 0 && std::ferror(stdout) == 0; }
+
+// One line on `to`, whatever the message holds: control characters escaped (a NUL would cut it
+// short, a newline make two lines), and cut if it is very long (a file's 10 MB key quoted back).
+void say(std::FILE* to, const std::string& message) {
+    const std::string line = dragon::shown_text(message, 2000) + "\n";
+    std::fwrite(line.data(), 1, line.size(), to);
+}
 
 int stdout_failed(int err) {
     std::fprintf(stderr, "dragon: failed: cannot write the answers to standard output: %s\n", std::strerror(err));
@@ -32,7 +42,7 @@ int stdout_failed(int err) {
 int main(int argc, char** argv) {
     using namespace dragon;
     cli::install_kill_cleanup();  // first: a kill at any moment leaves no temporary file
-    cli::point_library_at_assets(argv[0]);
+    cli::find_tool_assets(argv[0]);
     CLI::App app{"dragon: exact simulation, collisions and pictures of the Bench Dragon (CUMCM 2024 A)"};
     app.name("dragon");
     app.require_subcommand(1);
@@ -55,10 +65,19 @@ int main(int argc, char** argv) {
         return stdout_intact() ? *done : stdout_failed(errno);
     int code = 0;
     try {
+        // The command's files are put in place only when the whole run has succeeded, its
+        // answers on stdout included: a run that fails leaves no new output. No output may be
+        // one of the files it reads.
+        RunOutputs outputs;
         const std::string name = app.get_subcommands().front()->get_name();
         code = reg.at(name)();
+        if (!stdout_intact()) return stdout_failed(errno);
+        if (code == 0) {
+            outputs.commit();
+            cli::print_held_status_lines();  // "wrote ...", now that it is true
+        }
     } catch (const InputError& e) {
-        std::fprintf(stderr, "dragon: error: %s\n", cli::word(e).c_str());
+        say(stderr, "dragon: error: " + cli::word(e));
         return 2;
     } catch (const std::exception& e) {
         // A SolverError (no answer reached) or a FileError (a file that cannot be written) are
@@ -66,9 +85,8 @@ int main(int argc, char** argv) {
         // A write to stdout that failed (fmt::print throws then): the one cause worth naming.
         const auto* sys = dynamic_cast<const std::system_error*>(&e);
         if (std::ferror(stdout)) return stdout_failed(sys ? sys->code().value() : errno);
-        std::fprintf(stderr, "dragon: failed: %s\n", e.what());
+        say(stderr, std::string("dragon: failed: ") + e.what());
         return 1;
     }
-    if (!stdout_intact()) return stdout_failed(errno);
     return code;
 }

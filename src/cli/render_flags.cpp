@@ -1,3 +1,4 @@
+#include "cli/asset_dir.hpp"
 #include "cli/render_flags.hpp"
 
 #include <cmath>
@@ -52,7 +53,7 @@ std::pair<int, int> RenderFlags::size() const {
 
 SceneOptions RenderFlags::scene_options() const {
     SceneOptions so;
-    so.theme = load_theme(theme_);
+    so.theme = load_theme(theme_, asset_dir());
     so.colour_by_speed = speed_colours_;
     so.show_guides = so.show_turning_space = !no_guides_;
     so.show_text = !no_text_;

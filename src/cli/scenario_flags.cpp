@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "dragon/input_file.hpp"
+
 namespace dragon::cli {
 
 namespace {
@@ -119,14 +121,15 @@ void ScenarioFlags::fill(const std::string& scenario_file,
         const auto f = std::find_if(std::begin(kFlags), std::end(kFlags), [&](const FlagInfo& i) { return flag == i.name; });
         if (f == std::end(kFlags))
             throw InputError(fmt::format("{}: {} is not a scenario flag (use the flags' names without their dashes: "
-                                         "width, body-length, ...)", source, name));
+                                         "width, body-length, ...)", source, shown_text(name)));
         char* end = nullptr;
         const double v = std::strtod(text.c_str(), &end);
         if (text.empty() || end != text.c_str() + text.size())
-            throw InputError(fmt::format("{}: {} = {} is not allowed: give a number", source, name, text));
+            throw InputError(fmt::format("{}: {} = {} is not allowed: give a number", source, name, shown_text(text)));
         if (f->value == value::bench_count) {
             if (v != std::floor(v) || !(std::abs(v) <= 1e9))
-                throw InputError(fmt::format("{}: bench-count = {} is not allowed: give a whole number", source, text));
+                throw InputError(fmt::format("{}: bench-count = {} is not allowed: give a whole number", source,
+                                             shown_text(text)));
             if (!bench_count_) bench_count_ = static_cast<long long>(v);
             continue;
         }

@@ -5,12 +5,13 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 
 #include <fmt/format.h>
 
+#include "cli/sweep_row_check.hpp"
 #include "dragon/atomic_file.hpp"
+#include "dragon/input_file.hpp"
 
 namespace dragon::cli {
 
@@ -30,18 +31,13 @@ std::string describe_scenario(const SweepSetup& setup, std::size_t index) {
 SweepSetup whole_sweep(const std::vector<std::string>& parts) {
     if (parts.empty()) throw InputError("dragon sweep merge needs the files to merge: dragon sweep merge OUT.csv PART.csv...");
     // The first line is all it takes; merge_parts reads the rest.
-    std::ifstream in(parts.front(), std::ios::binary);
-    std::string spec;
-    std::error_code ec;
-    if (!in || std::filesystem::is_directory(parts.front(), ec) || !std::getline(in, spec))
-        throw InputError(fmt::format("'{}' cannot be read, or is empty", parts.front()));
+    const std::string spec = read_first_line(parts.front(), {"sweep part"});
     return read_spec_line(whole_spec_line(spec, parts.front()), parts.front());
 }
 
 std::size_t merge_parts(const SweepSetup& whole, const std::string& out, const std::vector<std::string>& parts,
                         const std::function<void(const std::string&)>& on_row) {
     const std::string spec = spec_line(whole), head = csv_line(header(whole));
-    const std::size_t naxes = whole.grid.axes().size();
     // Which file holds each scenario (0: none yet): 4 bytes a scenario, the rows never held.
     std::vector<std::uint32_t> owner(whole.grid.size(), 0);
     AtomicFile file(out);
@@ -58,21 +54,26 @@ std::size_t merge_parts(const SweepSetup& whole, const std::string& out, const s
         const RowFileScan scan = scan_row_file(
             path, 2,
             [&](const std::vector<std::string>& preamble) {
-                if (whole_spec_line(preamble[0], path) != spec)
-                    throw InputError(fmt::format("'{}' is not a part of the sweep of '{}': its first line (what the "
-                                                 "sweep is) differs", path, parts.front()));
+                // Its own shard aside, a part's first line is the whole sweep's.
+                std::string found = preamble[0];
+                try {
+                    found = whole_spec_line(preamble[0], path);
+                } catch (const InputError&) {
+                }
+                if (found != spec)
+                    throw InputError(fmt::format("'{}' is not a part of the sweep of '{}': {}", shown_text(path, 4096),
+                                                 shown_text(parts.front(), 4096), spec_difference(found, spec)));
                 if (preamble[1] != head)
-                    throw InputError(fmt::format("'{}' is not a part of the sweep of '{}': its header differs", path,
-                                                 parts.front()));
+                    throw InputError(fmt::format("'{}' is not a part of the sweep of '{}': its header (line 2) differs",
+                                                 shown_text(path, 4096), shown_text(parts.front(), 4096)));
             },
             [&](const std::string& line) {
                 ++number;
-                const std::vector<std::string> fields = split_csv(line);
-                const std::optional<std::size_t> index =
-                    fields.size() < naxes ? std::nullopt
-                                          : whole.grid.index_of(std::vector<std::string>(fields.begin(), fields.begin() + static_cast<long>(naxes)));
+                const RowCheck check = check_row(whole, line);
+                const std::optional<std::size_t> index = check.index;
                 if (!index)
-                    throw InputError(fmt::format("line {} of '{}' is no scenario of this sweep: {:.80}", number, path, line));
+                    throw InputError(fmt::format("line {} of '{}' is not a row of this sweep: {}: {}", number,
+                                                 shown_text(path, 4096), check.problem, shown_text(line, 60)));
                 if (owner[*index] != 0)
                     throw InputError(fmt::format("the scenario {} is there twice: in '{}' and in '{}' (line {})",
                                                  describe_scenario(whole, *index), parts[owner[*index] - 1], path, number));
@@ -80,7 +81,8 @@ std::size_t merge_parts(const SweepSetup& whole, const std::string& out, const s
                 fmt::print(sink.get(), "{}\n", line);
                 on_row(line);
                 ++rows;
-            });
+            },
+            row_limits(whole, "sweep part"));
         if (scan.torn)
             throw InputError(fmt::format("'{}' ends in a torn line: it is the rows of an unfinished run (go on with it "
                                          "with --resume first)", path));

@@ -1,14 +1,20 @@
 #include "cli/sweep_run.hpp"
 
+#include <sys/stat.h>
+
 #include <cstdio>
 #include <filesystem>
+#include <memory>
+#include <set>
 
 #include <fmt/format.h>
 
 #include "cli/progress.hpp"
 #include "cli/status.hpp"
 #include "cli/wording.hpp"
+#include "cli/sweep_row_check.hpp"
 #include "dragon/atomic_file.hpp"
+#include "dragon/input_file.hpp"
 
 namespace dragon::cli {
 
@@ -24,7 +30,14 @@ void check_output(const SweepOutput& o) {
     if (extension_of(o.out) != ".csv")
         throw InputError(fmt::format("-o {} has extension '{}': a sweep writes .csv", o.out, extension_of(o.out)));
     std::error_code ec;
-    if (fs::exists(partial_path(o.out), ec) && !o.resume)
+    const fs::file_status partial = fs::symlink_status(partial_path(o.out), ec);
+    // A link there is none of the sweep's making: its rows would be read from, and the finished
+    // file renamed from, wherever it points.
+    if (fs::is_symlink(partial))
+        throw InputError(fmt::format("-o {} is not allowed: {} is a symbolic link, and a sweep keeps its unfinished "
+                                     "rows in a plain file of its own; remove the link", shown_text(o.out, 4096),
+                                     shown_text(partial_path(o.out), 4096)));
+    if (fs::exists(partial) && !o.resume)
         throw InputError(fmt::format("-o {} is not allowed: {} holds the rows of an unfinished sweep; add --resume to "
                                      "go on with it, or remove it", o.out, partial_path(o.out)));
     AtomicFile probe(o.out);  // a folder in the way, or one that takes no files, fails now
@@ -32,38 +45,83 @@ void check_output(const SweepOutput& o) {
 
 namespace {
 
-// The rows already written for this sweep (resuming): marks them done and hands each to on_row.
-// Returns where its complete lines end.
-std::size_t take_existing(const SweepSetup& setup, const std::string& path, const std::vector<std::string>& preamble,
-                          std::vector<bool>& done, SweepTally& tally,
-                          const std::function<void(const std::string&)>& on_row) {
-    const std::size_t naxes = setup.grid.axes().size();
-    std::size_t number = 0;
+RowFileLimits own_rows_limits(const SweepSetup& setup) {
+    RowFileLimits limits = row_limits(setup, "sweep rows");
+    limits.output_too = true;  // this sweep's own rows, gone on with: -o may well be the file
+    return limits;
+}
+
+// The rows already written for this sweep (resuming): marks them done and hands each to
+// on_row. A row whose measure failed (for a reason not the scenario's) is not taken: it is
+// computed again. Returns where the file's complete lines end, and the failed rows' lines.
+struct Existing {
+    std::size_t complete_bytes = 0;
+    std::set<std::size_t> failed_lines;
+};
+Existing take_existing(const SweepSetup& setup, const std::string& path, const std::vector<std::string>& preamble,
+                       std::vector<bool>& done, SweepTally& tally, const std::function<void(const std::string&)>& on_row) {
+    std::size_t number = preamble.size();  // the line being read
+    Existing out;
     const RowFileScan scan = scan_row_file(
         path, preamble.size(),
         [&](const std::vector<std::string>& found) {
-            if (found != preamble)
-                throw InputError(fmt::format("--resume is not allowed: '{}' holds the rows of another sweep (its "
-                                             "first lines differ from this one's); run the same sweep, or remove it",
-                                             path));
+            const std::string why = found[0] != preamble[0] ? spec_difference(found[0], preamble[0])
+                                    : found[1] != preamble[1] ? "its header (line 2) differs from this sweep's"
+                                                              : "";
+            if (!why.empty())
+                throw InputError(fmt::format("--resume is not allowed: '{}' holds the rows of another sweep: {}; run "
+                                             "the same sweep, or remove it", shown_text(path, 4096), why));
         },
         [&](const std::string& row) {
             ++number;
-            const std::vector<std::string> fields = split_csv(row);
-            const std::optional<std::size_t> index =
-                fields.size() < naxes ? std::nullopt
-                                      : setup.grid.index_of(std::vector<std::string>(fields.begin(), fields.begin() + static_cast<long>(naxes)));
-            if (!index || !setup.shard.holds(*index))
-                throw InputError(fmt::format("--resume is not allowed: row {} of '{}' is no scenario of this sweep's "
-                                             "part: {:.80}", number, path, row));
-            if (done[*index])
-                throw InputError(fmt::format("--resume is not allowed: '{}' holds the scenario {} twice", path,
-                                             csv_line(setup.grid.cells(*index))));
-            done[*index] = true;
+            const RowCheck check = check_row(setup, row);
+            if (!check.index)
+                throw InputError(fmt::format("--resume is not allowed: line {} of '{}' is not a row of this sweep: {}: "
+                                             "{}", number, shown_text(path, 4096), check.problem, shown_text(row, 60)));
+            if (done[*check.index])
+                throw InputError(fmt::format("--resume is not allowed: '{}' holds the scenario {} twice (line {})",
+                                             shown_text(path, 4096), csv_line(setup.grid.cells(*check.index)), number));
+            if (check.failed) {
+                out.failed_lines.insert(number);
+                return;
+            }
+            done[*check.index] = true;
             ++tally.done_before;
             on_row(row);
-        });
-    return scan.complete_bytes;
+        },
+        own_rows_limits(setup));
+    out.complete_bytes = scan.complete_bytes;
+    return out;
+}
+
+// `partial` made anew from `source`'s complete lines but `dropped` (their row is computed
+// again), durably, replacing it whole; returns its size.
+std::size_t rewrite_without(const SweepSetup& setup, const std::string& source, const std::string& partial,
+                            const std::set<std::size_t>& dropped) {
+    const fs::path p(partial);
+    const std::string temp = (p.parent_path() / ("." + p.filename().string() + ".rewrite")).string();
+    std::string text;
+    std::size_t number = 2;  // the line being read
+    scan_row_file(
+        source, 2,
+        [&](const std::vector<std::string>& preamble) {
+            for (const std::string& line : preamble) text += line + "\n";
+        },
+        [&](const std::string& line) {
+            if (!dropped.count(++number)) text += line + "\n";
+        },
+        own_rows_limits(setup));
+    {
+        fs::remove(temp);
+        struct stat was {};
+        std::unique_ptr<RowLog> log =
+            RowLog::create(temp, {}, ::stat(source.c_str(), &was) == 0 ? was.st_mode & 0777 : 0666);
+        log->append(text.substr(0, text.empty() ? 0 : text.size() - 1));
+    }
+    std::error_code ec;
+    fs::rename(temp, partial, ec);
+    if (ec) throw FileError(partial, "write", ec.message());
+    return text.size();
 }
 
 }  // namespace
@@ -78,16 +136,25 @@ SweepTally run_rows(const SweepSetup& setup, const SweepOutput& o, const std::fu
         const std::string partial = partial_path(o.out);
         std::error_code ec;
         std::string source = o.out;  // where the rows gone on with were
-        if (o.resume && fs::exists(partial, ec)) {
-            source = partial;
-            log = RowLog::reopen(partial, take_existing(setup, partial, preamble, done, tally, on_row));
-        } else if (o.resume && fs::exists(o.out, ec)) {
-            // A finished sweep: go on with a copy, so that it stays whole until the new one is.
-            const std::size_t bytes = take_existing(setup, o.out, preamble, done, tally, on_row);
-            fs::copy_file(o.out, partial, fs::copy_options::overwrite_existing);
+        if (o.resume && (fs::exists(fs::symlink_status(partial, ec)) || fs::exists(o.out, ec))) {
+            // Going on with the unfinished rows, or with a finished sweep through a copy of it, so
+            // that it stays whole until the new one is.
+            const bool unfinished = fs::exists(fs::symlink_status(partial, ec));
+            source = unfinished ? partial : o.out;
+            const Existing existing = take_existing(setup, source, preamble, done, tally, on_row);
+            std::size_t bytes = existing.complete_bytes;
+            if (!existing.failed_lines.empty()) {
+                bytes = rewrite_without(setup, source, partial, existing.failed_lines);
+                status(o.quiet, "resuming: {} failed row{} of {} made again", existing.failed_lines.size(),
+                       existing.failed_lines.size() == 1 ? "" : "s", source);
+            } else if (!unfinished) {
+                fs::copy_file(o.out, partial, fs::copy_options::overwrite_existing);
+            }
             log = RowLog::reopen(partial, bytes);
         } else {
-            log = RowLog::create(partial, preamble);
+            // No more readable than the file it will replace (a 0600 OUT.csv: 0600 rows).
+            struct stat old {};
+            log = RowLog::create(partial, preamble, ::stat(o.out.c_str(), &old) == 0 ? old.st_mode & 0777 : 0666);
         }
         if (tally.done_before > 0)
             status(o.quiet, "resuming: {} of {} {} in {} already", tally.done_before,

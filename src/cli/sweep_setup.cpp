@@ -1,50 +1,68 @@
 #include "cli/sweep_setup.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "cli/window_flags.hpp"
+#include "dragon/input_file.hpp"
 
 namespace dragon::cli {
 
 namespace {
 
-constexpr const char* kSpecPrefix = "# dragon sweep ";
-constexpr int kFormat = 1;  // of the spec line and the rows; a later change of either raises it
-
-std::string measure_names(const std::vector<const MeasureInfo*>& measures) {
-    std::vector<std::string> names;
-    for (const MeasureInfo* m : measures) names.emplace_back(m->name);
-    return fmt::format("{}", fmt::join(names, ", "));
-}
-
-bool has_measure(const std::vector<const MeasureInfo*>& measures, const char* name) {
-    return std::any_of(measures.begin(), measures.end(), [&](const MeasureInfo* m) { return std::string(m->name) == name; });
-}
-
-// The file's [measure] options under the flags: a flag given wins.
-void take_file_options(const SweepFile& f, const std::string& path, SweepRequest& req) {
+// The file's [measure] options under the flags: a flag given wins. Each is checked as the flag
+// would be, and named by its key.
+void take_file_options(const SweepFile& f, const std::string& path, SweepRequest& req,
+                       const std::vector<const MeasureInfo*>& measures) {
+    MeasureOptions from_file;
     for (const SweepFile::Option& o : f.options) {
-        const std::string where = fmt::format("sweep file '{}': [{}] {}", path, o.measure, o.key);
+        const std::string where = fmt::format("sweep file '{}': [{}] {}", shown_text(path, 4096), shown_text(o.measure),
+                                              shown_text(o.key));
         const auto number = [&] {
             char* end = nullptr;
             const double v = std::strtod(o.value.c_str(), &end);
             if (o.value.empty() || end != o.value.c_str() + o.value.size())
-                throw InputError(fmt::format("{} = {} is not allowed: give a number", where, o.value));
+                throw InputError(fmt::format("{} = {} is not allowed: give a number", where, shown_text(o.value)));
             return v;
         };
-        if (o.measure == "min-pitch" && o.key == "lo") req.lo = req.lo.value_or(o.value);
-        else if (o.measure == "min-pitch" && o.key == "hi") req.hi = req.hi.value_or(o.value);
-        else if (o.measure == "min-pitch" && o.key == "grid") req.grid = req.grid.value_or(number());
-        else if (o.measure == "max-speed" && o.key == "limit") req.limit = req.limit.value_or(number());
-        else if (o.measure == "window" && o.key == "from") req.from = req.from.value_or(o.value);
-        else if (o.measure == "window" && o.key == "to") req.to = req.to.value_or(o.value);
-        else
+        if (o.measure == "min-pitch" && o.key == "lo") {
+            from_file.lo = parse_pitch_bound(where + " =", o.value);
+            req.lo = req.lo.value_or(o.value);
+        } else if (o.measure == "min-pitch" && o.key == "hi") {
+            from_file.hi = parse_pitch_bound(where + " =", o.value);
+            req.hi = req.hi.value_or(o.value);
+        } else if (o.measure == "min-pitch" && o.key == "grid") {
+            from_file.grid = number();
+            if (const auto why = grid_problem(from_file.grid))
+                throw InputError(fmt::format("{} = {} is not allowed: {}", where, shown_text(o.value), *why));
+            req.grid = req.grid.value_or(from_file.grid);
+        } else if (o.measure == "max-speed" && o.key == "limit") {
+            from_file.limit = number();
+            if (const auto why = limit_problem(from_file.limit))
+                throw InputError(fmt::format("{} = {} is not allowed: {}", where, shown_text(o.value), *why));
+            req.limit = req.limit.value_or(from_file.limit);
+        } else if (o.measure == "window" && o.key == "from") {
+            from_file.from = parse_along(where + " =", o.value);
+            req.from = req.from.value_or(o.value);
+        } else if (o.measure == "window" && o.key == "to") {
+            from_file.to = parse_along(where + " =", o.value);
+            req.to = req.to.value_or(o.value);
+        } else {
             throw InputError(fmt::format("{} is not an option a sweep takes ([min-pitch] lo, hi, grid; [max-speed] "
                                          "limit; [window] from, to)", where));
+        }
     }
+    // The file's own values, each as the file gives it (a flag over one does not excuse it).
+    check_options(from_file, measures, [&](const char* option) {
+        const std::string measure = std::string(option) == "limit" ? "max-speed" : "min-pitch";
+        return fmt::format("sweep file '{}': [{}] {} =", shown_text(path, 4096), measure, option);
+    });
 }
 
 }  // namespace
@@ -63,7 +81,9 @@ SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags) {
         vary.insert(vary.end(), req.vary.begin(), req.vary.end());
         req.vary = vary;
         if (req.measures.empty()) req.measures = f.measures;
-        take_file_options(f, req.file, req);
+        std::vector<const MeasureInfo*> all_measures;
+        for (const MeasureInfo& m : sweep_measures()) all_measures.push_back(&m);
+        take_file_options(f, req.file, req, all_measures);
         flags.fill(f.scenario, f.fixed, fmt::format("sweep file '{}': [fixed]", req.file));
     }
     std::vector<Axis> axes;
@@ -117,129 +137,8 @@ SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags) {
     if (req.limit) options.limit = *req.limit;
     if (req.from) options.from = parse_along("--from", *req.from);
     if (req.to) options.to = parse_along("--to", *req.to);
+    check_options(options, measures, [](const char* option) { return fmt::format("--{}", option); });
     return {std::move(grid), std::move(measures), base, fixed, options, parse_shard(req.shard.empty() ? "1/1" : req.shard)};
-}
-
-std::string spec_line(const SweepSetup& setup) {
-    Json vary = Json::object();
-    for (const Axis& a : setup.grid.axes()) vary[a.parameter->name] = a.cells;
-    Json fixed = Json::object();
-    for (const SweepParameter& p : sweep_parameters())
-        if (setup.fixed & p.value)
-            fixed[p.name] = p.whole ? Json(static_cast<long long>(get_parameter(setup.base, p))) : Json(get_parameter(setup.base, p));
-    Json options = Json::object();
-    if (has_measure(setup.measures, "min-pitch"))
-        options["min-pitch"] = {{"lo", setup.options.lo.text()}, {"hi", setup.options.hi.text()}, {"grid", setup.options.grid}};
-    if (has_measure(setup.measures, "max-speed")) options["max-speed"] = {{"limit", setup.options.limit}};
-    Json window = Json::object();
-    if (setup.options.from) window["from"] = window_end_text(*setup.options.from);
-    if (setup.options.to) window["to"] = window_end_text(*setup.options.to);
-    if (!window.empty()) options["window"] = window;
-    Json measures = Json::array();
-    for (const MeasureInfo* m : setup.measures) measures.push_back(m->name);
-    const Json spec = {{"format", kFormat},
-                       {"measure", measures},
-                       {"vary", vary},
-                       {"fixed", fixed},
-                       {"options", options},
-                       {"shard", fmt::format("{}/{}", setup.shard.index, setup.shard.count)}};
-    return kSpecPrefix + spec.dump(-1, ' ', false, Json::error_handler_t::replace);
-}
-
-namespace {
-
-Json parse_spec(const std::string& line, const std::string& file) {
-    const auto bad = [&](const std::string& why) {
-        return InputError(fmt::format("'{}' is not the rows of a dragon sweep: {}", file, why));
-    };
-    if (line.rfind(kSpecPrefix, 0) != 0) throw bad("its first line does not start with '# dragon sweep'");
-    Json spec = Json::parse(line.substr(std::string(kSpecPrefix).size()), nullptr, false);
-    if (spec.is_discarded() || !spec.is_object()) throw bad("its first line holds no sweep");
-    if (spec.value("format", 0) != kFormat)
-        throw bad(fmt::format("it was written in format {}, and this dragon reads format {}", spec.value("format", 0),
-                              kFormat));
-    return spec;
-}
-
-}  // namespace
-
-SweepSetup read_spec_line(const std::string& line, const std::string& file) {
-    const Json spec = parse_spec(line, file);
-    try {
-        std::vector<Axis> axes;
-        for (const auto& [name, cells] : spec.at("vary").items()) axes.push_back(axis_from_cells(name, cells));
-        std::vector<const MeasureInfo*> measures;
-        for (const Json& m : spec.at("measure")) measures.push_back(&find_measure(m.get<std::string>()));
-        Scenario base;
-        ScenarioValues fixed = 0;
-        for (const auto& [name, v] : spec.at("fixed").items()) {
-            const SweepParameter* p = find_sweep_parameter(name);
-            if (!p) throw InputError(fmt::format("unknown fixed value {}", name));
-            set_parameter(base, *p, v.get<double>());
-            fixed |= p->value;
-        }
-        MeasureOptions options;
-        const Json& o = spec.at("options");
-        if (o.contains("min-pitch")) {
-            options.lo = parse_pitch_bound("lo", o["min-pitch"].at("lo").get<std::string>());
-            options.hi = parse_pitch_bound("hi", o["min-pitch"].at("hi").get<std::string>());
-            options.grid = o["min-pitch"].at("grid").get<double>();
-        }
-        if (o.contains("max-speed")) options.limit = o["max-speed"].at("limit").get<double>();
-        if (o.contains("window")) {
-            if (o["window"].contains("from")) options.from = parse_along("from", o["window"]["from"].get<std::string>());
-            if (o["window"].contains("to")) options.to = parse_along("to", o["window"]["to"].get<std::string>());
-        }
-        return {SweepGrid(std::move(axes)), std::move(measures), base, fixed, options,
-                parse_shard(spec.at("shard").get<std::string>())};
-    } catch (const InputError& e) {
-        throw InputError(fmt::format("'{}' is not the rows of a dragon sweep: its first line: {}", file, e.what()));
-    } catch (const Json::exception& e) {
-        throw InputError(fmt::format("'{}' is not the rows of a dragon sweep: its first line: {}", file, e.what()));
-    }
-}
-
-std::string whole_spec_line(const std::string& line, const std::string& file) {
-    Json spec = parse_spec(line, file);
-    spec["shard"] = "1/1";
-    return kSpecPrefix + spec.dump(-1, ' ', false, Json::error_handler_t::replace);
-}
-
-std::vector<std::string> header(const SweepSetup& setup) {
-    std::vector<std::string> h;
-    for (const Axis& a : setup.grid.axes()) h.emplace_back(a.parameter->name);
-    for (const MeasureInfo* m : setup.measures)
-        for (const std::string& c : m->columns) h.push_back(std::string(m->name) + "." + c);
-    h.emplace_back("status");
-    return h;
-}
-
-SweepRow make_row(const SweepSetup& setup, std::size_t index) {
-    const Scenario s = setup.grid.scenario(setup.base, index);
-    std::vector<std::string> cells = setup.grid.cells(index);
-    SweepRow row;
-    row.json = Json::object();
-    const std::vector<std::size_t> pos = setup.grid.position(index);
-    for (std::size_t k = 0; k < setup.grid.axes().size(); ++k) {
-        const Axis& a = setup.grid.axes()[k];
-        const double v = a.values[pos[k]];
-        row.json[a.parameter->name] = a.parameter->whole ? Json(static_cast<long long>(v)) : Json(v);
-    }
-    std::vector<std::string> notes;
-    for (const MeasureInfo* m : setup.measures) {
-        const MeasureResult r = run_measure(*m, s, setup.options);
-        const std::vector<std::string> answer = r.answer ? flatten(*r.answer, m->columns)
-                                                         : std::vector<std::string>(m->columns.size());
-        cells.insert(cells.end(), answer.begin(), answer.end());
-        row.json[m->name] = r.answer ? *r.answer : Json(nullptr);
-        if (!r.note.empty()) notes.push_back(r.note);
-        row.failed = row.failed || r.state == MeasureResult::State::failed;
-    }
-    const std::string status = notes.empty() ? "ok" : fmt::format("{}", fmt::join(notes, "; "));
-    cells.push_back(status);
-    row.json["status"] = status;
-    row.csv = csv_line(cells);
-    return row;
 }
 
 }  // namespace dragon::cli

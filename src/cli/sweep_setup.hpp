@@ -1,6 +1,5 @@
-// What defines one sweep (its grid, measures, fixed scenario values, measure options and shard),
-// built from the command line and a sweep file, written as the first line of its rows' file and
-// read back from it (for --resume, merge and plots); and its rows.
+// What dragon sweep was asked (its flags, then a sweep file under them), made into a sweep's
+// setup (dragon/sweep_setup.hpp).
 #pragma once
 
 #include <optional>
@@ -9,19 +8,9 @@
 
 #include "cli/report.hpp"
 #include "cli/scenario_flags.hpp"
-#include "cli/sweep_measures.hpp"
-#include "dragon/sweep.hpp"
+#include "dragon/sweep_setup.hpp"
 
 namespace dragon::cli {
-
-struct SweepSetup {
-    SweepGrid grid;
-    std::vector<const MeasureInfo*> measures;
-    Scenario base;              // the fixed values (the contest's where none is given)
-    ScenarioValues fixed = 0;   // the values some measure reads and no axis varies
-    MeasureOptions options;
-    Shard shard;
-};
 
 // What dragon sweep was asked, as text (the flags, then a sweep file under them).
 struct SweepRequest {
@@ -37,25 +26,5 @@ struct SweepRequest {
 // repeated measure, a measure that does not read a varied value, an option no measure takes, a
 // fixed value that is also varied, a scenario flag no measure reads, a bad fixed value.
 SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags);
-
-// The first line of a rows' file: "# dragon sweep " and the setup as one JSON object.
-std::string spec_line(const SweepSetup& setup);
-// The setup a spec line describes; throws InputError naming `file` if it is not one.
-SweepSetup read_spec_line(const std::string& line, const std::string& file);
-// The same line without its shard: the sweep the shards are parts of.
-std::string whole_spec_line(const std::string& line, const std::string& file);
-
-// The second line: the varied values' names, each measure's columns prefixed by its name
-// ("min-pitch.pitch"), then "status".
-std::vector<std::string> header(const SweepSetup& setup);
-
-// One scenario's row: its CSV line and the same as a JSON object (the varied values, each
-// measure's answer or null, the status).
-struct SweepRow {
-    std::string csv;
-    Json json;
-    bool failed = false;  // a measure failed for a reason other than the input's
-};
-SweepRow make_row(const SweepSetup& setup, std::size_t index);
 
 }  // namespace dragon::cli

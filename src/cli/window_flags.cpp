@@ -11,20 +11,9 @@
 namespace dragon::cli {
 
 Along parse_along(const std::string& flag, const std::string& text) {
-    std::string number = text;
-    Along::Unit unit = Along::Unit::seconds;
-    while (!number.empty() && std::isspace(static_cast<unsigned char>(number.back()))) number.pop_back();
-    if (!number.empty() && (number.back() == 'm' || number.back() == 's')) {
-        unit = number.back() == 'm' ? Along::Unit::metres : Along::Unit::seconds;
-        number.pop_back();
-        while (!number.empty() && std::isspace(static_cast<unsigned char>(number.back()))) number.pop_back();
-    }
-    char* end = nullptr;
-    const double v = number.empty() ? NAN : std::strtod(number.c_str(), &end);
-    if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(v))
-        throw InputError(fmt::format("{} {} is not allowed: give a time in seconds (12.5, or 12.5s) or a length "
-                                     "of the head's travel in metres (-100m)", flag, text.empty() ? "''" : text));
-    return {v, unit};
+    if (const std::optional<Along> a = dragon::parse_along(text)) return *a;
+    throw InputError(fmt::format("{} {} is not allowed: give a time in seconds (12.5, or 12.5s) or a length of the "
+                                 "head's travel in metres (-100m)", flag, text.empty() ? "''" : text));
 }
 
 void WindowFlags::add_to(CLI::App* sub, const std::string& what_from, const std::string& what_to) {
@@ -39,11 +28,6 @@ RunWindow WindowFlags::resolve(const RunWindow& defaults) const {
     if (from_) w.from = parse_along("--from", *from_);
     if (to_) w.to = parse_along("--to", *to_);
     return w;
-}
-
-std::string window_end_text(const Along& a) {
-    if (std::isinf(a.value)) return "open";
-    return fmt::format("{} {}", a.value, a.unit == Along::Unit::metres ? "m" : "s");
 }
 
 }  // namespace dragon::cli

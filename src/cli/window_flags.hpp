@@ -33,7 +33,4 @@ private:
     CLI::Option* to_opt_ = nullptr;
 };
 
-// A window end for a help text or a message: "-100 m", "5 s", "open" (+inf).
-std::string window_end_text(const Along& a);
-
 }  // namespace dragon::cli

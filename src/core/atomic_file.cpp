@@ -5,7 +5,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -15,8 +14,10 @@
 
 #include <fmt/format.h>
 
+#include "core/file_placement.hpp"
 #include "core/live_temp_files.hpp"
-#include "dragon/scenario.hpp"
+#include "core/run_outputs.hpp"
+#include "dragon/input_file.hpp"
 
 namespace dragon {
 
@@ -29,36 +30,21 @@ std::string extension_of(const std::string& path) {
     return ext;
 }
 
-namespace {
-
-// A hidden name beside the target, unique per process and per call, with the target's
-// extension (some writers pick the format by it), in its folder so renames stay on one file
-// system: ".result1.tmp1234-0.xlsx".
-std::string hidden_name(const fs::path& target, const char* kind) {
-    static std::atomic<unsigned> counter{0};
-    fs::path dir = target.parent_path();
-    if (dir.empty()) dir = ".";
-    return (dir / fmt::format(".{}.{}{}-{}{}", target.stem().string(), kind, ::getpid(), counter++,
-                              target.extension().string())).string();
-}
-
-}  // namespace
-
 AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {
     if (target_.empty()) throw InputError("output path is empty: give a file name");
-    const fs::path p(target_);
-    if (fs::is_directory(p))
-        throw InputError(fmt::format("output path '{}' is a folder: give a file name", target_));
-    fs::path dir = p.parent_path();
+    const std::string shown = shown_text(target_, 4096);
+    place_ = placement::resolve_target(target_);
+    fs::path dir = fs::path(place_).parent_path();
     if (dir.empty()) dir = ".";
     std::error_code ec;
     if (!fs::is_directory(dir, ec))
-        throw InputError(fmt::format("output path '{}' is not writable: folder '{}' does not exist",
-                                     target_, dir.string()));
+        throw InputError(fmt::format("output path '{}' is not writable: folder '{}' does not exist", shown,
+                                     shown_text(dir.string(), 4096)));
     if (::access(dir.c_str(), W_OK) != 0)
-        throw InputError(fmt::format("output path '{}' is not writable: no permission to write in '{}'",
-                                     target_, dir.string()));
-    temp_ = hidden_name(p, "tmp");
+        throw InputError(fmt::format("output path '{}' is not writable: no permission to write in '{}'", shown,
+                                     shown_text(dir.string(), 4096)));
+    run_outputs::note_output(target_, place_);
+    temp_ = placement::hidden_name(place_, "tmp");
     // Registered before the file exists, so a kill at any later moment finds it.
     live_slot_ = live_temp::add(temp_);
     // Created now: a folder that looks writable but is not (/proc, a read-only mount) fails
@@ -67,9 +53,14 @@ AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {
     if (fd < 0) {
         const int err = errno;
         live_temp::drop(live_slot_);
-        throw InputError(fmt::format("output path '{}' is not writable: no file can be made in '{}' ({})", target_,
-                                     dir.string(), std::strerror(err)));
+        throw InputError(fmt::format("output path '{}' is not writable: no file can be made in '{}' ({})", shown,
+                                     shown_text(dir.string(), 4096), std::strerror(err)));
     }
+    // Made with 0666, the umask took its part: what is left is a new file's mode. While it is
+    // written, its owner alone may read it (it may replace a file others may not read).
+    struct stat st {};
+    if (::fstat(fd, &st) == 0) new_mode_ = st.st_mode & 0777;
+    ::fchmod(fd, 0600);
     ::close(fd);
 }
 
@@ -81,10 +72,24 @@ AtomicFile::~AtomicFile() {
     live_temp::drop(live_slot_);
 }
 
+namespace {
+
+placement::Placement placement_of(const std::string& temp, const std::string& place, const std::string& target,
+                                  unsigned new_mode) {
+    return {temp, place, target, static_cast<mode_t>(new_mode), false};
+}
+
+}  // namespace
+
 void AtomicFile::commit() {
-    std::error_code ec;
-    fs::rename(temp_, target_, ec);
-    if (ec) throw write_error(ec.message());
+    const placement::Placement p = placement_of(temp_, place_, target_, new_mode_);
+    if (run_outputs::hold(p, live_slot_)) {
+        // The run owns the temporary file now, and its entry for a kill's cleanup.
+        committed_ = true;
+        live_slot_ = -1;
+        return;
+    }
+    placement::place_all({p});
     committed_ = true;
     // A kill between the rename and here only unlinks a name that no longer exists.
     live_temp::drop(live_slot_);
@@ -94,50 +99,20 @@ void AtomicFile::commit() {
 FileError AtomicFile::write_error(const std::string& reason) const { return FileError(target_, "write", reason); }
 
 void commit_together(const std::vector<AtomicFile*>& files) {
-    struct Backup {
-        std::string path;  // empty: there was no old file
-        int slot = -1;
-    };
-    std::vector<Backup> backups(files.size());
-    const auto drop_backups = [&backups] {
-        for (Backup& b : backups) {
-            if (b.path.empty()) continue;
-            ::unlink(b.path.c_str());
-            live_temp::drop(b.slot);
-        }
-    };
-    // A second name for each old file, so that a rename failing halfway can put back the
-    // ones already replaced.
-    for (size_t i = 0; i < files.size(); ++i) {
-        struct stat st {};
-        if (::lstat(files[i]->target_.c_str(), &st) != 0) continue;
-        Backup b{hidden_name(files[i]->target_, "old"), -1};
-        b.slot = live_temp::add(b.path);
-        if (::link(files[i]->target_.c_str(), b.path.c_str()) != 0) {
-            const int err = errno;
-            live_temp::drop(b.slot);
-            drop_backups();
-            throw files[i]->write_error(fmt::format("cannot keep the old file while replacing it ({}); no "
-                                                    "file was changed", std::strerror(err)));
-        }
-        backups[i] = b;
+    std::vector<placement::Placement> all;
+    for (const AtomicFile* f : files) all.push_back(placement_of(f->temp_, f->place_, f->target_, f->new_mode_));
+    bool held = true;
+    for (std::size_t i = 0; i < files.size() && held; ++i) held = run_outputs::hold(all[i], files[i]->live_slot_);
+    if (held) {
+        for (AtomicFile* f : files) f->committed_ = true, f->live_slot_ = -1;
+        return;
     }
-    for (size_t i = 0; i < files.size(); ++i) {
-        if (::rename(files[i]->temp_.c_str(), files[i]->target_.c_str()) == 0) continue;
-        const int err = errno;
-        for (size_t j = 0; j < i; ++j) {
-            if (backups[j].path.empty()) ::unlink(files[j]->target_.c_str());
-            else ::rename(backups[j].path.c_str(), files[j]->target_.c_str());
-        }
-        drop_backups();
-        throw files[i]->write_error(fmt::format("{}; no file was changed", std::strerror(err)));
-    }
+    placement::place_all(all);
     for (AtomicFile* f : files) {
         f->committed_ = true;
         live_temp::drop(f->live_slot_);
         f->live_slot_ = -1;
     }
-    drop_backups();
 }
 
 }  // namespace dragon

@@ -85,8 +85,8 @@ ContestAnswers solve_contest(const Scenario& scenario, const ContestOptions& opt
     // on that job's worker). Q1 needs Q2's contact to mark rows past it, so Q2 runs first in
     // Q1's job.
     enum Job { q3, q1_q2, q4, q5, count };
-    InlineExecutor inside;
     Executor& ex = executor_or_default(options.executor);
+    InlineExecutor inside(&ex);
     ex.parallel_for(count, [&](std::size_t job, int) {
         switch (static_cast<Job>(job)) {
             case q3:
@@ -119,7 +119,8 @@ ContestAnswers solve_contest(const Scenario& scenario, const ContestOptions& opt
                 }
                 break;
             case q5:
-                if (options.asks(Question::q5)) out.q5 = max_head_speed(turn, options.speed_limit, options.turn_window);
+                if (options.asks(Question::q5))
+                    out.q5 = max_head_speed(turn, options.speed_limit, options.turn_window, &inside);
                 break;
             case count: break;
         }

@@ -13,7 +13,18 @@
 namespace dragon {
 
 void InlineExecutor::parallel_for(std::size_t count, const std::function<void(std::size_t, int)>& body) {
-    for (std::size_t i = 0; i < count; ++i) body(i, 0);
+    for (std::size_t i = 0; i < count; ++i) {
+        check_stop(*this);
+        body(i, 0);
+    }
+}
+
+void StoppableExecutor::parallel_for(std::size_t count, const std::function<void(std::size_t, int)>& body) {
+    check_stop(*this);
+    inner_.parallel_for(count, [&](std::size_t item, int worker) {
+        check_stop(*this);
+        body(item, worker);
+    });
 }
 
 // One job at a time: the items are claimed from an atomic counter by the calling thread (worker

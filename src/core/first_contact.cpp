@@ -169,7 +169,7 @@ std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from
     sim.require_valid_travel(x_from, "time range start");
     sim.require_valid_travel(x_to, "time range end");
     const Simulation unit = sim.at_speed(1.0);
-    InlineExecutor in_order;
+    InlineExecutor in_order(options.executor);
     Executor& ex = options.on_step ? in_order : executor_or_default(options.executor);
     const std::vector<double> edge = x_to > x_from ? stretch_edges(x_from, x_to) : std::vector<double>{x_from, x_from};
     const size_t chunks = edge.size() - 1;
@@ -180,6 +180,7 @@ std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from
     const bool serial = ex.workers() == 1;
     auto search = [&](size_t k, int worker) {
         if (winner.load() < k) return;
+        check_stop(ex);
         const Simulation watched = watched_over(unit, edge[k], edge[k + 1], options.skip_untouched_tail);
         try {
             found[k] = search_stretch(sim, watched, edge[k], edge[k + 1], options.on_step,

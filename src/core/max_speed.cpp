@@ -66,7 +66,8 @@ SpeedRatio speed_ratio_at(const Path& path, const BenchSpec& spec, double head_a
     return probe(head_arc);
 }
 
-MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow& window) {
+MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow& window, const Executor* executor) {
+    const InlineExecutor stop(executor);
     if (!std::isfinite(limit) || limit <= 0.0)
         throw InputError("speed limit", error_value(limit), "it must be a finite speed > 0 m/s");
     Scenario s = scenario;
@@ -108,7 +109,10 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
     const double ds = (s1 - s0) / steps;
 
     std::vector<double> rho(static_cast<size_t>(steps) + 1);
-    for (int k = 0; k <= steps; ++k) rho[static_cast<size_t>(k)] = probe(k == steps ? s1 : s0 + k * ds).ratio;
+    for (int k = 0; k <= steps; ++k) {
+        if (k % 256 == 0) check_stop(stop);
+        rho[static_cast<size_t>(k)] = probe(k == steps ? s1 : s0 + k * ds).ratio;
+    }
 
     // Refine every coarse local maximum that could still beat the best sample: between samples
     // the ratio rises at most ~slope * ds, with the slope estimated from the scan and doubled.
@@ -134,6 +138,7 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
             const bool down = k == steps || rho[i] >= rho[i + 1];
             if (refined[i] || !up || !down || rho[i] + reach < best_coarse) continue;
             refined[i] = true;
+            check_stop(stop);
             ++out.candidates;
             const double a = s0 + std::max(0, k - 1) * ds, b = std::min(s1, s0 + std::min(steps, k + 1) * ds);
             const auto [at, r] = golden_max(probe, a, b);

@@ -47,7 +47,10 @@ InputError starts_inside(const std::string& field, double pitch, double start_tu
 
 }  // namespace
 
-BoundaryRun run_to_boundary(Scenario s, double pitch) {
+namespace {
+
+// The run to the boundary at one pitch, on the calling thread, stopping when `outer` asks.
+BoundaryRun run_inline(Scenario s, double pitch, const Executor* outer) {
     s.path.kind = PathKind::spiral;
     s.path.pitch = pitch;
     const Simulation sim(s);
@@ -57,11 +60,15 @@ BoundaryRun run_to_boundary(Scenario s, double pitch) {
     BoundaryRun run;
     run.jam = sim.jam_before(t_end);
     // On this thread: min_pitch runs its pitches in parallel already.
-    InlineExecutor here;
+    InlineExecutor here(outer);
     run.contact = first_contact(sim, 0.0, run.jam ? run.jam->time : t_end, {.on_step = {}, .executor = &here});
     if (run.contact) run.jam.reset();  // the collision comes first
     return run;
 }
+
+}  // namespace
+
+BoundaryRun run_to_boundary(Scenario s, double pitch) { return run_inline(std::move(s), pitch, nullptr); }
 
 std::optional<Contact> contact_before_boundary(Scenario s, double pitch) { return run_to_boundary(std::move(s), pitch).contact; }
 
@@ -88,7 +95,7 @@ std::vector<Probe> probe_at(const Scenario& s, Executor& ex, const std::vector<d
     std::int64_t done = 0;  // under progress_lock: the callback hears one worker at a time
     ex.parallel_for(pitches.size(), [&](size_t k, int) {
         try {
-            const BoundaryRun run = run_to_boundary(s, pitches[k]);
+            const BoundaryRun run = run_inline(s, pitches[k], &ex);
             if (run.contact) out[k] = Probe{false, run.contact->time, run.contact->bench_a, run.contact->bench_b, {}};
             else if (run.jam) out[k] = Probe{false, run.jam->time, 0, 0, run.jam};
             else out[k] = Probe{true, 0.0, 0, 0, {}};

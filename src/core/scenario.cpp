@@ -2,14 +2,14 @@
 #include "dragon/scenario.hpp"
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
+#include <cstdint>
+#include <optional>
 #include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "dragon/input_file.hpp"
 #include "dragon/path.hpp"
 
 namespace dragon {
@@ -116,17 +116,10 @@ void validate(const Scenario& s, ScenarioValues values) {
 }
 
 LoadedScenario read_scenario_file(const std::string& path, Scenario base) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw InputError(fmt::format("scenario file '{}' is a folder: give a .toml file", path));
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("scenario file '{}' cannot be read", path));
-    std::stringstream text;
-    text << in.rdbuf();
-    if (in.bad()) throw InputError(fmt::format("scenario file '{}' cannot be read", path));
+    const std::string text = read_toml_input(path, "scenario file");
     toml::table root;
     try {
-        root = toml::parse(text.str(), path);
+        root = toml::parse(text, path);
     } catch (const toml::parse_error& e) {
         const auto& where = e.source().begin;
         throw InputError(fmt::format("scenario file '{}' is not valid TOML (line {}, column {}): {}",
@@ -144,15 +137,19 @@ LoadedScenario read_scenario_file(const std::string& path, Scenario base) {
                                          path, name, name));
         if (node.is_table())
             throw InputError(fmt::format("scenario file '{}': unknown section [{}] (allowed: [dragon], [path], "
-                                         "[motion])", path, name));
+                                         "[motion])", shown_text(path, 4096), shown_text(name)));
         throw InputError(fmt::format("scenario file '{}': key '{}' is outside any section: keys belong under "
-                                     "[dragon], [path] or [motion]", path, name));
+                                     "[dragon], [path] or [motion]", shown_text(path, 4096), shown_text(name)));
     }
     auto number = [&](const toml::table& t, const std::string& section, const std::string& key, double& dst,
                       ScenarioValues v) {
         const toml::node* n = t.get(key);
         if (!n) return;
-        if (auto x = n->value<double>()) {
+        // A whole number too is a number, however large: out of range is validate()'s to say
+        // (value<double>() gives none for an integer a double cannot hold exactly).
+        std::optional<double> x = n->value<double>();
+        if (!x && n->is_integer()) x = static_cast<double>(*n->value_exact<std::int64_t>());
+        if (x) {
             dst = *x;
             out.values |= v;
             return;
@@ -167,7 +164,7 @@ LoadedScenario read_scenario_file(const std::string& path, Scenario base) {
                 std::string list;
                 for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
                 throw InputError(fmt::format("scenario file '{}': unknown key [{}] {} (allowed: {})",
-                                             path, section, key.str(), list));
+                                             shown_text(path, 4096), section, shown_text(std::string(key.str())), list));
             }
         }
     };

@@ -1,12 +1,11 @@
 // A sweep described in a TOML file: the same keys as the command line's, so that a map can be
 // made again from its file (assets/sweeps/).
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "dragon/input_file.hpp"
 #include "dragon/sweep.hpp"
 
 namespace dragon {
@@ -40,15 +39,10 @@ std::vector<std::string> text_list(const toml::node& n, const std::string& path,
 
 SweepFile read_sweep_file(const std::string& path) {
     namespace fs = std::filesystem;
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) throw InputError(fmt::format("sweep file '{}' is a folder: give a .toml file", path));
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("sweep file '{}' cannot be read", path));
-    std::stringstream text;
-    text << in.rdbuf();
+    const std::string text = read_toml_input(path, "sweep file");
     toml::table root;
     try {
-        root = toml::parse(text.str(), path);
+        root = toml::parse(text, path);
     } catch (const toml::parse_error& e) {
         const auto& where = e.source().begin;
         throw InputError(fmt::format("sweep file '{}' is not valid TOML (line {}, column {}): {}", path, where.line,
@@ -71,14 +65,16 @@ SweepFile read_sweep_file(const std::string& path) {
             for (const auto& [k, v] : *t) {
                 const std::optional<std::string> value = as_text(v);
                 if (!value)
-                    throw InputError(fmt::format("sweep file '{}': [{}] {} must be a number or a string", path, name,
-                                                 k.str()));
+                    throw InputError(fmt::format("sweep file '{}': [{}] {} must be a number or a string",
+                                                 shown_text(path, 4096), shown_text(name),
+                                                 shown_text(std::string(k.str()))));
                 if (name == "fixed") out.fixed.emplace_back(std::string(k.str()), *value);
                 else out.options.push_back({name, std::string(k.str()), *value});
             }
         } else {
             throw InputError(fmt::format("sweep file '{}': unknown key '{}' (allowed: measure, vary, scenario, "
-                                         "[fixed] and a table of options per measure)", path, name));
+                                         "[fixed] and a table of options per measure)", shown_text(path, 4096),
+                                         shown_text(name)));
         }
     }
     return out;

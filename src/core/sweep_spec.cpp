@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "dragon/input_file.hpp"
 #include "dragon/sweep.hpp"
 
 namespace dragon {
@@ -75,16 +76,16 @@ double rounded(double v) { return std::strtod(fmt::format("{:.12g}", v).c_str(),
 // Checks the axis's values and makes their cells. `spec` names it in messages.
 Axis finish_axis(const SweepParameter& p, std::vector<double> values, const std::string& spec) {
     if (values.size() > kMaxAxisValues)
-        throw InputError("sweep axis", spec, fmt::format("it gives {} values, at most {}", values.size(),
+        throw InputError("sweep axis", shown_text(spec), fmt::format("it gives {} values, at most {}", values.size(),
                                      kMaxAxisValues));
     Axis a{&p, {}, {}};
     std::set<double> seen;
     for (double v : values) {
         if (v == 0.0) v = 0.0;  // -0 and 0 are one value, written "0"
         if (p.whole && (v != std::floor(v) || std::abs(v) > INT_MAX))
-            throw InputError("sweep axis", spec, fmt::format("{} takes whole numbers, and {} is not one", p.name, v));
+            throw InputError("sweep axis", shown_text(spec), fmt::format("{} takes whole numbers, and {} is not one", p.name, v));
         if (!seen.insert(v).second)
-            throw InputError("sweep axis", spec, fmt::format("it gives {} twice (each scenario once)", v));
+            throw InputError("sweep axis", shown_text(spec), fmt::format("it gives {} twice (each scenario once)", v));
         a.values.push_back(v);
         a.cells.push_back(fmt::format("{}", v));
     }
@@ -107,12 +108,12 @@ double get_parameter(const Scenario& s, const SweepParameter& p) {
 Axis parse_axis(const std::string& spec) {
     const std::size_t eq = spec.find('=');
     if (eq == std::string::npos)
-        throw InputError("sweep axis", spec, "give NAME=FROM:TO:COUNT or NAME=V1,V2,... "
+        throw InputError("sweep axis", shown_text(spec), "give NAME=FROM:TO:COUNT or NAME=V1,V2,... "
                                      "(width=0.20:0.40:21, speed=0.5,1,2)");
     const std::string name = spec.substr(0, eq), values = spec.substr(eq + 1);
     const SweepParameter* p = find_sweep_parameter(name);
     if (!p)
-        throw InputError("sweep axis", spec, fmt::format("{} is not a value a sweep can vary; use {}", name.empty() ? "''" : name, parameter_names()));
+        throw InputError("sweep axis", shown_text(spec), fmt::format("{} is not a value a sweep can vary; use {}", name.empty() ? "''" : shown_text(name), parameter_names()));
     if (values.find(':') != std::string::npos) {
         // FROM:TO:COUNT
         std::vector<std::string> parts;
@@ -126,14 +127,14 @@ Axis parse_axis(const std::string& spec) {
         const std::optional<double> hi = parts.size() == 3 ? number(parts[1]) : std::nullopt;
         const std::optional<double> count = parts.size() == 3 ? number(parts[2]) : std::nullopt;
         if (!lo || !hi || !count)
-            throw InputError("sweep axis", spec, "a range is FROM:TO:COUNT, three finite numbers "
+            throw InputError("sweep axis", shown_text(spec), "a range is FROM:TO:COUNT, three finite numbers "
                                          "(width=0.20:0.40:21 is 21 values from 0.20 to 0.40)");
         if (*count != std::floor(*count) || *count < 1 || *count > static_cast<double>(kMaxAxisValues))
-            throw InputError("sweep axis", spec, fmt::format("the count {} must be a whole number from 1 to {}", parts[2], kMaxAxisValues));
+            throw InputError("sweep axis", shown_text(spec), fmt::format("the count {} must be a whole number from 1 to {}", shown_text(parts[2]), kMaxAxisValues));
         const auto n = static_cast<std::size_t>(*count);
         if (n == 1 && *lo != *hi)
-            throw InputError("sweep axis", spec, fmt::format("one value cannot run from {} to {}; give a "
-                                         "count of at least 2, or the one value", parts[0], parts[1]));
+            throw InputError("sweep axis", shown_text(spec), fmt::format("one value cannot run from {} to {}; give a "
+                                         "count of at least 2, or the one value", shown_text(parts[0]), shown_text(parts[1])));
         std::vector<double> v(n);
         for (std::size_t k = 0; k < n; ++k)
             v[k] = k + 1 == n ? *hi : rounded(*lo + (*hi - *lo) * static_cast<double>(k) / static_cast<double>(n - 1));
@@ -145,8 +146,8 @@ Axis parse_axis(const std::string& spec) {
         const std::string item = values.substr(from, comma - from);
         const std::optional<double> x = number(item);
         if (!x)
-            throw InputError("sweep axis", spec, fmt::format("'{}' is not a finite number (a list is "
-                                         "V1,V2,..., a range FROM:TO:COUNT)", item));
+            throw InputError("sweep axis", shown_text(spec), fmt::format("'{}' is not a finite number (a list is "
+                                         "V1,V2,..., a range FROM:TO:COUNT)", shown_text(item)));
         v.push_back(*x);
         if (comma == std::string::npos) break;
         from = comma + 1;
@@ -159,7 +160,7 @@ Axis axis_from_cells(const std::string& name, const std::vector<std::string>& ce
     for (const std::string& c : cells) list += (list.empty() ? "" : ",") + c;
     Axis a = parse_axis(name + "=" + list);
     if (a.cells != cells)
-        throw InputError(fmt::format("the values of {} are not written as a sweep writes them: {}", name, list));
+        throw InputError(fmt::format("the values of {} are not written as a sweep writes them: {}", name, shown_text(list)));
     return a;
 }
 

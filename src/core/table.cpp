@@ -31,7 +31,7 @@ void simulate_table_into(const Simulation& sim, double t0, double t1, double dt,
     frames.resize(static_cast<size_t>(count));
     // Frames are independent: the executor's workers take them one at a time. Small tables
     // stay on this thread (starting the workers would cost more than the frames).
-    InlineExecutor here;
+    InlineExecutor here(executor);
     Executor& ex = frames.size() < 64 ? here : executor_or_default(executor);
     ex.parallel_for(frames.size(), [&](size_t k, int) {
         double t = t0 + static_cast<double>(k) * dt;

@@ -101,7 +101,9 @@ RunClearance min_clearance(const Scenario& scenario, const RunWindow& window, co
     const int steps = std::max(2, static_cast<int>(samples));
     const double dx = (cut.to - cut.from) / steps;
     std::vector<Sample> scan(static_cast<size_t>(steps) + 1);
+    const InlineExecutor stop(executor);
     for (int k = 0; k <= steps; ++k) {
+        if (k % 128 == 0) check_stop(stop);
         scan[static_cast<size_t>(k)] = probe.sample(k == steps ? cut.to : cut.from + k * dx);  // the end exactly: it may be a jam's
         if (progress) progress(k + 1, steps + 1);
     }

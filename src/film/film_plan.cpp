@@ -151,7 +151,7 @@ Film::Film(const Storyboard& board) : impl_(std::make_unique<Impl>()) {
     m.file = board.file;
     const double fps = board.film.fps;
     try {
-        m.theme = load_theme(board.film.theme);
+        m.theme = load_theme(board.film.theme, board.asset_dir);
     } catch (const InputError& e) {
         throw StoryboardError(board.file, 0, "film", "theme", e.what());
     }

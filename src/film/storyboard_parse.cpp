@@ -1,11 +1,11 @@
 // A storyboard file read into data: [film] settings and [[shot]] tables, every key checked.
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <map>
 
 #include <fmt/format.h>
 
 #include "dragon/film.hpp"
+#include "dragon/input_file.hpp"
 #include "film/storyboard_values.hpp"
 
 namespace dragon {
@@ -32,7 +32,8 @@ std::string storyboard_message(const std::string& file, int shot, const std::str
 
 StoryboardError::StoryboardError(const std::string& file, int shot_, const std::string& shot_name,
                                  const std::string& key_, const std::string& why)
-    : InputError(storyboard_message(file, shot_, shot_name, key_, why)), shot(shot_), key(key_) {}
+    : InputError(storyboard_message(shown_text(file, 4096), shot_, shown_text(shot_name), key_, why)), shot(shot_),
+      key(key_) {}
 
 namespace {
 
@@ -58,29 +59,38 @@ const std::set<std::string> view_keys = {"scenario", "path",  "pitch", "speed", 
 struct Context {
     std::string file, base_dir, asset_dir;
     std::string default_scenario;  // [film] scenario
+    // Each scenario file read once, however many shots name it.
+    std::map<std::string, Scenario> loaded;
 };
 
-Scenario scenario_of(const Where& w, const Context& cx, const toml::table& t, const std::string& prefix) {
+// The scenario a name stands for: a preset of the asset folder, or a .toml file beside the
+// storyboard. A bad one is named by `key` of `w`: the shot's own key, or [film]'s.
+Scenario named_scenario(const Where& w, Context& cx, const std::string& name, const std::string& key) {
+    const bool file = name.size() > 5 && name.ends_with(".toml");
+    const std::string path = file ? (std::filesystem::path(cx.base_dir) / name).string()
+                                  : (std::filesystem::path(cx.asset_dir) / (name + ".toml")).string();
+    if (const auto known = cx.loaded.find(path); known != cx.loaded.end()) return known->second;
+    if (!file && !std::filesystem::exists(path))
+        w.fail(key, fmt::format("'{}' is neither a preset in {} nor a .toml file", shown_text(name), cx.asset_dir));
+    try {
+        return cx.loaded[path] = load_scenario(path);
+    } catch (const InputError& e) {
+        w.fail(key, e.what());
+    }
+}
+
+Scenario scenario_of(const Where& w, Context& cx, const toml::table& t, const std::string& prefix) {
     Scenario s;
-    std::string name = cx.default_scenario;
-    if (const toml::node* n = t.get("scenario")) name = film::text(w, *n, prefix + "scenario");
-    if (!name.empty()) {
-        const bool file = name.size() > 5 && name.ends_with(".toml");
-        const std::string path = file ? (std::filesystem::path(cx.base_dir) / name).string()
-                                      : (std::filesystem::path(cx.asset_dir) / (name + ".toml")).string();
-        if (!file && !std::filesystem::exists(path))
-            w.fail(prefix + "scenario", fmt::format("'{}' is neither a preset in {} nor a .toml file", name, cx.asset_dir));
-        try {
-            s = load_scenario(path);
-        } catch (const InputError& e) {
-            w.fail(prefix + "scenario", e.what());
-        }
+    if (const toml::node* n = t.get("scenario")) {
+        s = named_scenario(w, cx, film::text(w, *n, prefix + "scenario"), prefix + "scenario");
+    } else if (!cx.default_scenario.empty()) {
+        s = named_scenario(Where{cx.file, 0, "film"}, cx, cx.default_scenario, "scenario");
     }
     if (const toml::node* n = t.get("path")) {
         const std::string kind = film::text(w, *n, prefix + "path");
         if (kind == "spiral") s.path.kind = PathKind::spiral;
         else if (kind == "turnaround") s.path.kind = PathKind::turnaround;
-        else w.fail(prefix + "path", fmt::format("'{}' is not a path: use \"spiral\" or \"turnaround\"", kind));
+        else w.fail(prefix + "path", fmt::format("'{}' is not a path: use \"spiral\" or \"turnaround\"", shown_text(kind)));
     }
     ScenarioValues set = 0;
     for (const Override& o : overrides) {
@@ -119,7 +129,7 @@ Scenario scenario_of(const Where& w, const Context& cx, const toml::table& t, co
 }
 
 // One scene of a shot: the shot's own keys, with a pane's over them in a split.
-ShotView view_of(const Where& w, const Context& cx, const toml::table& shot, const toml::table* pane,
+ShotView view_of(const Where& w, Context& cx, const toml::table& shot, const toml::table* pane,
                  const std::string& prefix) {
     toml::table t = shot;
     if (pane)
@@ -166,6 +176,8 @@ void read_common(const Where& w, const toml::table& t, Shot& s) {
     if (const toml::node* n = t.get("captions")) {
         const toml::array* a = n->as_array();
         if (!a) w.fail("captions", "must be a list of {text = \"...\", at = MOMENT, seconds = S}");
+        if (a->size() > kMaxShotCaptions)
+            w.fail("captions", fmt::format("has {} captions: a shot has at most {}", a->size(), kMaxShotCaptions));
         for (std::size_t i = 0; i < a->size(); ++i) {
             const std::string key = fmt::format("captions[{}]", i + 1);
             const toml::table* c = a->get(i)->as_table();
@@ -179,7 +191,7 @@ void read_common(const Where& w, const toml::table& t, Shot& s) {
     }
 }
 
-Shot shot_of(const Where& w, const Context& cx, const toml::table& t) {
+Shot shot_of(const Where& w, Context& cx, const toml::table& t) {
     Shot s;
     s.name = w.name;
     std::set<std::string> common = {"name", "rate", "duration", "transition", "legend", "clock", "inset",
@@ -254,7 +266,8 @@ Storyboard parse_storyboard(const std::string& toml_text, const std::string& fil
         throw InputError(fmt::format("storyboard '{}' is not valid TOML (line {}, column {}): {}", file,
                                      e.source().begin.line, e.source().begin.column, e.description()));
     }
-    Context cx{file, base_dir, asset_dir.empty() ? find_asset_dir() : asset_dir, ""};
+    Context cx{file, base_dir, asset_dir.empty() ? find_asset_dir() : asset_dir, "", {}};
+    board.asset_dir = cx.asset_dir;
     const Where top{file, 0, "film"};
     film::check_keys(top, root, {"film", "shot"}, "a storyboard (a [film] table and [[shot]] tables)");
     if (const toml::node* f = root.get("film")) {
@@ -283,6 +296,9 @@ Storyboard parse_storyboard(const std::string& toml_text, const std::string& fil
     const toml::array* shots = root.get_as<toml::array>("shot");
     if (!shots || shots->empty() || !shots->is_array_of_tables())
         top.fail("shot", "a storyboard needs at least one [[shot]] table");
+    if (shots->size() > kMaxStoryboardShots)
+        top.fail("shot", fmt::format("the storyboard has {} shots: a film has at most {}", shots->size(),
+                                     kMaxStoryboardShots));
     for (std::size_t i = 0; i < shots->size(); ++i) {
         const toml::table& t = *shots->get(i)->as_table();
         Where w{file, static_cast<int>(i + 1), fmt::format("shot {}", i + 1)};
@@ -293,15 +309,9 @@ Storyboard parse_storyboard(const std::string& toml_text, const std::string& fil
 }
 
 Storyboard load_storyboard(const std::string& path, const std::string& asset_dir) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw InputError(fmt::format("storyboard '{}' is a folder: give a .toml file", path));
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("storyboard '{}' cannot be read", path));
-    std::stringstream text;
-    text << in.rdbuf();
+    const std::string text = read_toml_input(path, "storyboard");
     const std::string base = std::filesystem::path(path).parent_path().string();
-    return parse_storyboard(text.str(), path, base.empty() ? "." : base, asset_dir);
+    return parse_storyboard(text, path, base.empty() ? "." : base, asset_dir);
 }
 
 }  // namespace dragon

@@ -2,10 +2,12 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 
 #include <fmt/format.h>
 
+#include "dragon/input_file.hpp"
 #include "dragon/picture_size.hpp"
 
 namespace dragon::film {
@@ -20,12 +22,13 @@ void check_keys(const Where& w, const toml::table& t, const std::set<std::string
         if (allowed.count(key)) continue;
         std::string list;
         for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-        w.fail(prefix + key, fmt::format("is not a key of {} (allowed: {})", what, list));
+        w.fail(prefix + shown_text(key), fmt::format("is not a key of {} (allowed: {})", what, list));
     }
 }
 
 double number(const Where& w, const toml::node& n, const std::string& key) {
-    const std::optional<double> v = n.value<double>();
+    std::optional<double> v = n.value<double>();
+    if (!v && n.is_integer()) v = static_cast<double>(*n.value_exact<std::int64_t>());  // huge: a range says so
     if (!v || !std::isfinite(*v)) w.fail(key, "must be a finite number");
     return *v;
 }
@@ -45,15 +48,23 @@ bool boolean(const Where& w, const toml::node& n, const std::string& key) {
 std::string text(const Where& w, const toml::node& n, const std::string& key) {
     const std::optional<std::string> v = n.value<std::string>();
     if (!v) w.fail(key, "must be a string");
+    // Drawing text costs time by its length on every frame it shows on (a 5 MB title took 19 s a
+    // frame): no text on a frame is longer than a few lines.
+    if (v->size() > kMaxStoryboardText)
+        w.fail(key, fmt::format("\"{}\" is not allowed: a text has at most {} characters", shown_text(*v, 40),
+                                kMaxStoryboardText));
     return *v;
 }
 
 TimeRef time_ref(const Where& w, const toml::node& n, const std::string& key) {
     if (n.is_number()) return {TimeRef::Anchor::time, number(w, n, key)};
-    const std::string s = n.is_string() ? *n.value<std::string>() : std::string();
+    if (!n.is_string())
+        w.fail(key, "must be a moment: a number of seconds, or a string: head travel in metres (\"-100 m\"), or "
+                    "collision, boundary or end, optionally with + or - seconds (\"collision - 5\")");
+    const std::string s = text(w, n, key);
     const auto bad = [&] {
         w.fail(key, fmt::format("'{}' is not a moment: give seconds, head travel in metres (\"-100 m\"), or "
-                                "collision, boundary or end, optionally with + or - seconds (\"collision - 5\")", s));
+                                "collision, boundary or end, optionally with + or - seconds (\"collision - 5\")", shown_text(s, 40)));
     };
     if (!n.is_string()) bad();
     {
@@ -103,7 +114,7 @@ Window window(const Where& w, const toml::node& n, const std::string& key) {
         if (s == "fit") return {};
         if (s == "head") return {Window::Kind::head, Vec2::Zero(), 12.0};
         w.fail(key, fmt::format("'{}' is not a window: use \"fit\", \"head\", {{follow = M}}, {{centre = [X, Y], "
-                                "extent = M}} or {{contact = M}}", s));
+                                "extent = M}} or {{contact = M}}", shown_text(s)));
     }
     const toml::table* t = n.as_table();
     if (!t) w.fail(key, "must be \"fit\", \"head\" or a table ({follow = M}, {centre = [X, Y], extent = M}, {contact = M})");
@@ -135,7 +146,7 @@ CameraMove camera(const Where& w, const toml::node& n, const std::string& key) {
     if (const toml::node* e = t->get("ease")) {
         const std::string s = text(w, *e, key + ".ease");
         if (s == "linear") m.ease = Ease::linear;
-        else if (s != "in-out") w.fail(key + ".ease", fmt::format("'{}' is not an easing: use \"in-out\" or \"linear\"", s));
+        else if (s != "in-out") w.fail(key + ".ease", fmt::format("'{}' is not an easing: use \"in-out\" or \"linear\"", shown_text(s)));
     }
     return m;
 }
@@ -146,7 +157,7 @@ std::pair<int, int> size(const Where& w, const toml::node& n, const std::string&
         const PictureSize size = parse_picture_size(s, kMaxVideoSide);  // a film is a video
         return {size.width, size.height};
     } catch (const InputError& e) {
-        w.fail(key, fmt::format("'{}' is not allowed: {}", s, e.allowed()));
+        w.fail(key, fmt::format("'{}' is not allowed: {}", shown_text(s), e.allowed()));
     }
 }
 

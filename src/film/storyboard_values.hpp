@@ -27,6 +27,7 @@ double number(const Where& w, const toml::node& n, const std::string& key);
 // A number > 0 and finite, at most `most`.
 double positive(const Where& w, const toml::node& n, const std::string& key, double most);
 bool boolean(const Where& w, const toml::node& n, const std::string& key);
+// A string of at most kMaxStoryboardText characters.
 std::string text(const Where& w, const toml::node& n, const std::string& key);
 
 // 412.5, "collision", "boundary - 30", "end-1".

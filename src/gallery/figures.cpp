@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "dragon/atomic_file.hpp"
 #include "gallery/figure_kit.hpp"
 
 namespace dragon {
@@ -53,9 +54,7 @@ void write_figures(const std::string& dir, const Scenario& base, const FigureOpt
         throw InputError(fmt::format("figure format \"{}\" is unknown: use png, svg or pdf", opt.format));
     if (!(opt.scale >= 0.25 && opt.scale <= 8))
         throw InputError(fmt::format("figure scale {} is not allowed: use 0.25..8", opt.scale));
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw InputError(fmt::format("cannot create the figure folder {}: {}", dir, ec.message()));
+    if (!make_output_folder(dir)) throw InputError(fmt::format("cannot create the figure folder {}", dir));
     fig::Context ctx{base, opt, nullptr, ""};
     ctx.base.path.kind = PathKind::spiral;
     ctx.answers = std::make_shared<fig::Answers>(ctx.base);

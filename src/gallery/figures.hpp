@@ -15,6 +15,7 @@ namespace dragon {
 
 struct FigureOptions {
     Theme theme;            // light by default
+    std::string asset_dir;  // where named themes are (find_asset_dir's hint; "": its default)
     double scale = 1.0;     // pixel size relative to the gallery's (about 1000 px wide)
     std::vector<std::string> only;  // names to make (e.g. "fig2_dragon_300s"); empty: all
     // "png" (palette PNGs, small for a repository), "svg" or "pdf" (for papers: vector shapes,

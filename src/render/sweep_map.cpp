@@ -174,7 +174,9 @@ void write_sweep_map(const SweepMap& map_in, const std::string& path, const std:
     require_map_format(path);
     const render::PictureFormat format = render::picture_format(path);
     SweepMap map = map_in;
-    auto [w, h] = sweep_map_size(map);
+    // Named copies: clang 14 (the fuzz build) cannot capture a structured binding.
+    const auto size = sweep_map_size(map);
+    int w = size.first, h = size.second;
     Page page;
     if (print) {
         // On a page: taller panels than on screen (a column is narrow) and no title or note over

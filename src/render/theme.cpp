@@ -1,11 +1,18 @@
 // Themes from TOML files, and where the asset folder is.
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <new>
+#include <optional>
+#include <set>
+
+#include <fontconfig/fontconfig.h>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "dragon/input_file.hpp"
 #include "dragon/render.hpp"
 #include "dragon/scenario.hpp"
 
@@ -31,29 +38,83 @@ int hex_digit(char c) {
 Rgba parse_colour(const std::string& text, const std::string& where) {
     const bool ok_len = text.size() == 7 || text.size() == 9;
     if (!ok_len || text[0] != '#')
-        throw InputError(fmt::format("{}: colour \"{}\" must be \"#rrggbb\" or \"#rrggbbaa\"", where, text));
+        throw InputError(fmt::format("{}: colour \"{}\" must be \"#rrggbb\" or \"#rrggbbaa\"", where, shown_text(text)));
     double c[4] = {0, 0, 0, 1};
     for (std::size_t i = 1, k = 0; i < text.size(); i += 2, ++k) {
         const int hi = hex_digit(text[i]), lo = hex_digit(text[i + 1]);
         if (hi < 0 || lo < 0)
-            throw InputError(fmt::format("{}: colour \"{}\" has a non-hex digit", where, text));
+            throw InputError(fmt::format("{}: colour \"{}\" has a non-hex digit", where, shown_text(text)));
         c[k] = (hi * 16 + lo) / 255.0;
     }
     return {c[0], c[1], c[2], c[3]};
 }
 
-Theme parse_theme(const fs::path& file) {
+// Generic families fontconfig resolves to whatever the system has: always there.
+bool generic_family(const std::string& family) {
+    static const std::set<std::string> generic = {"sans-serif", "sans", "serif", "monospace", "mono",
+                                                  "cursive", "fantasy", "system-ui"};
+    std::string lower;
+    for (const char c : family) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return generic.count(lower) > 0;
+}
+
+// Whether fontconfig knows a font of this family (it would otherwise draw with a fallback,
+// silently): one of the family names of the font it matches is the one asked for.
+bool font_exists(const std::string& family) {
+    if (generic_family(family)) return true;
+    FcPattern* pattern = FcPatternCreate();
+    if (!pattern) throw std::bad_alloc();
+    FcPatternAddString(pattern, FC_FAMILY, reinterpret_cast<const FcChar8*>(family.c_str()));
+    FcConfigSubstitute(nullptr, pattern, FcMatchPattern);
+    FcDefaultSubstitute(pattern);
+    FcResult result = FcResultNoMatch;
+    FcPattern* match = FcFontMatch(nullptr, pattern, &result);
+    FcPatternDestroy(pattern);
+    bool found = false;
+    FcChar8* name = nullptr;
+    for (int i = 0; match && !found && FcPatternGetString(match, FC_FAMILY, i, &name) == FcResultMatch; ++i)
+        found = FcStrCmpIgnoreCase(name, reinterpret_cast<const FcChar8*>(family.c_str())) == 0;
+    if (match) FcPatternDestroy(match);
+    return found;
+}
+
+// A theme file: name and font at the top, colours in [colours]; anything else is refused, as in
+// the other input files, so that a typo ([colour]) or the wrong file (a storyboard) is not
+// silently the light theme. `check_font`: the font must be installed (a user's file; the
+// assets' own themes name a font and fall back when it is missing).
+Theme parse_theme(const fs::path& file, bool check_font) {
+    const std::string path = file.string();
+    const std::string where = fmt::format("theme file '{}'", shown_text(path, 4096));
+    const std::string text = read_toml_input(path, "theme file");
     toml::table doc;
     try {
-        doc = toml::parse_file(file.string());
+        doc = toml::parse(text, path);
     } catch (const toml::parse_error& e) {
-        throw InputError(fmt::format("theme {}: {} (line {})", file.string(), e.description(),
-                                     e.source().begin.line));
+        throw InputError(fmt::format("{} is not valid TOML (line {}, column {}): {}", where, e.source().begin.line,
+                                     e.source().begin.column, e.description()));
     }
     Theme t;
-    const std::string where = "theme " + file.string();
-    if (auto v = doc["name"].value<std::string>()) t.name = *v;
-    if (auto v = doc["font"].value<std::string>()) t.font = *v;
+    for (const auto& [key, node] : doc) {
+        const std::string k(key.str());
+        if (k == "name" || k == "font") {
+            const std::optional<std::string> v = node.value_exact<std::string>();
+            if (!v) throw InputError(fmt::format("{}: {} must be a string", where, k));
+            if (v->empty() || v->size() > 200)
+                throw InputError(fmt::format("{}: {} \"{}\" is not allowed: give 1 to 200 characters", where, k,
+                                             shown_text(*v)));
+            (k == "name" ? t.name : t.font) = *v;
+        } else if (k == "colours") {
+            if (!node.is_table()) throw InputError(fmt::format("{}: colours must be a table: [colours]", where));
+        } else if (node.is_table()) {
+            throw InputError(fmt::format("{}: unknown section [{}] (allowed: [colours])", where, shown_text(k)));
+        } else {
+            throw InputError(fmt::format("{}: unknown key '{}' (allowed: name, font and the [colours] table)", where,
+                                         shown_text(k)));
+        }
+    }
+    if (check_font && !font_exists(t.font))
+        throw InputError(fmt::format("{}: font \"{}\" is not installed (fc-list lists the fonts there are)", where,
+                                     shown_text(t.font)));
     const std::map<std::string, Rgba*> slots{
         {"background", &t.background}, {"text", &t.text},       {"grid", &t.grid},
         {"guide", &t.guide},           {"guide_out", &t.guide_out}, {"s_curve", &t.s_curve},
@@ -66,11 +127,11 @@ Theme parse_theme(const fs::path& file) {
             const std::string k(key.str());
             if (k == "speed_ramp") {
                 const toml::array* arr = node.as_array();
-                if (!arr || arr->size() < 2)
-                    throw InputError(where + ": speed_ramp must be an array of at least two colours");
+                if (!arr || arr->size() < 2 || arr->size() > 256)
+                    throw InputError(where + ": speed_ramp must be an array of 2 to 256 colours");
                 t.speed_ramp.clear();
                 for (const auto& c : *arr) {
-                    auto s = c.value<std::string>();
+                    auto s = c.value_exact<std::string>();
                     if (!s) throw InputError(where + ": speed_ramp entries must be strings");
                     t.speed_ramp.push_back(parse_colour(*s, where));
                 }
@@ -78,8 +139,8 @@ Theme parse_theme(const fs::path& file) {
             }
             auto slot = slots.find(k);
             if (slot == slots.end())
-                throw InputError(fmt::format("{}: unknown colour \"{}\"", where, k));
-            auto s = node.value<std::string>();
+                throw InputError(fmt::format("{}: unknown colour \"{}\"", where, shown_text(k)));
+            auto s = node.value_exact<std::string>();
             if (!s) throw InputError(fmt::format("{}: colour \"{}\" must be a string", where, k));
             *slot->second = parse_colour(*s, where);
         }
@@ -111,16 +172,18 @@ Theme load_theme(const std::string& name_or_path, const std::string& asset_dir) 
     std::error_code ec;
     if (given.extension() == ".toml" || name_or_path.find('/') != std::string::npos) {
         if (fs::is_directory(given, ec))
-            throw InputError(fmt::format("theme file {} is a folder: give a .toml file", name_or_path));
-        if (!fs::is_regular_file(given, ec))
-            throw InputError(fmt::format("theme file {} does not exist", name_or_path));
-        return parse_theme(given);
+            throw InputError(fmt::format("theme file '{}' is a folder: give a .toml file", shown_text(name_or_path, 4096)));
+        return parse_theme(given, true);
     }
     const fs::path file = fs::path(find_asset_dir(asset_dir)) / "themes" / (name_or_path + ".toml");
-    if (!fs::is_regular_file(file, ec))
-        throw InputError(fmt::format("theme \"{}\" is unknown: use light, dark or a .toml file path",
-                                     name_or_path));
-    return parse_theme(file);
+    if (!fs::is_regular_file(file, ec)) {
+        // A file of that name here is not read as a theme by its bare name: say how to name it.
+        const bool here = fs::exists(fs::symlink_status(given, ec));
+        throw InputError(fmt::format("theme \"{}\" is unknown: use light, dark or a .toml file path{}",
+                                     shown_text(name_or_path), here ? fmt::format(" (the file here is ./{})",
+                                                                                 shown_text(name_or_path)) : ""));
+    }
+    return parse_theme(file, false);
 }
 
 }  // namespace dragon

@@ -102,11 +102,11 @@ void write_json(const std::vector<Frame>& frames, const std::string& path, int d
     out.commit();
 }
 
-void write_table(const std::vector<Frame>& frames, const std::string& path, int digits) {
+void write_table(const std::vector<Frame>& frames, const std::string& path, int digits, const WorkbookOptions& workbook) {
     const std::string ext = extension_of(path);
     if (ext == ".csv") return write_csv(frames, path, digits);
     if (ext == ".json") return write_json(frames, path, digits);
-    if (ext == ".xlsx") return write_result_xlsx(frames, path);
+    if (ext == ".xlsx") return write_result_xlsx(frames, path, workbook);
     throw InputError(fmt::format("output '{}' has extension '{}': use .csv, .json or .xlsx", path, ext));
 }
 

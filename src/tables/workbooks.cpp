@@ -22,13 +22,14 @@ namespace {
 
 // libxlsxwriter prints its own lines on stderr before it returns an error (three for a full
 // disk, naming the hidden temporary file). The error comes back as one exception naming the
-// target, so file descriptor 2 points at /dev/null for the call. A process-wide effect: while
-// any workbook closes (several may, on different threads: dragon solve writes its tables in
-// parallel), so the first to start mutes and the last to finish restores; nothing else of this
-// program writes to stderr while a workbook closes.
+// target; an application that asks (WorkbookOptions) has file descriptor 2 point at /dev/null
+// for the call. A process-wide effect, so only when asked: while any workbook closes (several
+// may, on different threads: dragon solve writes its tables in parallel) the first to start
+// mutes and the last to finish restores.
 class StderrMuted {
 public:
-    StderrMuted() {
+    explicit StderrMuted(bool mute) : mute_(mute) {
+        if (!mute_) return;
         const std::lock_guard<std::mutex> hold(lock());
         if (depth()++ > 0) return;
         std::fflush(stderr);
@@ -38,6 +39,7 @@ public:
         if (null >= 0) ::close(null);
     }
     ~StderrMuted() {
+        if (!mute_) return;
         const std::lock_guard<std::mutex> hold(lock());
         if (--depth() > 0 || saved() < 0) return;
         ::dup2(saved(), STDERR_FILENO);
@@ -48,6 +50,7 @@ public:
     StderrMuted& operator=(const StderrMuted&) = delete;
 
 private:
+    bool mute_;
     static std::mutex& lock() {
         static std::mutex m;
         return m;
@@ -73,9 +76,10 @@ std::mutex& close_lock() {
 
 // Closing writes the file; also when an exception unwinds past an unfinished workbook.
 struct WorkbookCloser {
+    bool mute = false;
     void operator()(lxw_workbook* wb) const {
         const std::lock_guard<std::mutex> one_at_a_time(close_lock());
-        const StderrMuted quiet;
+        const StderrMuted quiet(mute);
         workbook_close(wb);
     }
 };
@@ -92,11 +96,11 @@ constexpr std::time_t kCreated = 1725494400;
 // its errno behind, and no library call resets errno, so this is checked after the close.
 bool out_of_room(int err) { return err == ENOSPC || err == EFBIG || err == EDQUOT || err == EIO; }
 
-WorkbookPtr new_workbook(const AtomicFile& out, bool row_by_row = false) {
+WorkbookPtr new_workbook(const AtomicFile& out, const WorkbookOptions& opt, bool row_by_row = false) {
     errno = 0;  // see out_of_room
     lxw_workbook_options options{};
     options.constant_memory = row_by_row ? LXW_TRUE : LXW_FALSE;
-    WorkbookPtr wb(workbook_new_opt(out.temp_path().c_str(), &options));
+    WorkbookPtr wb(workbook_new_opt(out.temp_path().c_str(), &options), WorkbookCloser{opt.mute_library_stderr});
     if (!wb) throw out.write_error("libxlsxwriter cannot start a workbook");
     lxw_doc_properties properties{};
     properties.created = kCreated;
@@ -113,10 +117,11 @@ lxw_worksheet* add_sheet(lxw_workbook* wb, const char* name) {
 
 void close_workbook(WorkbookPtr wb, const AtomicFile& out) {
     const int before = errno;
+    const bool mute = wb.get_deleter().mute;
     lxw_error err;
     {
         const std::lock_guard<std::mutex> one_at_a_time(close_lock());
-        const StderrMuted quiet;
+        const StderrMuted quiet(mute);
         err = workbook_close(wb.release());
     }
     if (out_of_room(before)) throw out.write_error(std::strerror(before));  // a sheet's rows were cut short
@@ -136,19 +141,19 @@ void put(lxw_error err, const AtomicFile& out, lxw_row_t row, lxw_col_t col) {
 
 }  // namespace
 
-void write_result_xlsx(const std::vector<Frame>& frames, const std::string& path) {
+void write_result_xlsx(const std::vector<Frame>& frames, const std::string& path, const WorkbookOptions& options) {
     AtomicFile out(path);
-    write_result_xlsx(frames, out);
+    write_result_xlsx(frames, out, options);
     out.commit();
 }
 
-void write_result2_xlsx(const Frame& frame, const std::string& path) {
+void write_result2_xlsx(const Frame& frame, const std::string& path, const WorkbookOptions& options) {
     AtomicFile out(path);
-    write_result2_xlsx(frame, out);
+    write_result2_xlsx(frame, out, options);
     out.commit();
 }
 
-void write_result_xlsx(const std::vector<Frame>& frames, AtomicFile& out) {
+void write_result_xlsx(const std::vector<Frame>& frames, AtomicFile& out, const WorkbookOptions& options) {
     // Streamed row by row (libxlsxwriter's constant-memory mode): each row goes to disk as it
     // is finished, which is what this layout needs anyway, and it is several times faster
     // than keeping the whole table of cells in memory.
@@ -156,7 +161,7 @@ void write_result_xlsx(const std::vector<Frame>& frames, AtomicFile& out) {
     if (frames.size() > kMaxWorkbookFrames)
         throw InputError("frame count", std::to_string(frames.size()),
                          fmt::format("a worksheet holds at most {} frames (one column each)", kMaxWorkbookFrames));
-    WorkbookPtr wb = new_workbook(out, true);
+    WorkbookPtr wb = new_workbook(out, options, true);
     lxw_worksheet* pos = add_sheet(wb.get(), "位置");
     lxw_worksheet* vel = add_sheet(wb.get(), "速度");
     const int n = frames.empty() ? 0 : static_cast<int>(frames.front().handles.size());
@@ -189,8 +194,8 @@ void write_result_xlsx(const std::vector<Frame>& frames, AtomicFile& out) {
     close_workbook(std::move(wb), out);
 }
 
-void write_result2_xlsx(const Frame& frame, AtomicFile& out) {
-    WorkbookPtr wb = new_workbook(out);
+void write_result2_xlsx(const Frame& frame, AtomicFile& out, const WorkbookOptions& options) {
+    WorkbookPtr wb = new_workbook(out, options);
     lxw_worksheet* ws = add_sheet(wb.get(), "Sheet1");
     put(worksheet_write_string(ws, 0, 1, "横坐标x (m)", nullptr), out, 0, 1);
     put(worksheet_write_string(ws, 0, 2, "纵坐标y (m)", nullptr), out, 0, 2);

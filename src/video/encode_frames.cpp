@@ -151,8 +151,11 @@ EncodeStats encode_frames(const std::string& path, const VideoOptions& opt, int 
     VideoWriter writer(path, opt);
 
     Executor& executor = executor_or_default(opt.executor);
-    // At most 8 workers draw: more would hold more frames than they gain (the encoder is one).
-    const int workers = std::clamp(executor.workers(), 1, 8);
+    // At most 8 workers draw: more would hold more frames than they gain (the encoder is one);
+    // and no more than kMaxFrameRingBytes of frames: large frames get fewer workers.
+    const long frame_bytes = 4L * opt.width * opt.height;
+    const int by_memory = static_cast<int>(std::max(1L, kMaxFrameRingBytes / (2 * frame_bytes)));
+    const int workers = std::clamp(std::min(executor.workers(), by_memory), 1, 8);
     // Two slots per worker: one being drawn, one done and waiting for the encoder.
     FrameRing ring(2 * workers, opt.width, opt.height, painted);
 

@@ -52,6 +52,11 @@ void validate(const VideoOptions& opt, VideoFormat format) {
     if (!(opt.fps >= kMinVideoFps) || !(opt.fps <= kMaxVideoFps))
         throw InputError("frame rate", error_value(opt.fps),
                          fmt::format("use a rate from {} to {} frames per second", kMinVideoFps, kMaxVideoFps));
+    if (format == VideoFormat::webm && static_cast<long>(opt.width) * opt.height > kMaxWebmPixels)
+        throw InputError(fmt::format("video size {} is not allowed for webm: a VP9 frame has at most {} pixels "
+                                     "(4096x4096, say), this size has {}; its encoder needs ~90 bytes of memory a "
+                                     "pixel, over 2 GB past that (use .mp4 for up to 8192x4352)",
+                                     size, kMaxWebmPixels, static_cast<long>(opt.width) * opt.height));
     if (format == VideoFormat::mp4) {
         const long mbs = static_cast<long>((opt.width + 15) / 16) * ((opt.height + 15) / 16);
         if (mbs > h264_max_macroblocks)

@@ -1,4 +1,5 @@
 // The streaming encoder: frames in, packets straight out to the muxer.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <optional>
@@ -34,6 +35,20 @@ CodecChoice codec_for(VideoFormat f) {
     throw std::logic_error("unknown video format");
 }
 
+// Frames above 4K UHD (3840x2160, 8.3 million pixels): the encoders are held to a few frames
+// in flight, so that every size a video accepts stays under 2 GB resident
+// (scripts/limits.sh measures it).
+constexpr long kLargeFramePixels = 3840L * 2160L;
+bool large_frame(const VideoOptions& opt) { return static_cast<long>(opt.width) * opt.height > kLargeFramePixels; }
+
+// The encoder's threads: the caller's (0: the codec's choice, ~1.5 a core), at most 2 for
+// H.264 and 8 for VP9 at large frames, where each frame thread holds frames of its own.
+int encoder_threads(VideoFormat f, const VideoOptions& opt) {
+    if (!large_frame(opt) || f == VideoFormat::gif) return opt.threads;
+    const int most = f == VideoFormat::mp4 ? 2 : 8;
+    return opt.threads == 0 ? most : std::min(opt.threads, most);
+}
+
 // Encoder-private options: speed first (this runs on two cores), quality by crf.
 av::Dictionary encoder_options(VideoFormat f, const VideoOptions& opt, const CodecChoice& c) {
     AVDictionary* d = nullptr;
@@ -42,6 +57,11 @@ av::Dictionary encoder_options(VideoFormat f, const VideoOptions& opt, const Cod
         av_dict_set(&d, "preset", opt.preset.c_str(), 0);
         if (opt.tune != "none") av_dict_set(&d, "tune", opt.tune.c_str(), 0);
         av_dict_set_int(&d, "crf", crf, 0);
+        // A frame larger than 4K UHD: one reference frame, no B-frames, no look-ahead. Each frame
+        // x264 keeps costs ~5.5 bytes a pixel with its half-pel planes (200 MB at 8192x4352),
+        // and "faster" with tune animation keeps 4 references, 5 B-frames and 20 look-ahead
+        // frames: 1.9 GB resident at that size on one thread, 2.7 GB on 64.
+        if (large_frame(opt)) av_dict_set(&d, "x264-params", "ref=1:bframes=0:rc-lookahead=0", 0);
     } else if (f == VideoFormat::webm) {
         // Realtime mode, rows in parallel. Measured on the coil-in film (scripts/bench-video.sh):
         // offline VP9 ("good", cpu-used 5) makes a third of the bits at the same PSNR but costs
@@ -49,6 +69,9 @@ av::Dictionary encoder_options(VideoFormat f, const VideoOptions& opt, const Cod
         av_dict_set(&d, "deadline", "realtime", 0);
         av_dict_set_int(&d, "cpu-used", 6, 0);
         av_dict_set_int(&d, "row-mt", 1, 0);
+        // No look-ahead: realtime mode makes no alt-ref frames from it, yet libvpx would keep
+        // 25 frames for it (700 MB at 4096x4096).
+        av_dict_set_int(&d, "lag-in-frames", 0, 0);
         av_dict_set_int(&d, "crf", crf, 0);
     }
     return av::Dictionary(d);
@@ -104,7 +127,7 @@ struct VideoWriter::Impl {
         enc->pix_fmt = choice.pix_fmt;
         enc->time_base = av_inv_q(rate);
         enc->framerate = rate;
-        enc->thread_count = opt.threads;
+        enc->thread_count = encoder_threads(format, opt);
         if (format != VideoFormat::gif) {
             enc->gop_size = std::max(1, static_cast<int>(std::lround(opt.keyframe_seconds * opt.fps)));
             enc->bit_rate = 0;  // quality by crf alone

@@ -106,7 +106,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"video -o '' --to 1", "--out '' is not allowed: give a file name"},
         // A folder is not a file.
         BadCase{"simulate --scenario / -o @OUT", "scenario file '/' is a folder: give a .toml file"},
-        BadCase{"render --time 1 --theme / -o @OUT.png", "theme file / is a folder: give a .toml file"},
+        BadCase{"render --time 1 --theme / -o @OUT.png", "theme file '/' is a folder: give a .toml file"},
         // Each command takes the flags it uses, and no others.
         BadCase{"turnaround --pitch 5", "dragon turnaround does not take --pitch"},
         BadCase{"max-speed --start-turn 3", "dragon max-speed does not take --start-turn"},

@@ -93,7 +93,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"tune_for_webm", "", "--tune film", "f.webm", "--tune is not allowed for .webm"},
         BadCase{"odd_size", "", "--size 97x64", "f.mp4", "yuv420p needs an even width"},
         BadCase{"bad_extension", "", "", "f.avi", "videos are .mp4"},
-        BadCase{"missing_storyboard", "MISSING", "", "f.mp4", "cannot be read"}),
+        BadCase{"missing_storyboard", "MISSING", "", "f.mp4", "nowhere.toml' does not exist"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -156,3 +156,26 @@ TEST(CliSweepShards, MergedEqualTheWholeAndMustHoldEachScenarioOnce) {
     EXPECT_TRUE(contains(r.err, "other.csv")) << r.err;
     EXPECT_FALSE(fs::exists(merged));
 }
+
+// A row whose measure failed (for a reason not the scenario's: the run exits 1 and its rows stay
+// unfinished) is made again by --resume, and the finished file holds the good row in its place.
+TEST(CliSweepResume, FailedRowsAreMadeAgain) {
+    const fs::path dir = dragon_test::scratch_dir();
+    for (const auto& e : fs::directory_iterator(dir)) fs::remove_all(e.path());
+    const std::string spec = "--vary bench-count=20:40:3 --measure max-speed -q";
+    const sweep_test::Table whole = run_whole(dir / "whole.csv", spec);
+    ASSERT_EQ(whole.rows.size(), 3u);
+    // The second row as a failed measure writes it: its cells empty, its status saying so.
+    const std::vector<std::string> lines = sweep_test::lines(slurp(dir / "whole.csv"));
+    std::string failed = sweep_test::fields(lines[3])[0];
+    for (std::size_t k = 1; k + 1 < whole.header.size(); ++k) failed += ",";
+    failed += ",failed (max-speed): the search did not converge";
+    std::ofstream(dir / "rows.csv.partial") << lines[0] << "\n" << lines[1] << "\n" << lines[2] << "\n" << failed << "\n";
+    const dragon_test::CliRun r = run_dragon("sweep --resume -o " + (dir / "rows.csv").string() + " " +
+                                             spec.substr(0, spec.size() - 3));
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(contains(r.err, "resuming: 1 failed row of")) << r.err;
+    EXPECT_TRUE(contains(r.err, "1 of 3 rows is in")) << r.err;
+    EXPECT_EQ(sweep_test::row_set(sweep_test::read_table(slurp(dir / "rows.csv"))), sweep_test::row_set(whole));
+    EXPECT_FALSE(fs::exists(dir / "rows.csv.partial"));
+}

@@ -26,7 +26,7 @@ SweepMap map_of(const std::string& args) {
     EXPECT_EQ(r.code, 0) << args << "\n" << r.err;
     const std::vector<std::string> lines = sweep_test::lines(dragon_test::slurp(out));
     EXPECT_GE(lines.size(), 3u) << args;
-    const cli::SweepSetup setup = cli::read_spec_line(lines.at(0), out.string());
+    const SweepSetup setup = read_spec_line(lines.at(0), out.string());
     cli::MapCollector maps(setup);
     for (std::size_t k = 2; k < lines.size(); ++k) maps.add(lines[k]);
     return maps.map();

@@ -26,6 +26,7 @@ std::string slurp(const fs::path& p) {
 
 TEST(SweepRows, TornLastLineIsDroppedAndCutOffBeforeTheNextRow) {
     const fs::path file = dragon_test::scratch_dir() / "rows.csv.partial";
+    fs::remove(file);  // a log is made new: never over a file (a run before this one left one)
     {
         auto log = RowLog::create(file.string(), {"# spec", "a,b"});
         log->append("1,x");
@@ -125,4 +126,45 @@ TEST(SweepFile, ReadsTheCommandLinesKeys) {
         std::ofstream(file) << bad;
         EXPECT_THROW(read_sweep_file(file.string()), InputError) << bad;
     }
+}
+
+TEST(SweepRows, LinesPastTheirLimitAndForeignLineEndsAreRefusedAsRead) {
+    const fs::path file = dragon_test::scratch_dir() / "limits.csv";
+    const auto scan = [&](const std::string& text, const RowFileLimits& limits) -> std::string {
+        std::ofstream(file, std::ios::binary | std::ios::trunc) << text;
+        try {
+            scan_row_file(file.string(), 2, [](const std::vector<std::string>&) {}, [](const std::string&) {}, limits);
+        } catch (const InputError& e) {
+            return e.what();
+        }
+        return "accepted";
+    };
+    RowFileLimits limits;
+    limits.preamble_line_bytes = 20;
+    limits.row_bytes = 10;
+    const std::string named = "sweep rows '" + file.string() + "'";
+    EXPECT_EQ(scan("# spec\na,b\n1234567890\n", limits), "accepted");
+    EXPECT_EQ(scan("# spec\na,b\n12345678901\n", limits),
+              named + ": line 3 is longer than 10 bytes, the most a row of it may hold");
+    // A row too long is refused even when it is the torn last one.
+    EXPECT_EQ(scan("# spec\na,b\n12345678901", limits), named + ": line 3 is longer than 10 bytes, the most a row of it may hold");
+    EXPECT_EQ(scan("# " + std::string(19, 's') + "\n", limits),
+              named + ": line 1 is longer than 20 bytes, the most a first line of it may hold");
+    EXPECT_EQ(scan("# spec\r\na,b\n", limits),
+              named + ": line 1 ends in CR LF, and a sweep's lines end in LF alone (was it edited elsewhere?)");
+    limits.what = "sweep part";
+    EXPECT_EQ(scan("# spec\n", limits), "sweep part '" + file.string() + "' is not a sweep's rows: it has 1 complete "
+                                        "line, and a sweep's file starts with 2");
+    // Only a regular file is read.
+    try {
+        scan_row_file("/dev/zero", 2, [](const std::vector<std::string>&) {}, [](const std::string&) {});
+        ADD_FAILURE() << "/dev/zero read";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), "sweep rows '/dev/zero' is a device: only a regular file is read");
+    }
+    EXPECT_THROW(read_first_line("/dev/zero"), InputError);
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << "# spec\na,b\n";
+    EXPECT_EQ(read_first_line(file.string()), "# spec");
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << "# no line end";
+    EXPECT_THROW(read_first_line(file.string()), InputError);
 }

@@ -136,7 +136,27 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{"bad_lang", "[film]\nlang = \"fr\"\n" + ok_shot, "[film] lang: \"fr\" is not allowed: use en (English) or zh"},
         Bad{"bad_width", ok_shot + "width = 0\n", "key 'width'"},
         Bad{"hole_past_the_board", ok_shot + "hole_offset = 1.2\n", "key 'hole_offset'"},
-        Bad{"fractional_count", ok_shot + "bench_count = 2.5\n", "shot 1: bench_count must be a whole number"}),
+        Bad{"fractional_count", ok_shot + "bench_count = 2.5\n", "shot 1: bench_count must be a whole number"},
+        // A moment of the wrong type is named as one, not as an empty moment.
+        Bad{"moment_of_a_list", "[[shot]]\nfrom = [1]\nto = 10\nrate = 5\n",
+            "shot 1: from must be a moment: a number of seconds, or a string"},
+        // [film]'s scenario is [film]'s fault, not the first shot's.
+        Bad{"film_scenario", "[film]\nscenario = \"nowhere.toml\"\n" + ok_shot,
+            "[film] scenario: scenario file '" + std::string(DRAGON_SOURCE_DIR) + "/nowhere.toml' does not exist"},
+        // Limits that keep reading and drawing bounded, each named by its key.
+        Bad{"too_many_shots", [] {
+                std::string t;
+                for (std::size_t i = 0; i <= kMaxStoryboardShots; ++i) t += "[[shot]]\ntitle = \"a\"\nduration = 1\n";
+                return t;
+            }(), "[film] shot: the storyboard has 1001 shots: a film has at most 1000"},
+        Bad{"long_title", "[[shot]]\nduration = 1\ntitle = \"" + std::string(kMaxStoryboardText + 1, 'x') + "\"\n",
+            "shot 1, key 'title': \"xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx... (501 characters)\" is not allowed: a text has "
+            "at most 500 characters"},
+        Bad{"many_captions", ok_shot + "captions = [" + [] {
+                std::string c;
+                for (std::size_t i = 0; i <= kMaxShotCaptions; ++i) c += "{text = \"a\"},";
+                return c;
+            }() + "]\n", "key 'captions': has 21 captions: a shot has at most 20"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 // The bench geometry set directly in a shot (or a split's pane), no scenario file needed; an

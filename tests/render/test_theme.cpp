@@ -53,5 +53,52 @@ TEST(Theme, FileOverridesSomeColoursAndRejectsBadOnes) {
     EXPECT_THROW(load_theme((dir / "broken.toml").string()), InputError);
 }
 
+std::string refusal(const std::string& path) {
+    try {
+        load_theme(path, assets);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+TEST(Theme, OnlyTheKeysOfAThemeAreTaken) {
+    const std::filesystem::path dir = std::filesystem::path(DRAGON_TEST_TMP) / "themes";
+    std::filesystem::create_directories(dir);
+    const auto file = [&](const std::string& name, const std::string& text) {
+        std::ofstream(dir / name) << text;
+        return (dir / name).string();
+    };
+    const std::string where = "theme file '" + dir.string() + "/";
+    EXPECT_EQ(refusal(file("bogus.toml", "bogus = 1\n")),
+              where + "bogus.toml': unknown key 'bogus' (allowed: name, font and the [colours] table)");
+    EXPECT_EQ(refusal(file("typo.toml", "[colour]\nhead = \"#ff0000\"\n")),
+              where + "typo.toml': unknown section [colour] (allowed: [colours])");
+    // A storyboard is no theme.
+    EXPECT_EQ(refusal(file("story.toml", "[film]\nfps = 5\n[[shot]]\ntitle = \"a\"\nduration = 1\n")),
+              where + "story.toml': unknown section [film] (allowed: [colours])");
+    EXPECT_EQ(refusal(file("font.toml", "font = \"No Such Font Anywhere\"\n")),
+              where + "font.toml': font \"No Such Font Anywhere\" is not installed (fc-list lists the fonts there are)");
+    EXPECT_EQ(refusal(file("name.toml", "name = 3\n")), where + "name.toml': name must be a string");
+    // Tables 10,000 deep: refused by their first name, or by the parser's depth limit.
+    std::string deep = "[";
+    for (int i = 0; i < 10000; ++i) deep += i ? ".a" : "a";
+    EXPECT_EQ(refusal(file("deep.toml", deep + "]\n")), where + "deep.toml': unknown section [a] (allowed: [colours])");
+    std::string nested = "colours = ";
+    for (int i = 0; i < 10000; ++i) nested += "{a = ";
+    nested += "1" + std::string(10000, '}') + "\n";
+    EXPECT_NE(refusal(file("nested.toml", nested)).find("nested.toml' is not valid TOML"), std::string::npos);
+    // Generic families and installed fonts are taken.
+    EXPECT_EQ(load_theme(file("sans.toml", "font = \"sans-serif\"\n")).font, "sans-serif");
+    EXPECT_EQ(load_theme(file("dejavu.toml", "font = \"DejaVu Sans\"\n")).font, "DejaVu Sans");
+}
+
+TEST(Theme, OnlyARegularFileIsReadAsATheme) {
+    EXPECT_EQ(refusal("/dev/zero"), "theme file '/dev/zero' is a device: only a regular file is read");
+    const std::filesystem::path dir = std::filesystem::path(DRAGON_TEST_TMP) / "themes";
+    std::filesystem::create_directories(dir);
+    EXPECT_EQ(refusal((dir / "none.toml").string()), "theme file '" + (dir / "none.toml").string() + "' does not exist");
+}
+
 }  // namespace
 }  // namespace dragon

@@ -1,4 +1,5 @@
 // --digits for CSV and JSON tables, and workbooks that are the same bytes from run to run.
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -102,7 +103,7 @@ TEST(Workbooks, SameBytesFromRunToRun) {
 }
 
 // dragon solve writes its workbooks on several threads at once: each comes out byte for byte as
-// written alone, and stderr (muted while any of them closes) is back afterwards.
+// written alone, and stderr (muted while any of them closes, when asked) is back afterwards.
 TEST(Workbooks, SeveralAtOnceOnThreads) {
     const Simulation sim(Scenario{});
     const std::vector<Frame> frames = simulate_table(sim, 0.0, 20.0, 1.0);
@@ -111,11 +112,29 @@ TEST(Workbooks, SeveralAtOnceOnThreads) {
     std::vector<fs::path> paths;
     for (int k = 0; k < 4; ++k) paths.push_back(dragon_test::scratch_dir() / fmt::format("thread{}.xlsx", k));
     std::vector<std::thread> writers;
-    for (const fs::path& p : paths) writers.emplace_back([&frames, p] { write_result_xlsx(frames, p.string()); });
+    for (const fs::path& p : paths)
+        writers.emplace_back([&frames, p] { write_result_xlsx(frames, p.string(), WorkbookOptions{true}); });
     for (std::thread& w : writers) w.join();
     for (const fs::path& p : paths) EXPECT_EQ(bytes(p), bytes(alone)) << p;
     // File descriptor 2 is stderr again, not /dev/null.
     EXPECT_NE(fs::read_symlink("/proc/self/fd/2").string(), "/dev/null");
+}
+
+// Unless asked, a workbook leaves the process's stderr alone, even while it closes: a library
+// embedded in another program (a notebook's kernel) must not touch its file descriptors.
+TEST(Workbooks, StderrIsTouchedOnlyWhenAsked) {
+    const Simulation sim(Scenario{});
+    const std::vector<Frame> frames = simulate_table(sim, 0.0, 3.0, 1.0);
+    const std::string before = fs::read_symlink("/proc/self/fd/2").string();
+    std::atomic<bool> done{false}, muted{false};
+    std::thread watch([&] {
+        while (!done) muted = muted || fs::read_symlink("/proc/self/fd/2").string() == "/dev/null";
+    });
+    for (int k = 0; k < 20; ++k) write_result_xlsx(frames, (dragon_test::scratch_dir() / "w.xlsx").string());
+    done = true;
+    watch.join();
+    EXPECT_FALSE(muted);
+    EXPECT_EQ(fs::read_symlink("/proc/self/fd/2").string(), before);
 }
 
 TEST(Workbooks, IntoAnAtomicFileTheCallerCommits) {

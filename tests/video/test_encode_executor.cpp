@@ -2,6 +2,7 @@
 // makes the same film on any of them (one worker, several, or from inside another job), and a
 // paint error on any stops them all and leaves no file.
 #include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -126,6 +127,30 @@ TEST(EncodeExecutor, WorksFromInsideAJobOfItsExecutor) {
         films += run.last_done == 24 && run.in_order;
     });
     EXPECT_EQ(films.load(), 2);
+}
+
+// Large frames are drawn by fewer workers, so that the frames held stay within
+// kMaxFrameRingBytes: at 4096x4096 (64 MiB a frame, two a worker) two draw at once, however
+// many workers the executor has.
+TEST(EncodeExecutor, LargeFramesAreDrawnByFewerWorkers) {
+    CountingPool pool(8);
+    VideoOptions opt = small(&pool);
+    opt.width = opt.height = 4096;
+    std::atomic<int> drawing{0}, most{0};
+    const auto paint = [&](int, cairo_t* cr) {
+        const int now = ++drawing;
+        for (int seen = most.load(); now > seen && !most.compare_exchange_weak(seen, now);) {
+        }
+        cairo_set_source_rgb(cr, 0.2, 0.4, 0.6);
+        cairo_paint(cr);
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));  // long enough to overlap
+        --drawing;
+    };
+    const long frame = 4L * opt.width * opt.height;
+    EXPECT_EQ(kMaxFrameRingBytes / (2 * frame), 2);
+    encode_frames(scratch("large.gif"), opt, 6, paint);
+    EXPECT_GE(most.load(), 1);
+    EXPECT_LE(most.load(), 2);
 }
 
 TEST(EncodeExecutor, PaintErrorOnAnyWorkerLeavesNothing) {

@@ -145,14 +145,29 @@ TEST(VideoWriter, BadOptionsAreInputErrors) {
     no_keys.keyframe_seconds = 0;
     EXPECT_THROW(validate(no_keys, VideoFormat::webm), InputError);
     // H.264's largest level holds 139,264 macroblocks: 8192x4352 is the widest 16:8.5 frame it
-    // takes, 8192x4368 one row of macroblocks too many. VP9 and GIF have no such limit here.
+    // takes, 8192x4368 one row of macroblocks too many. VP9 takes at most 4096x4096 pixels (its
+    // encoder's memory grows with them: 7.7 GB at 8192x8192), in any shape; GIF any size.
     VideoOptions big;
     big.width = 8192;
     big.height = 4352;
     EXPECT_NO_THROW(validate(big, VideoFormat::mp4));
     big.height = 4368;
     EXPECT_THROW(validate(big, VideoFormat::mp4), InputError);
+    EXPECT_THROW(validate(big, VideoFormat::webm), InputError);
+    EXPECT_NO_THROW(validate(big, VideoFormat::gif));
+    big.width = big.height = 4096;
     EXPECT_NO_THROW(validate(big, VideoFormat::webm));
+    big.width = 8192, big.height = 2048;
+    EXPECT_NO_THROW(validate(big, VideoFormat::webm));
+    big.height = 2050;
+    try {
+        validate(big, VideoFormat::webm);
+        ADD_FAILURE() << "8192x2050 taken for webm";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("video size 8192x2050 is not allowed for webm: a VP9 frame has at most "
+                                              "16777216 pixels (4096x4096, say), this size has 16793600", 0), 0u)
+            << e.what();
+    }
     EXPECT_THROW(video_format_for("film.avi"), InputError);
     EXPECT_THROW(video_format_for("film"), InputError);
     EXPECT_EQ(video_format_for("Film.MP4"), VideoFormat::mp4);

@@ -1,4 +1,4 @@
-#include "cli/sweep_measures.hpp"
+#include "dragon/sweep_measures.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -6,11 +6,10 @@
 
 #include <fmt/format.h>
 
-#include "cli/answers.hpp"
-#include "cli/scenario_flags.hpp"
+#include "dragon/answers.hpp"
 #include "dragon/turnaround.hpp"
 
-namespace dragon::cli {
+namespace dragon {
 
 namespace {
 
@@ -46,14 +45,14 @@ void leaves(const Json& v, const std::string& prefix, std::vector<std::string>& 
 // over the cores, and work nested inside one would only queue behind them. `jam` is set to
 // where the end of the valid motion cut the analysis short.
 Json collide_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
-    InlineExecutor here;
+    InlineExecutor here(options.stop_source);
     const CollideAnswer search = collide(Simulation(s), options.window(s.path.kind), &here);
     if (search.jam) jam = "no contact before the end of the valid motion: " + jam_sentence(*search.jam);
     return collide_answer(search, false);
 }
 
 Json min_pitch_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
-    InlineExecutor here;
+    InlineExecutor here(options.stop_source);
     dragon::MinPitchOptions o;
     o.grid = options.grid;
     o.executor = &here;
@@ -67,7 +66,7 @@ Json min_pitch_measure(const Scenario& s, const MeasureOptions& options, std::st
 // The command's design, followability and check for a first contact; its length study (two
 // dozen other S-curves) is the command's to print, not a value of this scenario.
 Json turnaround_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
-    InlineExecutor here;
+    InlineExecutor here(options.stop_source);
     const SCurve design = design_s_curve(s);
     const std::optional<Jam> design_jam = turnaround_jam(Simulation(s));
     const RunClearance clear = min_clearance(s, options.window(PathKind::turnaround), {}, &here);
@@ -77,7 +76,8 @@ Json turnaround_measure(const Scenario& s, const MeasureOptions& options, std::s
 }
 
 Json max_speed_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
-    const MaxSpeed v = max_head_speed(s, options.limit, options.window(PathKind::turnaround));
+    InlineExecutor here(options.stop_source);
+    const MaxSpeed v = max_head_speed(s, options.limit, options.window(PathKind::turnaround), &here);
     if (v.jam)
         jam = v.unbounded ? fmt::format("no head speed keeps every handle at or under {} m/s: {}", options.limit,
                                         jam_sentence(*v.jam))
@@ -93,11 +93,11 @@ const std::vector<MeasureInfo>& sweep_measures() {
          with_jam({"time", "travel", "benches", "head_radius", "point", "tolerance", "evaluations", "from", "to",
                    "from_travel", "to_travel"}), "time",
          "first contact", "s", true},
-        {"min-pitch", PathKind::spiral, ScenarioUse::pitch_search().all(), min_pitch_measure,
+        {"min-pitch", PathKind::spiral, value::bench | value::head_speed | value::start_turn | value::turn_radius, min_pitch_measure,
          with_jam({"pitch", "below_range", "above_range", "turn_radius", "search", "grid", "intervals"}, {"guarantee"},
                   {"jam.pitch"}),
          "pitch", "minimum pitch", "m", false},
-        {"turnaround", PathKind::turnaround, ScenarioUse::turnaround_only().all(), turnaround_measure,
+        {"turnaround", PathKind::turnaround, values_read(PathKind::turnaround), turnaround_measure,
          with_jam({"r1", "r2", "length", "ratio", "pitch", "entry_radius", "entry", "exit", "c1", "c2", "joint", "angle1",
                    "angle2", "length1", "length2", "max_radius", "followable", "first_contact.time",
                    "first_contact.travel", "first_contact.benches", "first_contact.head_radius", "first_contact.point",
@@ -106,7 +106,7 @@ const std::vector<MeasureInfo>& sweep_measures() {
                    "clearance.evaluations", "clearance.from",
                    "clearance.to", "clearance.from_travel", "clearance.to_travel"}),
          "clearance.distance", "smallest clearance", "m", true},
-        {"max-speed", PathKind::turnaround, ScenarioUse::turnaround_only().all(), max_speed_measure,
+        {"max-speed", PathKind::turnaround, values_read(PathKind::turnaround), max_speed_measure,
          with_jam({"max_head_speed", "ratio", "unbounded", "handle", "time", "travel", "tied", "head_arc", "limit",
                    "from", "to", "from_travel", "to_travel"},
                   {"scan_step", "scan_travel", "candidates", "evaluations"}),
@@ -118,8 +118,7 @@ const std::vector<MeasureInfo>& sweep_measures() {
 const MeasureInfo& find_measure(const std::string& name) {
     for (const MeasureInfo& m : sweep_measures())
         if (name == m.name) return m;
-    throw InputError(fmt::format("--measure {} is not allowed: use collide, min-pitch, turnaround or max-speed",
-                                 name.empty() ? "''" : name));
+    throw InputError("measure", name.empty() ? "''" : name, "use collide, min-pitch, turnaround or max-speed");
 }
 
 RunWindow MeasureOptions::window(PathKind kind) const {
@@ -200,4 +199,4 @@ std::vector<std::string> flatten(const Json& answer, const std::vector<std::stri
     return cells;
 }
 
-}  // namespace dragon::cli
+}  // namespace dragon

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "cli/report.hpp"
+#include "dragon/json.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/window.hpp"
 
-namespace dragon::cli {
+namespace dragon {
 
 struct MeasureOptions;
 
@@ -61,6 +61,9 @@ struct MeasureOptions {
     // (default_window), as the commands take them.
     std::optional<Along> from, to;
     RunWindow window(PathKind kind) const;
+    // The measures run on the calling thread (a sweep spreads its scenarios over the cores);
+    // they stop when this executor asks (Executor::stop_requested), if given.
+    const Executor* stop_source = nullptr;
 };
 
 // One measure on one scenario, on the calling thread.
@@ -80,4 +83,4 @@ std::string overlap_note_prefix(const MeasureInfo& m);
 // std::logic_error for a key of the answer that has no column (the list has fallen behind).
 std::vector<std::string> flatten(const Json& answer, const std::vector<std::string>& columns);
 
-}  // namespace dragon::cli
+}  // namespace dragon

@@ -9,12 +9,12 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "cli/report.hpp"
-#include "dragon/tables.hpp"
+#include "dragon/decimals.hpp"
+#include "dragon/json.hpp"
 #include "support/cli_run.hpp"
 
-using dragon::cli::Json;
-using dragon::cli::json_text;
+using dragon::Json;
+using dragon::json_text;
 
 TEST(JsonNumbers, TheValueMeant) {
     EXPECT_EQ(json_text(Json((0.55 - 0.35) / 80)), "0.0025");  // 0.002500000000000001 in binary

@@ -1,5 +1,5 @@
-#include "cli/answers.hpp"
-#include "cli/wording.hpp"
+// The --json answers of the question commands, built in one place (dragon/answers.hpp).
+#include "dragon/answers.hpp"
 
 #include <cmath>
 
@@ -7,7 +7,7 @@
 
 #include "dragon/tables.hpp"
 
-namespace dragon::cli {
+namespace dragon {
 
 namespace {
 
@@ -30,6 +30,25 @@ Json rows_json(const std::vector<TurnStudyRow>& rows) {
 }
 
 }  // namespace
+
+Json jam_json(const std::optional<Jam>& j) {
+    if (!j) return nullptr;
+    return Json{{"time", j->time},
+                {"travel", j->travel},
+                {"handle", j->handle},
+                {"kind", to_string(j->kind)},
+                {"ahead", j->ahead},
+                {"point", {j->point.x(), j->point.y()}},
+                {"tolerance", j->tolerance}};
+}
+
+void add_window(Json& answer, const Searched& w) {
+    answer["from"] = w.from;
+    answer["to"] = w.to;
+    answer["from_travel"] = w.from_travel;
+    answer["to_travel"] = w.to_travel;
+}
+
 
 Json contact_json(const Contact& c) {
     return {{"time", c.time},
@@ -137,4 +156,4 @@ Json max_speed_answer(const MaxSpeed& m, double limit) {
     return answer;
 }
 
-}  // namespace dragon::cli
+}  // namespace dragon

@@ -1,0 +1,59 @@
+// The answers of the contest's questions as JSON (collide, min-pitch, turnaround, max-speed), built
+// in one place: the dragon tool prints them for --json, its sweeps write them into their rows,
+// and Python's to_dict() reads them, so all three hold the same answer for one scenario. And the
+// sentences the library says about its answers.
+#pragma once
+
+#include <optional>
+
+#include <string>
+
+#include "dragon/analyses.hpp"
+#include "dragon/json.hpp"
+#include "dragon/turnaround.hpp"
+
+namespace dragon {
+
+// v with as many decimals as `resolution` (how closely v is known) supports, at most 9: 9 for 1e-10.
+std::string format_resolved(double v, double resolution);
+// "the dragon can follow its path only until t = 432.917924228 s, where handle 1 can no longer
+// follow handle 0: ..." (from instead of until for a jam behind t = 0). Every command words a
+// jam with this one sentence.
+std::string jam_sentence(const Jam& j);
+// One sentence: the grid, how each change is narrowed and what each run proves, and what a
+// window narrower than the grid means.
+std::string min_pitch_guarantee(const MinPitch& m);
+// One paragraph: can the turning curve be shorter, and which of the studied turns this dragon
+// can follow at all.
+std::string turnaround_conclusion(const TurnaroundStudy& st);
+
+// The end of the valid motion as an answer's "jam" key: {"time", "travel", "handle", "kind",
+// "ahead", "point", "tolerance"}, or null. "kind" is what happens as time runs forward; "ahead":
+// the motion is valid until the jam (else from it).
+Json jam_json(const std::optional<Jam>& j);
+// The window an answer searched, both ways: "from", "to" (s) and "from_travel", "to_travel" (m of
+// head travel), added to `answer`.
+void add_window(Json& answer, const Searched& w);
+
+// A first contact: {"time", "travel", "benches", "head_radius", "point", "tolerance"}.
+Json contact_json(const Contact& c);
+// collide's answer: the contact's keys (null where there is none), "evaluations", the window
+// searched both ways ("from", "to", "from_travel", "to_travel"), "jam", then "handles" (every
+// handle then, or null) if asked for.
+Json collide_answer(const CollideAnswer& a, bool with_handles);
+// {"pitch", "below_range", "above_range", "turn_radius", "search", "grid", "intervals", "jam",
+// "guarantee"}; the jam, if any, has the pitch it was met at.
+Json min_pitch_answer(const MinPitch& m, double turn_radius);
+// The S-curve's design, whether this dragon can follow it, the first contact and the clearance
+// up to it if the check was run ("first_contact": contact_json or null; "clearance": the
+// smallest clearance before it, with the window searched), and the length study if given (the
+// command's; a sweep leaves it out). "jam": where the valid motion ends on the check's window,
+// else on the design.
+Json turnaround_answer(const SCurve& design, const std::optional<Jam>& design_jam,
+                       const std::optional<RunClearance>& clearance, const TurnaroundStudy* study);
+// {"max_head_speed", "ratio", "unbounded", "handle", "time", "travel", "tied", "head_arc", "limit",
+// "from", "to", "from_travel", "to_travel", "jam", "scan_step", "scan_travel", "candidates",
+// "evaluations"}.
+Json max_speed_answer(const MaxSpeed& m, double limit);
+
+}  // namespace dragon

@@ -1,0 +1,22 @@
+// JSON as the library's answers are written: objects with their keys in the order written
+// (nlohmann's ordered_json), and text in which every number is the shortest decimal of the value
+// meant. One formatter for the CLI's --json, sweep rows, summary.json and Python's to_dict().
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace dragon {
+
+using Json = nlohmann::ordered_json;
+
+// The value a computed double stands for: rounded to 15 significant digits (0.0025, not
+// 0.002500000000000001; 0.979435, not 0.9794349999999999), never -0.
+double meant(double v);
+// `v` as JSON text with every number the shortest decimal of the value meant, whole numbers
+// without ".0" ("times":[0,300]), NaN and infinities as null; on one line, or indented by
+// `indent` spaces a level.
+std::string json_text(const Json& v, int indent = -1);
+
+}  // namespace dragon

@@ -1,0 +1,65 @@
+// What defines one sweep (its grid, measures, fixed scenario values, measure options and shard),
+// written as the first line of its rows' file and read back from it (for --resume, merge and
+// plots), and its rows: the tool's `dragon sweep` and Python's sweep() make the same rows.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dragon/json.hpp"
+#include "dragon/sweep.hpp"
+#include "dragon/sweep_measures.hpp"
+
+namespace dragon {
+
+struct SweepSetup {
+    SweepGrid grid;
+    std::vector<const MeasureInfo*> measures;
+    Scenario base;              // the fixed values (the contest's where none is given)
+    ScenarioValues fixed = 0;   // the values some measure reads and no axis varies
+    MeasureOptions options;
+    Shard shard;
+};
+
+// Is `name` ("min-pitch") among the measures?
+bool has_measure(const std::vector<const MeasureInfo*>& measures, const char* name);
+// "collide, max-speed": the measures' names.
+std::string measure_names(const std::vector<const MeasureInfo*>& measures);
+// What min-pitch and max-speed refuse in an option whatever the scenario (the rules of
+// min_pitch() and max_head_speed()): a sweep refuses it once, up front, rather than writing
+// "refused" into every row. What depends on the scenario (a bound below its width) stays a
+// row's refusal. nullopt when the option is fine.
+std::optional<std::string> limit_problem(double limit);
+std::optional<std::string> grid_problem(double grid);
+// Throws InputError for an option of the measures that every scenario would refuse, naming it
+// by `name("limit")` (the caller's name for it: a flag, a file's key, a keyword argument).
+void check_options(const MeasureOptions& o, const std::vector<const MeasureInfo*>& measures,
+                   const std::function<std::string(const char* option)>& name);
+
+// The first line of a rows' file: "# dragon sweep " and the setup as one JSON object.
+std::string spec_line(const SweepSetup& setup);
+// The setup a spec line describes; throws InputError naming `file` if it is not one.
+SweepSetup read_spec_line(const std::string& line, const std::string& file);
+// What makes a file's first line `found` differ from this sweep's `expected`, in words ("it
+// varies width over [...], and this sweep over [...]"), for refusing its rows.
+std::string spec_difference(const std::string& found, const std::string& expected);
+// The same line without its shard: the sweep the shards are parts of.
+std::string whole_spec_line(const std::string& line, const std::string& file);
+
+// The second line: the varied values' names, each measure's columns prefixed by its name
+// ("min-pitch.pitch"), then "status".
+std::vector<std::string> header(const SweepSetup& setup);
+
+// One scenario's row: its CSV line and the same as a JSON object (the varied values, each
+// measure's answer or null, the status). Its measures run on the calling thread.
+struct SweepRow {
+    std::string csv;
+    Json json;
+    bool failed = false;  // a measure failed for a reason other than the input's
+};
+SweepRow make_row(const SweepSetup& setup, std::size_t index);
+
+}  // namespace dragon
