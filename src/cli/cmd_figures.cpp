@@ -6,6 +6,7 @@
 #include "cli/asset_dir.hpp"
 #include "cli/commands.hpp"
 #include "cli/print_flags.hpp"
+#include "cli/render_flags.hpp"
 #include "cli/progress.hpp"
 #include "cli/scenario_flags.hpp"
 #include "cli/status.hpp"
@@ -24,6 +25,7 @@ struct FiguresOptions {
     std::vector<std::string> only;
     bool list = false;
     bool titles = false, no_titles = false;
+    std::string lang = "en";
     bool quiet = false;
 };
 }  // namespace
@@ -49,6 +51,7 @@ void register_figures(CLI::App& app, Registry& reg) {
         ->delimiter(',')  // as solve --only q1,q2
         ->excludes(list);
     opt->print.add_to(sub);
+    add_language_flag(sub, opt->lang);
     auto* titles = sub->add_flag("--titles", opt->titles, "Titles and notes on the figures at a print size too (on "
                                                           "screen they are there by default)");
     sub->add_flag("--no-titles", opt->no_titles, "No titles or notes on the figures (at a print size the default: a "
@@ -70,6 +73,7 @@ void register_figures(CLI::App& app, Registry& reg) {
         fo.only = opt->only;
         fo.format = opt->format;
         fo.print = opt->print.resolve();
+        fo.language = parse_language(opt->lang);
         if (opt->titles) fo.titles = true;
         if (opt->no_titles) fo.titles = false;
         if (fo.print && opt->scale != 1.0)

@@ -52,17 +52,21 @@ void broad_phase(const Context& c, const std::string& path) {
     for (auto [i, j] : candidate_pairs(f, margin))
         if (i == focus || j == focus) candidates.push_back(i == focus ? j : i);
 
-    SceneOptions so;
+    SceneOptions so = c.scene_options();
     so.theme = th;
     so.title_band = true;  // a title hides nothing
     so.camera = Camera::at(r.centre, extent);
     so.highlight_benches = candidates;
     const std::string when =
-        hit ? fmt::format("at the first contact (t = {:.2f} s)", hit->time)
-            : fmt::format("at t = {:.2f} s (no two benches touch on the way in)", f.time);
+        hit ? fmt::format(fmt::runtime(c.say("at the first contact (t = {:.2f} s)", "在首次碰撞时（t = {:.2f} s）")), hit->time)
+            : fmt::format(fmt::runtime(c.say("at t = {:.2f} s (no two benches touch on the way in)",
+                                             "在 t = {:.2f} s（盘入途中没有板凳相碰）")), f.time);
     so.annotation = fmt::format(
-        "Broad phase around bench {} {}: {} of {} benches are candidates\n"
-        "Sweep and prune on x (box extents), then bounding circles within a margin of {:g} m (purple); only these get the exact test.",
+        fmt::runtime(c.say("Broad phase around bench {} {}: {} of {} benches are candidates\n"
+                           "Sweep and prune on x (box extents), then bounding circles within a margin of {:g} m (purple); "
+                           "only these get the exact test.",
+                           "第 {} 节板凳周围的粗筛 {}：{} 节板凳（共 {} 节）为候选\n"
+                           "先按 x 方向的包围盒扫描剪枝，再取外接圆相距不超过 {:g} m 者（紫色）；只有这些做精确检测。")),
         focus, when, candidates.size(), others(focus, static_cast<int>(f.benches.size())), margin);
     Scene s = make_scene(sim, f, so);
 
@@ -78,8 +82,9 @@ void broad_phase(const Context& c, const std::string& path) {
     s.polylines.push_back(circle(r.centre, half_diagonal(r) + margin, th.head, 2.2, true));
     s.polylines.push_back(circle(r.centre, half_diagonal(r), th.head, 1.6));
     s.labels.push_back(label(r.centre + Vec2{0, half_diagonal(r) + margin},
-                             fmt::format("bench {}'s bounding circle + margin", focus), th.head, 14, 6, -8));
-    s.labels.push_back(label({x1, r.centre.y() - 0.42 * extent}, "sweep band on x", th.text, 14, 6, 0));
+                             fmt::format(fmt::runtime(c.say("bench {}'s bounding circle + margin", "第 {} 节板凳的外接圆 + 余量")),
+                                         focus), th.head, 14, 6, -8));
+    s.labels.push_back(label({x1, r.centre.y() - 0.42 * extent}, c.say("sweep band on x", "x 方向扫描带"), th.text, 14, 6, 0));
     write_scene(c, s, 900, 900, path);
 }
 
@@ -92,11 +97,12 @@ void first_contact_zoom(const Context& c, const std::string& path) {
     const Clearance closest = clearance(f);
     const int bench_a = hit ? hit->bench_a : closest.bench_a, bench_b = hit ? hit->bench_b : closest.bench_b;
     if (bench_a == 0) {  // fewer than three benches: no pair that could touch
-        SceneOptions so;
+        SceneOptions so = c.scene_options();
         so.theme = th;
         so.title_band = true;  // a title hides nothing
-        so.annotation = fmt::format("No contact: a chain of {} {} no two that do not share a handle",
-                                    f.benches.size(), f.benches.size() == 1 ? "bench has" : "benches has");
+        so.annotation = fmt::format(fmt::runtime(c.say("No contact: a chain of {} {} no two that do not share a handle",
+                                                       "无碰撞：{} 节{}中没有两节不共用把手的板凳")),
+                                    f.benches.size(), f.benches.size() == 1 ? c.say("bench has", "板凳") : c.say("benches has", "板凳"));
         write_scene(c, make_scene(sim, f, so), 1000, 1000, path);
         return;
     }
@@ -107,22 +113,26 @@ void first_contact_zoom(const Context& c, const std::string& path) {
     // Boards and the gap between them, large: eight board widths, or three gaps if wider.
     const double extent = std::max(8.0 * c.base.bench.width, 3.0 * sep.distance);
 
-    SceneOptions so;
+    SceneOptions so = c.scene_options();
     so.theme = th;
     so.title_band = true;  // a title hides nothing
     so.camera = Camera::at(p, extent);
     if (hit) {
         so.collision = CollisionMark{bench_a, bench_b, p};
-        so.annotation = fmt::format("First contact at t = {:.6f} s: bench {} touches bench {} (head at r = {:.4f} m)\n"
-                                    "Benches are numbered from 1 at the head; the small numbers are handles, from 0 "
-                                    "at the head's front",
+        so.annotation = fmt::format(fmt::runtime(c.say("First contact at t = {:.6f} s: bench {} touches bench {} (head at r = {:.4f} m)\n"
+                                                       "Benches are numbered from 1 at the head; the small numbers are handles, from 0 "
+                                                       "at the head's front",
+                                                       "首次碰撞 t = {:.6f} s：第 {} 节板凳碰到第 {} 节（龙头位于 r = {:.4f} m）\n"
+                                                       "板凳从龙头起编号为 1；小号数字是把手，从龙头前把手起编号为 0")),
                                     hit->time, bench_a, bench_b, hit->head_radius);
     } else {
         so.highlight_benches = {bench_a, bench_b};
-        so.annotation = fmt::format("No contact on the way in: at t = {:.6f} s, the last moment, the closest benches "
-                                    "are {} and {}, {:.6f} m apart\n"
-                                    "Benches are numbered from 1 at the head; the small numbers are handles, from 0 "
-                                    "at the head's front",
+        so.annotation = fmt::format(fmt::runtime(c.say("No contact on the way in: at t = {:.6f} s, the last moment, the closest benches "
+                                                       "are {} and {}, {:.6f} m apart\n"
+                                                       "Benches are numbered from 1 at the head; the small numbers are handles, from 0 "
+                                                       "at the head's front",
+                                                       "盘入途中无碰撞：在最后时刻 t = {:.6f} s，最近的板凳是第 {} 与第 {} 节，相距 {:.6f} m\n"
+                                                       "板凳从龙头起编号为 1；小号数字是把手，从龙头前把手起编号为 0")),
                                     f.time, bench_a, bench_b, closest.distance);
     }
     // The whole dragon in the inset (its colours in the legend: the tail is the blue bench).
@@ -134,15 +144,17 @@ void first_contact_zoom(const Context& c, const std::string& path) {
     auto name_at = [&](const Rect& r, int bench) {
         const double along = std::clamp(dot(p - r.centre, r.axis), -r.half_length, r.half_length);
         const double back = std::clamp(along + (along > 0 ? -0.23 : 0.23) * extent, -r.half_length, r.half_length);
-        Label l = label(r.centre + back * r.axis, bench == 1 ? "bench 1 (head)" : fmt::format("bench {}", bench),
+        Label l = label(r.centre + back * r.axis,
+                        bench == 1 ? std::string(c.say("bench 1 (head)", "第 1 节（龙头）"))
+                                   : fmt::format(fmt::runtime(c.say("bench {}", "第 {} 节")), bench),
                         th.text, 15, -40, -16);
         l.bench = bench;
         s.labels.push_back(l);
     };
     name_at(a, bench_a);
     name_at(b, bench_b);
-    s.labels.push_back(label(p, hit ? fmt::format("contact: separation {:.1e} m", sep.distance)
-                                    : fmt::format("closest: {:.6f} m apart", sep.distance),
+    s.labels.push_back(label(p, hit ? fmt::format(fmt::runtime(c.say("contact: separation {:.1e} m", "接触：间距 {:.1e} m")), sep.distance)
+                                    : fmt::format(fmt::runtime(c.say("closest: {:.6f} m apart", "最近：相距 {:.6f} m")), sep.distance),
                              th.text, 13, 16, 26));
     // The handles in view, numbered; a number may lie on the bench the handle ends.
     for (std::size_t i = 0; i < f.handles.size(); ++i)
@@ -183,7 +195,7 @@ void pitch_states(const Context& c, const std::string& path) {
         Scenario sc = c.base;
         sc.path.pitch = pitch;
         const Simulation sim(sc);
-        SceneOptions so;
+        SceneOptions so = c.scene_options();
         so.theme = th;
         so.show_scale_bar = false;
         so.annotation = "";
@@ -193,12 +205,14 @@ void pitch_states(const Context& c, const std::string& path) {
             f = hit->frame;
             const Vec2 q = contact_point(f.benches[hit->bench_a - 1], f.benches[hit->bench_b - 1]);
             so.collision = CollisionMark{hit->bench_a, hit->bench_b, q};
-            captions.push_back(fmt::format("pitch {:.{}f} m: benches {} and {} touch at t = {:.2f} s", pitch, decimals,
-                                           hit->bench_a, hit->bench_b, hit->time));
+            captions.push_back(fmt::format(fmt::runtime(c.say("pitch {:.{}f} m: benches {} and {} touch at t = {:.2f} s",
+                                                              "螺距 {:.{}f} m：第 {} 与第 {} 节在 t = {:.2f} s 相碰")),
+                                           pitch, decimals, hit->bench_a, hit->bench_b, hit->time));
         } else {
             f = sim.frame(boundary_time(sim));
-            captions.push_back(fmt::format("pitch {:.{}f} m: the head reaches r = {:g} m, no contact", pitch, decimals,
-                                           radius));
+            captions.push_back(fmt::format(fmt::runtime(c.say("pitch {:.{}f} m: the head reaches r = {:g} m, no contact",
+                                                              "螺距 {:.{}f} m：龙头到达 r = {:g} m，无碰撞")),
+                                           pitch, decimals, radius));
         }
         panels.push_back(make_scene(sim, f, so));
     }
@@ -214,14 +228,20 @@ void pitch_states(const Context& c, const std::string& path) {
     }
     std::string verdict;
     if (std::isnan(least.pitch))
-        verdict = fmt::format("no pitch in [{:.4f}, {:.4f}] m reaches it collision-free", least.search_lo,
-                              least.search_hi);
+        verdict = fmt::format(fmt::runtime(c.say("no pitch in [{:.4f}, {:.4f}] m reaches it collision-free",
+                                                 "[{:.4f}, {:.4f}] m 内没有螺距能无碰撞地到达")),
+                              least.search_lo, least.search_hi);
     else if (least.pitch <= least.search_lo)
-        verdict = fmt::format("every pitch searched, from {:.4f} m, reaches it collision-free", least.search_lo);
+        verdict = fmt::format(fmt::runtime(c.say("every pitch searched, from {:.4f} m, reaches it collision-free",
+                                                 "自 {:.4f} m 起搜索的每个螺距都能无碰撞地到达")),
+                              least.search_lo);
     else
-        verdict = fmt::format("the smallest collision-free pitch is {:.6f} m", least.pitch);
-    const std::string title = fmt::format("Coiling in to the turning space (r = {:g} m): {}{}", radius, verdict,
-                                          c.contest() ? " (the paper says 0.42 m)" : "");
+        verdict = fmt::format(fmt::runtime(c.say("the smallest collision-free pitch is {:.6f} m", "无碰撞的最小螺距为 {:.6f} m")),
+                              least.pitch);
+    const std::string title = fmt::format(fmt::runtime(c.say("Coiling in to the turning space (r = {:g} m): {}{}",
+                                                             "盘入至调头空间（r = {:g} m）：{}{}")),
+                                          radius, verdict,
+                                          c.contest() ? c.say(" (the paper says 0.42 m)", "（论文给出 0.42 m）") : "");
     c.tell(title);
     for (const auto& caption : captions) c.tell(caption);
 
@@ -281,9 +301,9 @@ void clearance_over_time(const Context& c, const std::string& path) {
     const TimeSpan span = shown_span(sim, 0.0, sim.end_time(), hit);
     Plot p;
     p.theme = c.opt.theme;
-    p.title = "Clearance: the smallest gap between non-adjacent benches";
-    p.x_label = "time (s)";
-    p.y_label = "clearance (m)";
+    p.title = c.say("Clearance: the smallest gap between non-adjacent benches", "间隙：不相邻板凳之间的最小距离");
+    p.x_label = c.say("time (s)", "时间 (s)");
+    p.y_label = c.say("clearance (m)", "间隙 (m)");
     p.legend = Plot::Legend::none;
     PlotSeries s{"", {}, series_colour(p.theme, 0), 1.6};
     Clearance least{std::numeric_limits<double>::infinity(), 0, 0, Vec2::Zero(), Vec2::Zero()};
@@ -305,15 +325,22 @@ void clearance_over_time(const Context& c, const std::string& path) {
     for (int k = 0; k < 300; ++k) add(fine_from + (span.to - fine_from) * k / 300);
     add(span.to);
     if (hit) {
-        p.note = fmt::format("Exact rectangle distances. First contact at t = {:.6f} s (benches {} and {}){}", hit->time,
-                             hit->bench_a, hit->bench_b, c.contest() ? "; the paper's 0.1 s grid gives 413 s." : ".");
+        p.note = fmt::format(fmt::runtime(c.say("Exact rectangle distances. First contact at t = {:.6f} s (benches {} and {}){}",
+                                                "矩形间的精确距离。首次碰撞 t = {:.6f} s（第 {} 与第 {} 节板凳）{}")),
+                             hit->time, hit->bench_a, hit->bench_b,
+                             c.contest() ? c.say("; the paper's 0.1 s grid gives 413 s.", "；论文用 0.1 s 的网格得到 413 s。")
+                                         : c.say(".", "。"));
         p.ref_lines.push_back({true, hit->time, fmt::format("{:.4f} s", hit->time), p.theme.collision});
     } else if (s.points.empty()) {
-        p.note = fmt::format("A chain of {} {} no two that do not share a handle: nothing can touch.",
-                             c.base.bench.bench_count, c.base.bench.bench_count == 1 ? "bench has" : "benches has");
+        p.note = fmt::format(fmt::runtime(c.say("A chain of {} {} no two that do not share a handle: nothing can touch.",
+                                                "{} 节{}中没有两节不共用把手的板凳：不会相碰。")),
+                             c.base.bench.bench_count,
+                             c.base.bench.bench_count == 1 ? c.say("bench has", "板凳") : c.say("benches has", "板凳"));
     } else {
-        p.note = fmt::format("Exact rectangle distances. No contact on the way in (to t = {:.2f} s): the smallest sampled "
-                             "clearance is {:.6f} m, benches {} and {} at t = {:.2f} s.",
+        p.note = fmt::format(fmt::runtime(c.say("Exact rectangle distances. No contact on the way in (to t = {:.2f} s): the smallest "
+                                                "sampled clearance is {:.6f} m, benches {} and {} at t = {:.2f} s.",
+                                                "矩形间的精确距离。盘入途中（至 t = {:.2f} s）无碰撞：采样到的最小间隙为 {:.6f} m，"
+                                                "第 {} 与第 {} 节板凳，t = {:.2f} s。")),
                              span.to, least.distance, least.bench_a, least.bench_b, least_t);
         p.ref_lines.push_back({true, least_t, fmt::format("{:.2f} s", least_t), p.theme.text});
     }

@@ -61,15 +61,19 @@ void link_geometry(const Context& c, const std::string& path) {
     const Vec2 tip0 = h0 + k * f.handles[0].speed * f.handles[0].tangent;
     double x0 = std::min({h0.x(), h2.x(), tip0.x(), h0.x() - d1}), x1 = std::max({h0.x(), h2.x(), tip0.x(), h0.x() + d1});
     double y0 = std::min({h0.y(), h2.y(), tip0.y(), h0.y() - d1}), y1 = std::max({h0.y(), h2.y(), tip0.y(), h0.y() + d1});
-    SceneOptions so;
+    SceneOptions so = c.scene_options();
     so.theme = th;
     so.title_band = true;  // a title hides nothing
     so.show_turning_space = false;
     so.camera = Camera::at({0.5 * (x0 + x1), 0.5 * (y0 + y1)}, std::max(x1 - x0, y1 - y0) + 1.4);
     so.annotation = fmt::format(
-        "One link at t = {} s: the next handle is the nearest root of |P(s) \u2212 P(s\u2080)| = d behind the head\n"
-        "Rigid link: v\u2080 (T\u2080\u00b7u) = v\u2081 (T\u2081\u00b7u), with T the unit tangents and u along the link\n"
-        "Boards {:.2f} m (head) and {:.2f} m long, {:.2f} m wide; holes {:.3f} m from the ends",
+        fmt::runtime(c.say(
+            "One link at t = {} s: the next handle is the nearest root of |P(s) \u2212 P(s\u2080)| = d behind the head\n"
+            "Rigid link: v\u2080 (T\u2080\u00b7u) = v\u2081 (T\u2081\u00b7u), with T the unit tangents and u along the link\n"
+            "Boards {:.2f} m (head) and {:.2f} m long, {:.2f} m wide; holes {:.3f} m from the ends",
+            "t = {} s 时的一节连杆：下一个把手是弦方程 |P(s) \u2212 P(s\u2080)| = d 在龙头后方最近的根\n"
+            "刚性连杆：v\u2080 (T\u2080\u00b7u) = v\u2081 (T\u2081\u00b7u)，T 为单位切向量，u 沿连杆方向\n"
+            "龙头板长 {:.2f} m，龙身板长 {:.2f} m，板宽 {:.2f} m；把手孔距板端 {:.3f} m")),
         seconds(t), spec.head_length, spec.body_length, spec.width, spec.hole_offset);
     Scene s = make_scene(sim, f, so);
     s.benches.back().style = Scene::Style::body;  // bench 3 is not the tail: the chain was cut short
@@ -84,17 +88,19 @@ void link_geometry(const Context& c, const std::string& path) {
     }
     // At a print size the labels are shorter: the paper's caption says the rest.
     const bool brief = c.print();
-    s.labels.push_back(label(h1, brief ? "handle 1" : "handle 1: the nearest root behind", accent, 13, 10, 22));
+    s.labels.push_back(label(h1, brief ? c.say("handle 1", "把手 1") : c.say("handle 1: the nearest root behind", "把手 1：后方最近的根"),
+                             accent, 13, 10, 22));
     const auto roots = chord_roots(sim.path(), h0, d1, s_head - 80.0, s_head - 0.5);
-    if (roots.size() > 1) s.labels.push_back(label(roots[roots.size() - 2], brief ? "other roots" : "other roots of the chord equation", soft, 12, 10, 4));
+    if (roots.size() > 1) s.labels.push_back(label(roots[roots.size() - 2], brief ? c.say("other roots", "其他根") : c.say("other roots of the chord equation", "弦方程的其他根"), soft, 12, 10, 4));
 
     // Chords, with their lengths.
     Polyline chord1{{h0, h1}, ink, 1.4, true}, chord2{{h1, h2}, ink, 1.4, true};
     s.polylines.push_back(chord1);
     s.polylines.push_back(chord2);
     s.labels.push_back(label(0.5 * (h0 + h1), brief ? fmt::format("d\u2081 = {:.2f} m", d1)
-                                                    : fmt::format("d\u2081 = {:.2f} m (head: {:.2f} \u2212 2\u00d7{:.3f})", d1,
-                                                                  spec.head_length, spec.hole_offset), ink, 13, 70, 30));
+                                                    : fmt::format(fmt::runtime(c.say("d\u2081 = {:.2f} m (head: {:.2f} \u2212 2\u00d7{:.3f})",
+                                                                                     "d\u2081 = {:.2f} m（龙头：{:.2f} \u2212 2\u00d7{:.3f}）")),
+                                                                  d1, spec.head_length, spec.hole_offset), ink, 13, 70, 30));
     s.labels.push_back(label(0.5 * (h1 + h2), fmt::format("d\u2082 = {:.2f} m", d2), ink, 13, 10, 6));
 
     // Velocities: v_i T_i at each end of the head link, and the link direction u. Rigidity makes
@@ -113,8 +119,8 @@ void link_geometry(const Context& c, const std::string& path) {
     s.labels.push_back(label(h0 + k * a.speed * a.tangent, fmt::format("v\u2080 = {:.6f} m/s", a.speed), th.tail, 13, 6, 14));
     s.labels.push_back(label(h1 + k * b.speed * b.tangent, fmt::format("v\u2081 = {:.6f} m/s", b.speed), th.tail, 13, 6, 14));
     s.labels.push_back(label(u_from + 0.9 * u, "u", th.highlight, 14, 4, -4));
-    s.labels.push_back(label(h0, brief ? "handle 0" : "handle 0 (head front)", ink, 13, 10, -10));
-    s.labels.push_back(label(h2, "handle 2", ink, 13, 10, -8));
+    s.labels.push_back(label(h0, brief ? c.say("handle 0", "把手 0") : c.say("handle 0 (head front)", "把手 0（龙头前把手）"), ink, 13, 10, -10));
+    s.labels.push_back(label(h2, c.say("handle 2", "把手 2"), ink, 13, 10, -8));
 
     write_scene(c, s, 1000, 1000, path);
 }

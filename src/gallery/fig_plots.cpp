@@ -20,11 +20,15 @@ void speeds_by_handle(const Context& c, const std::string& path) {
     const Simulation sim(c.base);
     Plot p;
     p.theme = c.opt.theme;
-    p.title = "Speed of every handle along the chain (exact, from rigid links)";
-    p.note = fmt::format("Coiling in at {:g} m/s, pitch {:g} m.{}", c.base.head_speed, c.base.coil_pitch(),
-                         c.contest() ? " The paper's finite differences set the body to 0 at t = 0." : "");
-    p.x_label = fmt::format("handle (0 = head front, {} = tail rear)", c.base.bench.bench_count);
-    p.y_label = "speed (m/s)";
+    p.title = c.say("Speed of every handle along the chain (exact, from rigid links)", "龙身各把手的速度（由刚性连杆精确求得）");
+    p.note = fmt::format(fmt::runtime(c.say("Coiling in at {:g} m/s, pitch {:g} m.{}", "以 {:g} m/s 盘入，螺距 {:g} m。{}")),
+                         c.base.head_speed, c.base.coil_pitch(),
+                         c.contest() ? c.say(" The paper's finite differences set the body to 0 at t = 0.",
+                                             "论文的有限差分在 t = 0 时把龙身速度算成 0。")
+                                     : "");
+    p.x_label = fmt::format(fmt::runtime(c.say("handle (0 = head front, {} = tail rear)", "把手（0 = 龙头前把手，{} = 龙尾后把手）")),
+                            c.base.bench.bench_count);
+    p.y_label = c.say("speed (m/s)", "速度 (m/s)");
     p.legend = Plot::Legend::bottom_left;
     // Q1's six moments (0, 60, ..., 300 m of head travel: seconds at 1 m/s), spread over a shorter
     // run if the dragon stops sooner.
@@ -51,9 +55,13 @@ void s_curve_geometry(const Context& c, const std::string& path) {
     const Theme& th = c.opt.theme;
     Plot p;
     p.theme = th;
-    p.title = fmt::format("The turnaround S-curve: two tangent arcs, r\u2081 = {:g} r\u2082, entering tangent to the "
-                          "coil-in spiral at A and leaving tangent to the coil-out one at B", sc.path.arc_ratio);
-    p.note = fmt::format("Pitch {:g} m, turning space radius {:g} m: r\u2081 = {:.6f} m, r\u2082 = {:.6f} m, length {:.6f} m",
+    p.title = fmt::format(fmt::runtime(c.say("The turnaround S-curve: two tangent arcs, r\u2081 = {:g} r\u2082, entering tangent to "
+                                             "the coil-in spiral at A and leaving tangent to the coil-out one at B",
+                                             "调头 S 形曲线：两段相切圆弧，r\u2081 = {:g} r\u2082，在 A 处与盘入螺线相切进入，在 B 处与盘出螺线相切离开")),
+                          sc.path.arc_ratio);
+    p.note = fmt::format(fmt::runtime(c.say("Pitch {:g} m, turning space radius {:g} m: r\u2081 = {:.6f} m, r\u2082 = {:.6f} m, "
+                                            "length {:.6f} m",
+                                            "螺距 {:g} m，调头空间半径 {:g} m：r\u2081 = {:.6f} m，r\u2082 = {:.6f} m，长度 {:.6f} m")),
                          d.pitch, sc.path.turn_radius, d.r1, d.r2, d.length);
     p.x_label = "x (m)";
     p.y_label = "y (m)";
@@ -66,7 +74,7 @@ void s_curve_geometry(const Context& c, const std::string& path) {
         for (int i = 0; i <= n; ++i) pts.push_back(tp.at_arc(s0 + (s1 - s0) * i / n).pos);
         return pts;
     };
-    PlotSeries space{"turning space", {}, th.turning_space, 1.3, true, true};
+    PlotSeries space{c.say("turning space", "调头空间"), {}, th.turning_space, 1.3, true, true};
     for (int i = 0; i <= 200; ++i) {
         const double a = 2 * std::numbers::pi * i / 200;
         space.points.push_back({R * std::cos(a), R * std::sin(a)});
@@ -76,12 +84,12 @@ void s_curve_geometry(const Context& c, const std::string& path) {
     const double turn = 2 * std::numbers::pi * (R + 0.5 * d.pitch);
     // The two spirals told apart by more than a shade of grey: the coil-out one dashed and both
     // drawn darker than the guides of a scene.
-    p.series.push_back({"coil-in spiral", sample(-turn, 0, 400), darker(th.guide), 1.6});
-    PlotSeries out{"coil-out spiral", sample(d.length, d.length + turn, 400), darker(th.guide_out), 1.6};
+    p.series.push_back({c.say("coil-in spiral", "盘入螺线"), sample(-turn, 0, 400), darker(th.guide), 1.6});
+    PlotSeries out{c.say("coil-out spiral", "盘出螺线"), sample(d.length, d.length + turn, 400), darker(th.guide_out), 1.6};
     out.dashed = true;
     p.series.push_back(out);
-    p.series.push_back({fmt::format("arc 1, r\u2081 = {:.3f} m", d.r1), sample(0, d.length1, 200), th.s_curve, 3.0});
-    p.series.push_back({fmt::format("arc 2, r\u2082 = {:.3f} m", d.r2), sample(d.length1, d.length, 200), th.head, 3.0});
+    p.series.push_back({fmt::format(fmt::runtime(c.say("arc 1, r\u2081 = {:.3f} m", "圆弧 1，r\u2081 = {:.3f} m")), d.r1), sample(0, d.length1, 200), th.s_curve, 3.0});
+    p.series.push_back({fmt::format(fmt::runtime(c.say("arc 2, r\u2082 = {:.3f} m", "圆弧 2，r\u2082 = {:.3f} m")), d.r2), sample(d.length1, d.length, 200), th.head, 3.0});
     // Radii to the tangent points: each centre lies on the normal at both ends of its arc,
     // and the joint lies on the line of centres.
     const Rgba soft = with_alpha(th.text, 0.6);
@@ -92,9 +100,9 @@ void s_curve_geometry(const Context& c, const std::string& path) {
         PlotLabel l{at, std::move(text), col, dx, dy, 13, true, align};
         p.labels.push_back(l);
     };
-    point(d.entry, "A: entry", th.text, 8, -8, 0.0);
-    point(d.exit, "B = \u2212A: exit", th.text, -8, -10, 1.0);
-    point(d.joint, "joint", th.text, 8, 18, 0.0);
+    point(d.entry, c.say("A: entry", "A：入口"), th.text, 8, -8, 0.0);
+    point(d.exit, c.say("B = \u2212A: exit", "B = \u2212A：出口"), th.text, -8, -10, 1.0);
+    point(d.joint, c.say("joint", "切点"), th.text, 8, 18, 0.0);
     point(d.c1, "C\u2081", th.s_curve, 6, -6);
     point(d.c2, "C\u2082", th.head, 6, -6);
     point({0, 0}, "O", soft, 6, 16);
@@ -109,9 +117,9 @@ void speed_ratio_on_turnaround(const Context& c, const std::string& path) {
     const SCurve d = design_s_curve(sc);
     Plot p;
     p.theme = c.opt.theme;
-    p.title = "Largest handle speed over the head's, on the turnaround path";
-    p.x_label = "time (s); the head enters the S-curve at 0";
-    p.y_label = c.print() ? "speed ratio" : "max handle speed / head speed";
+    p.title = c.say("Largest handle speed over the head's, on the turnaround path", "调头路径上把手最大速度与龙头速度之比");
+    p.x_label = c.say("time (s); the head enters the S-curve at 0", "时间 (s)；龙头在 0 时进入 S 形曲线");
+    p.y_label = c.print() ? c.say("speed ratio", "速度比") : c.say("max handle speed / head speed", "把手最大速度 / 龙头速度");
     p.legend = Plot::Legend::none;
     PlotSeries s{"", {}, series_colour(p.theme, 0), 1.6};
     // Q4's window, 100 m of head travel either side of the turn (100 s at 1 m/s), 1600 samples.
@@ -121,22 +129,25 @@ void speed_ratio_on_turnaround(const Context& c, const std::string& path) {
         s.points.push_back({t, speed_ratio_at(sim.path(), sc.bench, sim.head_arc(t)).ratio});
     }
     p.series.push_back(s);
-    p.ref_lines.push_back({true, 0.0, fmt::format("S-curve: 0 to {:.1f} s", d.length / sc.head_speed), p.theme.s_curve});
+    p.ref_lines.push_back({true, 0.0, fmt::format(fmt::runtime(c.say("S-curve: 0 to {:.1f} s", "S 形曲线：0 至 {:.1f} s")),
+                                                  d.length / sc.head_speed), p.theme.s_curve});
     p.ref_lines.push_back({true, d.length / sc.head_speed, "", p.theme.s_curve});
     // The marked maximum is Q5's, refined between samples (the curve's own peak sits a little
     // lower: the samples straddle it).
     const MaxSpeed q5 = max_head_speed(sc, 2.0, kTurnaroundWindow);
     const bool run = q5.tied.size() > 1 && q5.tied.back() - q5.tied.front() + 1 == static_cast<int>(q5.tied.size());
-    const std::string who = run                    ? fmt::format("handles {}-{}", q5.tied.front(), q5.tied.back())
-                            : q5.tied.size() > 1 ? fmt::format("handles {}", fmt::join(q5.tied, ", "))
-                                                 : fmt::format("handle {}", q5.handle);
+    const std::string who = run ? fmt::format(fmt::runtime(c.say("handles {}-{}", "把手 {}–{}")), q5.tied.front(), q5.tied.back())
+                            : q5.tied.size() > 1 ? fmt::format(fmt::runtime(c.say("handles {}", "把手 {}")), fmt::join(q5.tied, ", "))
+                                                 : fmt::format(fmt::runtime(c.say("handle {}", "把手 {}")), q5.handle);
     // Left of the peak, below the S-curve's label at the top.
     p.labels.push_back({{q5.time, q5.ratio},
-                        c.print() ? fmt::format("max {:.6f}", q5.ratio)
-                                  : fmt::format("max {:.6f} at t = {:.6f} s", q5.ratio, q5.time),
+                        c.print() ? fmt::format(fmt::runtime(c.say("max {:.6f}", "最大 {:.6f}")), q5.ratio)
+                                  : fmt::format(fmt::runtime(c.say("max {:.6f} at t = {:.6f} s", "最大 {:.6f}，t = {:.6f} s")),
+                                                q5.ratio, q5.time),
                         p.theme.text, -8, 4, 13, true, 1.0});
     p.y_max = 1.0 + 1.35 * (q5.ratio - 1.0);
-    p.note = fmt::format("Sampled every {:g} s; the maximum refined ({}). Head speed limit: 2 / {:.6f} = {:.6f} m/s.",
+    p.note = fmt::format(fmt::runtime(c.say("Sampled every {:g} s; the maximum refined ({}). Head speed limit: 2 / {:.6f} = {:.6f} m/s.",
+                                            "每 {:g} s 采样一次；最大值经细化（{}）。龙头速度上限：2 / {:.6f} = {:.6f} m/s。")),
                          (span.to - span.from) / 1600, who, q5.ratio, q5.max_head_speed);
     write_plot(c, p, 1000, 600, path);
 }

@@ -15,18 +15,21 @@ void dragon_at_300s(const Context& c, const std::string& path) {
     const std::optional<Contact>& hit = c.answers->contact();
     const double t = shown_span(sim, 0.0, sim.time_of(300.0), hit).to;
     const Frame f = sim.frame(t);
-    const char* why = hit && t == hit->time ? " (the first contact)" : t < sim.time_of(300.0) ? " (the end of the run)" : "";
-    SceneOptions so;
+    const char* why = hit && t == hit->time       ? c.say(" (the first contact)", "（首次碰撞）")
+                      : t < sim.time_of(300.0) ? c.say(" (the end of the run)", "（运动的终点）")
+                                               : "";
+    SceneOptions so = c.scene_options();
     so.theme = c.opt.theme;
     so.title_band = true;  // a title hides nothing
     so.colour_by_speed = true;
     const Vec2 head = f.handles.front().pos;
-    so.annotation = fmt::format("t = {} s{}   head front at x = {:.6f} m, y = {:.6f} m   pitch {:g} m", seconds(t),
-                                why, head.x(), head.y(), c.base.coil_pitch());
+    so.annotation = fmt::format(fmt::runtime(c.say("t = {} s{}   head front at x = {:.6f} m, y = {:.6f} m   pitch {:g} m",
+                                                    "t = {} s{}   龙头前把手位于 x = {:.6f} m，y = {:.6f} m   螺距 {:g} m")),
+                                seconds(t), why, head.x(), head.y(), c.base.coil_pitch());
     Scene s = make_scene(sim, f, so);
-    Label h = label(head, "head", c.opt.theme.text, 14, 8, -8);
+    Label h = label(head, c.say("head", "龙头"), c.opt.theme.text, 14, 8, -8);
     h.bench = 1;
-    Label tl = label(f.handles.back().pos, "tail", c.opt.theme.text, 14, 8, -8);
+    Label tl = label(f.handles.back().pos, c.say("tail", "龙尾"), c.opt.theme.text, 14, 8, -8);
     tl.bench = static_cast<int>(f.benches.size());
     s.labels.push_back(h);
     s.labels.push_back(tl);
@@ -44,14 +47,17 @@ void turnaround_scene(const Context& c, const std::string& path) {
     const Frame f = sim.frame(t);
     double fastest = 0;
     for (const Handle& h : f.handles) fastest = std::max(fastest, h.speed);
-    SceneOptions so;
+    SceneOptions so = c.scene_options();
     so.theme = load_theme("dark", c.opt.asset_dir);
     so.title_band = true;  // a title hides nothing
     so.colour_by_speed = true;
     so.camera = Camera::at({0, 0}, 2.0 * sc.path.turn_radius + 9.0);
-    so.annotation = fmt::format("Turnaround at t = {:.1f} s, 1 s after the head leaves the S-curve (orange), pitch {:g} m\n"
-                                "The head bench pivots: handles behind it run up to {:.3f} m/s while the head keeps {:g} m/s",
-                                t, sc.path.turn_pitch, fastest, sc.head_speed);
+    so.annotation = fmt::format(
+        fmt::runtime(c.say("Turnaround at t = {:.1f} s, 1 s after the head leaves the S-curve (orange), pitch {:g} m\n"
+                           "The head bench pivots: handles behind it run up to {:.3f} m/s while the head keeps {:g} m/s",
+                           "调头：t = {:.1f} s，龙头离开 S 形曲线（橙色）后 1 s，螺距 {:g} m\n"
+                           "龙头板凳在转动：其后的把手速度高达 {:.3f} m/s，而龙头保持 {:g} m/s")),
+        t, sc.path.turn_pitch, fastest, sc.head_speed);
     write_scene(c, make_scene(sim, f, so), 1000, 1000, path, 256);
 }
 

@@ -96,6 +96,13 @@ void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, const std::vecto
     }
 }
 
+SceneOptions Context::scene_options() const {
+    SceneOptions so;
+    so.theme = opt.theme;
+    so.language = opt.language;
+    return so;
+}
+
 Context::Size Context::size(double gallery_w, double gallery_h) const {
     if (!opt.print) return {px(gallery_w), px(gallery_h), 0.0, {}};
     const PrintLayout l = print_layout(*opt.print, gallery_h / gallery_w, opt.format == "png");

@@ -32,6 +32,11 @@ struct Context {
     Size size(double gallery_w, double gallery_h) const;
     bool print() const { return opt.print.has_value(); }
     bool titles() const { return opt.titles.value_or(!opt.print); }
+    // The figure's words in its language: `en` or `zh`, a fmt format string of the same
+    // arguments in the same order.
+    const char* say(const char* en, const char* zh) const { return opt.language == Language::zh ? zh : en; }
+    // A scene's options with the figures' theme and language.
+    SceneOptions scene_options() const;
     // Remarks about the contest's paper only for the contest's own scenario.
     bool contest() const { return is_contest_default(base); }
     // Hands every text a figure puts on its picture to opt.on_text (a no-op without one).

@@ -27,6 +27,8 @@ struct FigureOptions {
     // Titles and notes on the figures. Unset: on screen yes, at a print size no (a paper sets
     // its own caption under a figure; the words stay in the figure's data file, see `data`).
     std::optional<bool> titles;
+    // The language of every word the figures draw (titles, notes, labels, legends, axis names).
+    Language language = Language::en;
     // Hears every text each figure puts on its picture (titles, notes, captions, labels, axis
     // names), with the figure's name: what the figures say, without reading their pixels.
     std::function<void(const std::string& figure, const std::string& text)> on_text;
