@@ -60,6 +60,9 @@ struct SweepMap {
     std::string mark_label = "the contest's dragon";
     // The body text's size, px, for a map at a print size (Plot::text_px); 0: on screen.
     double text_px = 0.0;
+    // The language of the map's own words (titles, the legend of cells without a value); the
+    // quantities, notes and labels above are drawn as the caller gives them.
+    Language language = Language::en;
 };
 
 // "bench width (m)", or "benches" without a unit.

@@ -13,6 +13,7 @@
 #include "cli/status.hpp"
 #include "cli/sweep_merge.hpp"
 #include "cli/print_flags.hpp"
+#include "cli/render_flags.hpp"
 #include "cli/sweep_plot.hpp"
 #include "cli/sweep_run.hpp"
 #include "cli/wording.hpp"
@@ -28,6 +29,7 @@ struct SweepOptions {
     SweepOutput output;
     std::string plot;
     PrintFlags print;  // the map's size on a page
+    std::string lang = "en", merge_lang = "en";  // the map's words
     std::optional<int> workers;
     // dragon sweep merge
     CLI::App* merge = nullptr;
@@ -37,8 +39,9 @@ struct SweepOptions {
     bool merge_quiet = false;
 };
 
-void write_plot(const std::string& path, const MapCollector& maps, const std::optional<PrintSize>& print, bool quiet) {
-    write_sweep_map(maps.map(), path, print);
+void write_plot(const std::string& path, const MapCollector& maps, const std::optional<PrintSize>& print,
+                Language language, bool quiet) {
+    write_sweep_map(maps.map(language), path, print);
     status(quiet, "wrote {}", path);
 }
 
@@ -63,6 +66,7 @@ int run_merge(const SweepOptions& opt) {
     const std::vector<std::string> parts(opt.merge_files.begin() + 1, opt.merge_files.end());
     const SweepSetup whole = whole_sweep(parts);
     const std::optional<PrintSize> print = plot_print(opt.merge_print, opt.merge_plot);
+    const Language language = parse_language(opt.merge_lang);
     if (!opt.merge_plot.empty()) {
         check_plot(whole, opt.merge_plot);
         AtomicFile probe(opt.merge_plot);
@@ -74,7 +78,7 @@ int run_merge(const SweepOptions& opt) {
     });
     status(opt.merge_quiet, "wrote {}: {} from {}", out, count_of(static_cast<long long>(rows), "row"),
            count_of(static_cast<long long>(parts.size()), "file"));
-    if (maps) write_plot(opt.merge_plot, *maps, print, opt.merge_quiet);
+    if (maps) write_plot(opt.merge_plot, *maps, print, language, opt.merge_quiet);
     return 0;
 }
 
@@ -105,6 +109,7 @@ int run(SweepOptions& opt) {
     set_workers(opt.workers, setup.shard.size(setup.grid.size()), opt.output.quiet);
     check_output(opt.output);
     const std::optional<PrintSize> print = plot_print(opt.print, opt.plot);
+    const Language language = parse_language(opt.lang);
     if (!opt.plot.empty()) {
         check_plot(setup, opt.plot);
         AtomicFile probe(opt.plot);
@@ -118,7 +123,7 @@ int run(SweepOptions& opt) {
     if (!opt.output.out.empty())
         status(opt.output.quiet, "wrote {}: {}{}", opt.output.out, count_of(static_cast<long long>(t.done_before + t.made), "row"),
                t.done_before ? fmt::format(" ({} new)", t.made) : "");
-    if (maps) write_plot(opt.plot, *maps, print, opt.output.quiet);
+    if (maps) write_plot(opt.plot, *maps, print, language, opt.output.quiet);
     // A run that fails leaves no finished file: the rows stay in the partial one, and --resume
     // makes the failed rows again.
     if (t.failed > 0)
@@ -167,6 +172,7 @@ void register_sweep(CLI::App& app, Registry& reg) {
     sub->add_option("--plot", opt->plot, "Also draw the map (.png, .svg or .pdf): line plots over one varied value, heat "
                                          "maps over two");
     opt->print.add_to(sub);
+    add_language_flag(sub, opt->lang);
     sub->add_option("--workers", opt->workers,
                     fmt::format("Scenarios run at once (default: one per core; at most one per scenario and {} per "
                                 "core: more would only wait)", kWorkersPerCore));
@@ -178,6 +184,7 @@ void register_sweep(CLI::App& app, Registry& reg) {
     opt->merge->allow_extras();  // named by run_merge, as the command line names a command's leftovers
     opt->merge->add_option("--plot", opt->merge_plot, "Also draw the map (.png, .svg or .pdf)");
     opt->merge_print.add_to(opt->merge);
+    add_language_flag(opt->merge, opt->merge_lang);
     add_quiet_flag(opt->merge, opt->merge_quiet);
     reg["sweep"] = [opt]() { return run(*opt); };
 }

@@ -21,9 +21,31 @@ std::vector<std::size_t> plotted_axes(const SweepSetup& setup) {
 }
 
 // Which of a measure's jams mean its value is not the whole answer, in words for the legend.
-std::string jam_meaning(const MeasureInfo& m) {
-    if (std::string(m.name) == "collide") return "no contact before the dragon's motion ends";
-    return "cut short: the dragon cannot follow the S-curve";
+std::string jam_meaning(const MeasureInfo& m, Language language) {
+    const bool zh = language == Language::zh;
+    if (std::string(m.name) == "collide") return zh ? "板凳龙的运动结束前无碰撞" : "no contact before the dragon's motion ends";
+    return zh ? "中途截止：板凳龙无法沿 S 形曲线前进" : "cut short: the dragon cannot follow the S-curve";
+}
+
+// The Chinese names of the quantities a map shows: each varied value by its flag's name, each
+// measure by its command's.
+const char* chinese_quantity(const std::string& name) {
+    static const std::pair<const char*, const char*> names[] = {
+        {"pitch", "螺距"},           {"speed", "龙头速度"},         {"bench-count", "板凳节数"},
+        {"head-length", "龙头板长"}, {"body-length", "龙身板长"},   {"width", "板宽"},
+        {"hole-offset", "把手孔距板端"}, {"start-turn", "起始圈数"}, {"turn-radius", "调头空间半径"},
+        {"turn-pitch", "调头路径螺距"}, {"arc-ratio", "圆弧半径比 r₁/r₂"},
+        {"collide", "首次碰撞时间"}, {"min-pitch", "最小螺距"},     {"turnaround", "最小间隙"},
+        {"max-speed", "龙头最大速度"},
+    };
+    for (const auto& [key, zh] : names)
+        if (name == key) return zh;
+    return nullptr;
+}
+
+std::string quantity_in(Language language, const std::string& name, const std::string& english) {
+    const char* zh = language == Language::zh ? chinese_quantity(name) : nullptr;
+    return zh ? zh : english;
 }
 
 // Whether a row's status says this measure found the chain overlapping where it starts: a
@@ -41,18 +63,24 @@ std::optional<double> on_axis(const std::vector<double>& values, double v) {
 }
 
 // The fixed values that are not the contest's, for the map's note.
-std::string fixed_note(const SweepSetup& setup, const std::vector<std::size_t>& plotted) {
+std::string fixed_note(const SweepSetup& setup, const std::vector<std::size_t>& plotted, Language language) {
     const Scenario contest;
     std::vector<std::string> differ;
     for (const SweepParameter& p : sweep_parameters()) {
         if (!(setup.fixed & p.value) || get_parameter(setup.base, p) == get_parameter(contest, p)) continue;
-        differ.push_back(fmt::format("{} {}{}", p.name, get_parameter(setup.base, p), *p.unit ? std::string(" ") + p.unit : ""));
+        differ.push_back(fmt::format("{} {}{}", quantity_in(language, p.name, p.name), get_parameter(setup.base, p),
+                                     *p.unit ? std::string(" ") + p.unit : ""));
     }
     for (std::size_t k = 0; k < setup.grid.axes().size(); ++k) {
         const Axis& a = setup.grid.axes()[k];
         if (std::find(plotted.begin(), plotted.end(), k) == plotted.end())
-            differ.push_back(fmt::format("{} {}{}", a.parameter->name, a.cells[0], *a.parameter->unit ? std::string(" ") + a.parameter->unit : ""));
+            differ.push_back(fmt::format("{} {}{}", quantity_in(language, a.parameter->name, a.parameter->name), a.cells[0],
+                                         *a.parameter->unit ? std::string(" ") + a.parameter->unit : ""));
     }
+    if (language == Language::zh)
+        return fmt::format("{}。共 {} 个情形。",
+                           differ.empty() ? "其余取值同竞赛题" : fmt::format("固定：{}；其余同竞赛题", fmt::join(differ, "，")),
+                           setup.grid.size());
     const std::string fixed = differ.empty() ? "Everything else as in the contest"
                                              : fmt::format("Fixed: {}; the rest as in the contest", fmt::join(differ, ", "));
     return fmt::format("{}. {}.", fixed, count_of(static_cast<long long>(setup.grid.size()), "scenario"));
@@ -112,8 +140,10 @@ void MapCollector::add(const std::string& csv_row) {
     }
 }
 
-SweepMap MapCollector::map() const {
+SweepMap MapCollector::map(Language language) const {
     SweepMap map;
+    map.language = language;
+    if (language == Language::zh) map.mark_label = "竞赛题的板凳龙";
     const Scenario contest;
     // The contest's dragon is marked where every value the measures read but the plotted ones is
     // the contest's.
@@ -137,17 +167,24 @@ SweepMap MapCollector::map() const {
     }
     const auto axis = [&](std::size_t k) {
         const Axis& a = setup_.grid.axes()[k];
-        MapAxis m{a.parameter->quantity, a.parameter->unit, a.values, std::nullopt};
+        MapAxis m{quantity_in(language, a.parameter->name, a.parameter->quantity), a.parameter->unit, a.values, std::nullopt};
         if (contest_map) m.mark = on_axis(a.values, get_parameter(contest, *a.parameter));
         return m;
     };
     map.x = axis(plotted_.at(0));
     if (plotted_.size() > 1) map.y = axis(plotted_[1]);
-    map.note = fixed_note(setup_, plotted_);
+    map.note = fixed_note(setup_, plotted_, language);
     for (std::size_t m = 0; m < setup_.measures.size(); ++m) {
         const MeasureInfo& info = *setup_.measures[m];
-        MapPanel panel{info.quantity, info.unit, values_[m], cells_[m], jam_meaning(info)};
-        if (std::string(info.name) == "min-pitch") {
+        MapPanel panel{quantity_in(language, info.name, info.quantity), info.unit, values_[m], cells_[m],
+                       jam_meaning(info, language)};
+        if (std::string(info.name) == "min-pitch" && language == Language::zh) {
+            panel.below_label = "最小螺距不高于搜索范围（--lo）";
+            panel.above_label = "最小螺距（若存在）高于搜索范围（--hi）";
+        } else if (language == Language::zh) {
+            panel.below_label = "答案低于搜索范围";
+            panel.above_label = "答案高于搜索范围";
+        } else if (std::string(info.name) == "min-pitch") {
             panel.below_label = "minimum pitch at or below the range searched (--lo)";
             panel.above_label = "minimum pitch, if any, above the range searched (--hi)";
         }

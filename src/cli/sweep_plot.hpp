@@ -19,8 +19,9 @@ public:
     explicit MapCollector(const SweepSetup& setup);
     // One row of the sweep's CSV (any order; each scenario once).
     void add(const std::string& csv_row);
-    // The map of the rows added so far (scenarios without a row are shown as missing).
-    SweepMap map() const;
+    // The map of the rows added so far (scenarios without a row are shown as missing), its
+    // words in `language`.
+    SweepMap map(Language language = Language::en) const;
 
 private:
     const SweepSetup& setup_;

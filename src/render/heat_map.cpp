@@ -11,6 +11,7 @@
 #include "dragon/plot.hpp"
 #include "render/contours.hpp"
 #include "render/map_panels.hpp"
+#include "render/words.hpp"
 #include "render/paint.hpp"
 
 namespace dragon::render {
@@ -117,7 +118,7 @@ void draw_other_cells(cairo_t* cr, const Theme& th, const MapPanel& panel, const
         any = true;
     }
     if (!any) return;
-    const CellStyle st = cell_style(th, kind, panel);
+    const CellStyle st = cell_style(th, kind, panel);  // fill and hatching: no words
     cairo_save(cr);
     cairo_clip_preserve(cr);
     set_colour(cr, st.fill);
@@ -245,7 +246,9 @@ void draw_heat_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
     const std::vector<double> ex = edges(s.xs), ey = edges(s.ys);
 
     p.theme = th;
-    p.title = fmt::format("{} over {} and {}", capitalised(panel.quantity), map.x.quantity, map.y->quantity);
+    p.title = fmt::format(fmt::runtime(words(map.language).map_over),
+                          map.language == Language::en ? capitalised(panel.quantity) : panel.quantity, map.x.quantity,
+                          map.y->quantity);
     p.note = map.note;
     if (map.text_px > 0) p.title.clear(), p.note.clear();  // at a print size: the paper's caption says it
     p.x_label = axis_label(map.x.quantity, map.x.unit);
@@ -274,10 +277,10 @@ void draw_heat_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
     const double bar_room = 16 * u + 7 * u + widest + 30 * u;
     // The legend under the frame, across the panel.
     const double legend_x = x + 18 * u, legend_w = w - 36 * u;
-    const double legend_room = cell_legend_height(cr, th, panel, legend_w, u, map.text_px);
+    const double legend_room = cell_legend_height(cr, th, panel, legend_w, u, map.text_px, map.language);
     const PlotArea a = draw_plot(cr, p, x, y, w - bar_room, h - legend_room);
     if (s.any) draw_colour_bar(cr, th, panel, s, ticks, levels, a, x + w - bar_room, u, map.text_px);
-    if (legend_room > 0) draw_cell_legend(cr, th, panel, legend_x, y + h - legend_room, legend_w, u, map.text_px);
+    if (legend_room > 0) draw_cell_legend(cr, th, panel, legend_x, y + h - legend_room, legend_w, u, map.text_px, map.language);
 }
 
 }  // namespace dragon::render

@@ -8,6 +8,7 @@
 
 #include "dragon/plot.hpp"
 #include "render/map_panels.hpp"
+#include "render/words.hpp"
 
 namespace dragon::render {
 
@@ -16,7 +17,7 @@ void draw_line_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
     const std::vector<std::size_t> order = sorted_order(map.x.values);
     Plot p;
     p.theme = th;
-    std::string title = panel.quantity + " against " + map.x.quantity;
+    std::string title = fmt::format(fmt::runtime(words(map.language).map_against), panel.quantity, map.x.quantity);
     if (!title.empty() && title[0] >= 'a' && title[0] <= 'z') title[0] = static_cast<char>(title[0] - 'a' + 'A');
     p.title = title;
     p.note = map.note;
@@ -40,11 +41,11 @@ void draw_line_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
     const bool others = has_other_cells(panel);
     if (others) {
         p.strip_px = 24;
-        p.strip_label = "no value";
+        p.strip_label = words(map.language).no_value;
         p.strip = [&](cairo_t* c, const PlotArea& band, double su) {
             for (std::size_t i : order) {
                 if (panel.cells[i] == MapCell::value) continue;
-                const CellStyle st = cell_style(th, panel.cells[i], panel);
+                const CellStyle st = cell_style(th, panel.cells[i], panel, map.language);
                 draw_cell_marker(c, panel.cells[i], st, band.px(map.x.values[i]), 0.5 * (band.y0 + band.y1), 4.5 * su);
             }
         };
@@ -55,9 +56,9 @@ void draw_line_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
     p.text_px = map.text_px;
     const double u = plot_unit(p, w, h);  // the plot's own unit
     const double legend_x = x + 18 * u, legend_w = w - 36 * u;
-    const double legend_room = cell_legend_height(cr, th, panel, legend_w, u, map.text_px);
+    const double legend_room = cell_legend_height(cr, th, panel, legend_w, u, map.text_px, map.language);
     draw_plot(cr, p, x, y, w, h - legend_room);
-    if (legend_room > 0) draw_cell_legend(cr, th, panel, legend_x, y + h - legend_room, legend_w, u, map.text_px, true);
+    if (legend_room > 0) draw_cell_legend(cr, th, panel, legend_x, y + h - legend_room, legend_w, u, map.text_px, map.language, true);
 }
 
 }  // namespace dragon::render

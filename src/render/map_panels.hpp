@@ -16,7 +16,7 @@ struct CellStyle {
     std::string label;
     Rgba marker;  // a line plot's dot for such a scenario: strong enough to see as a dot
 };
-CellStyle cell_style(const Theme& theme, MapCell cell, const MapPanel& panel);
+CellStyle cell_style(const Theme& theme, MapCell cell, const MapPanel& panel, Language language = Language::en);
 // Every kind but values, in the order the legend lists them.
 const std::vector<MapCell>& other_cell_kinds();
 // A line plot's marker for a scenario of this kind at (x, y), radius r: a dot, or a triangle
@@ -28,10 +28,10 @@ void hatch(cairo_t* cr, double x0, double y0, double x1, double y1, double spaci
 // each), in rows as wide as `width` allows, from (x, top): its height, and the drawing.
 // `body_px`: the map's text size at a print size (SweepMap::text_px), 0 on screen.
 double cell_legend_height(cairo_t* cr, const Theme& theme, const MapPanel& panel, double width, double u,
-                          double body_px);
+                          double body_px, Language language);
 // `dots`: each entry's swatch is its marker (line plots), else its cell.
 void draw_cell_legend(cairo_t* cr, const Theme& theme, const MapPanel& panel, double x, double top, double width,
-                      double u, double body_px, bool dots = false);
+                      double u, double body_px, Language language, bool dots = false);
 // Whether the panel holds cells of any kind but values.
 bool has_other_cells(const MapPanel& panel);
 

@@ -15,6 +15,7 @@
 #include "render/map_panels.hpp"
 #include "render/paint.hpp"
 #include "render/png8.hpp"
+#include "render/words.hpp"
 #include "render/vector_out.hpp"
 
 namespace dragon {
@@ -27,19 +28,20 @@ std::string axis_label(const std::string& quantity, const std::string& unit) {
 
 namespace render {
 
-CellStyle cell_style(const Theme& theme, MapCell cell, const MapPanel& panel) {
+CellStyle cell_style(const Theme& theme, MapCell cell, const MapPanel& panel, Language language) {
+    const Words& w = words(language);
     // Pale fills, away from the value ramp's colours, for the kinds that are not values; the
     // answer outside the range searched is blue below it and rose above it; a chain that
     // collides from the start a deep red, as strong as the verdict.
     switch (cell) {
         case MapCell::jam: return {{0.88, 0.88, 0.89}, true, panel.jam_label, {0.84, 0.37, 0.00}};
-        case MapCell::refused: return {{0.60, 0.60, 0.63}, false, "refused (the row's status says why)", {0.40, 0.40, 0.43}};
-        case MapCell::no_value: return {{0.92, 0.89, 0.78}, false, "no answer in the range searched", {0.62, 0.52, 0.25}};
+        case MapCell::refused: return {{0.60, 0.60, 0.63}, false, w.cell_refused, {0.40, 0.40, 0.43}};
+        case MapCell::no_value: return {{0.92, 0.89, 0.78}, false, w.cell_none, {0.62, 0.52, 0.25}};
         case MapCell::below_range: return {{0.76, 0.84, 0.95}, false, panel.below_label, {0.20, 0.42, 0.80}};
         case MapCell::above_range: return {{0.97, 0.80, 0.78}, false, panel.above_label, {0.82, 0.30, 0.25}};
         case MapCell::overlapping:
-            return {{0.55, 0.11, 0.13}, false, "benches overlap at the start: the chain collides", {0.55, 0.11, 0.13}};
-        case MapCell::missing: return {theme.background, false, "no row (another shard's)", {0.6, 0.6, 0.6}};
+            return {{0.55, 0.11, 0.13}, false, w.cell_overlapping, {0.55, 0.11, 0.13}};
+        case MapCell::missing: return {theme.background, false, w.cell_missing, {0.6, 0.6, 0.6}};
         case MapCell::value: break;
     }
     return {theme.background, false, "", theme.text};
@@ -93,12 +95,12 @@ struct Placed {
     double dx, dy;
 };
 std::vector<Placed> legend_layout(cairo_t* cr, const Theme& theme, const MapPanel& panel, double width, double u,
-                                  double body_px) {
+                                  double body_px, Language language) {
     std::vector<Placed> out;
     double dx = 0, dy = 0;
     for (MapCell kind : other_cell_kinds()) {
         if (std::find(panel.cells.begin(), panel.cells.end(), kind) == panel.cells.end()) continue;
-        const double w = (kSwatch + kSwatchGap) * u + text_width(cr, theme.font, text_size(kLegendText, u, body_px), cell_style(theme, kind, panel).label);
+        const double w = (kSwatch + kSwatchGap) * u + text_width(cr, theme.font, text_size(kLegendText, u, body_px), cell_style(theme, kind, panel, language).label);
         if (dx > 0 && dx + w > width) dx = 0, dy += kLegendRow * u;  // on to the next row
         out.push_back({kind, dx, dy});
         dx += w + kEntryGap * u;
@@ -109,16 +111,16 @@ std::vector<Placed> legend_layout(cairo_t* cr, const Theme& theme, const MapPane
 }  // namespace
 
 double cell_legend_height(cairo_t* cr, const Theme& theme, const MapPanel& panel, double width, double u,
-                          double body_px) {
-    const std::vector<Placed> entries = legend_layout(cr, theme, panel, width, u, body_px);
+                          double body_px, Language language) {
+    const std::vector<Placed> entries = legend_layout(cr, theme, panel, width, u, body_px, language);
     return entries.empty() ? 0.0 : entries.back().dy + kLegendRow * u + 8 * u;
 }
 
 void draw_cell_legend(cairo_t* cr, const Theme& theme, const MapPanel& panel, double x, double top, double width,
-                      double u, double body_px, bool dots) {
+                      double u, double body_px, Language language, bool dots) {
     const double swatch = kSwatch * u;
-    for (const Placed& e : legend_layout(cr, theme, panel, width, u, body_px)) {
-        const CellStyle st = cell_style(theme, e.kind, panel);
+    for (const Placed& e : legend_layout(cr, theme, panel, width, u, body_px, language)) {
+        const CellStyle st = cell_style(theme, e.kind, panel, language);
         const double sx = x + e.dx, y = top + e.dy + 0.5 * kLegendRow * u;
         set_colour(cr, theme.text);
         text(cr, theme.font, text_size(kLegendText, u, body_px), sx + swatch + kSwatchGap * u, y, st.label, 0.0, 0.5);
