@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <string>
 #include <vector>
@@ -160,6 +161,37 @@ TEST(PrintSize, BadPrintSizesAreRefusedNamingTheFlag) {
     }
     EXPECT_EQ(dragon_test::run_dragon("render --time 1 --width-in 3 --width-cm 8 -o " + out.string()).code, 2);
     EXPECT_EQ(dragon_test::run_dragon("figures --print column --scale 2 -o " + out.string()).code, 2);
+}
+
+}  // namespace
+}  // namespace dragon
+
+namespace dragon {
+namespace {
+
+// The gallery in Chinese: its words in the contest's terms, set in a font with CJK glyphs (the
+// PDF embeds Noto Sans CJK beside DejaVu Sans), and the same numbers as in English.
+TEST(ChineseFigures, WordsInChineseSetInACjkFont) {
+    const std::filesystem::path dir = dragon_test::scratch_dir() / "zh";
+    std::map<std::string, std::string> said;
+    FigureOptions fo;
+    fo.format = "pdf";
+    fo.language = Language::zh;
+    fo.only = {"fig4_first_contact", "plot_s_curve", "plot_speeds"};
+    fo.on_text = [&](const std::string& figure, const std::string& text) { said[figure] += text + "\n"; };
+    write_figures(dir.string(), Scenario{}, fo);
+    EXPECT_NE(said["fig4_first_contact"].find("首次碰撞 t = 412.473838 s：第 1 节板凳碰到第 9 节"), std::string::npos)
+        << said["fig4_first_contact"];
+    EXPECT_NE(said["plot_s_curve"].find("调头空间"), std::string::npos) << said["plot_s_curve"];
+    EXPECT_NE(said["plot_speeds"].find("把手"), std::string::npos) << said["plot_speeds"];
+    for (const auto& [figure, text] : said) EXPECT_EQ(text.find("bench"), std::string::npos) << figure << ":\n" << text;
+    const auto [ok, fonts] = dragon_test::shell_output("pdffonts " + (dir / "fig4_first_contact.pdf").string());
+    ASSERT_TRUE(ok) << fonts;
+    EXPECT_NE(fonts.find("NotoSansCJK"), std::string::npos) << fonts;
+    EXPECT_NE(fonts.find("DejaVuSans"), std::string::npos) << fonts;
+    const auto [text_ok, text] = dragon_test::shell_output("pdftotext " + (dir / "fig4_first_contact.pdf").string() + " -");
+    ASSERT_TRUE(text_ok);
+    EXPECT_NE(text.find("龙头"), std::string::npos) << text;  // the legend, as real text
 }
 
 }  // namespace

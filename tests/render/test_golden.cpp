@@ -1,8 +1,11 @@
-// Golden images of fixed scenes, 256 x 256, no text (so no font enters the comparison).
+// Golden images of fixed scenes, 256 x 256, no text (so no font enters the comparison); and one
+// in Chinese, its text drawn from outlines in the fonts scripts/install-deps.sh installs (DejaVu
+// Sans, Noto Sans CJK SC), so that real glyphs, not empty boxes, are what it holds.
 // File names carry the parameters. DRAGON_REBASELINE=1 rewrites the references.
 #include <gtest/gtest.h>
 
 #include "render/cairo_handles.hpp"
+#include "dragon/analyses.hpp"
 #include "dragon/render.hpp"
 #include "golden.hpp"
 
@@ -70,6 +73,32 @@ TEST(Golden, CloseViewWithCollisionMarkLight) {
     o.collision = CollisionMark{1, nearest, 0.5 * (f.benches[0].centre + f.benches[nearest - 1].centre)};
     o.highlight_benches = {nearest - 1, nearest + 1};
     expect_golden(make_scene(sim, f, o), "spiral_t300_light_head6m_collision-nearest_256x256.png");
+}
+
+// The first contact in Chinese: the annotation, the legend, the touching benches' names and a
+// caption, each in the contest's terms (龙头, 龙身, 龙尾, 调头空间, 板凳).
+TEST(Golden, FirstContactInChinese) {
+    const Simulation sim(Scenario{});
+    const Contact c = *first_contact_of_motion(sim).contact;
+    SceneOptions o;
+    o.theme = theme("light");
+    o.language = Language::zh;
+    o.camera = Camera::at(c.point, 5.0);
+    o.collision = CollisionMark{c.bench_a, c.bench_b, c.point};
+    o.name_touching = true;
+    o.show_legend = true;
+    o.title_band = true;
+    Scene scene = make_scene(sim, c.frame, o);
+    scene.captions.push_back({"\u9f99\u5934\u4e0e\u9f99\u8eab\u76f8\u78b0", 1.0});  // 龙头与龙身相碰
+    constexpr int w = 480, h = 360;
+    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h));
+    cairo::Context cr = cairo::make_context(surface.get());
+    test::outline_fonts(cr.get());
+    draw(cr.get(), scene, w, h);
+    ASSERT_EQ(cairo_status(cr.get()), CAIRO_STATUS_SUCCESS);
+    const auto r = test::compare_golden(surface.get(), "contact_zh_legend_names_caption_480x360.png");
+    if (r.rebaselined) std::printf("%s\n", r.message.c_str());
+    EXPECT_TRUE(r.ok) << r.message;
 }
 
 }  // namespace
