@@ -24,7 +24,7 @@ struct FiguresOptions {
     double scale = 1.0;
     std::vector<std::string> only;
     bool list = false;
-    bool titles = false, no_titles = false;
+    bool titles = false, no_titles = false, data = false;
     std::string lang = "en";
     bool quiet = false;
 };
@@ -52,6 +52,8 @@ void register_figures(CLI::App& app, Registry& reg) {
         ->excludes(list);
     opt->print.add_to(sub);
     add_language_flag(sub, opt->lang);
+    sub->add_flag("--data", opt->data, "Also write beside each figure, as NAME.csv, the numbers it draws (a header with "
+                                       "each column's unit): to redraw it in a paper's own style");
     auto* titles = sub->add_flag("--titles", opt->titles, "Titles and notes on the figures at a print size too (on "
                                                           "screen they are there by default)");
     sub->add_flag("--no-titles", opt->no_titles, "No titles or notes on the figures (at a print size the default: a "
@@ -74,6 +76,7 @@ void register_figures(CLI::App& app, Registry& reg) {
         fo.format = opt->format;
         fo.print = opt->print.resolve();
         fo.language = parse_language(opt->lang);
+        fo.data = opt->data;
         if (opt->titles) fo.titles = true;
         if (opt->no_titles) fo.titles = false;
         if (fo.print && opt->scale != 1.0)

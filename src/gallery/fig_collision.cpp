@@ -86,6 +86,16 @@ void broad_phase(const Context& c, const std::string& path) {
                                          focus), th.head, 14, 6, -8));
     s.labels.push_back(label({x1, r.centre.y() - 0.42 * extent}, c.say("sweep band on x", "x 方向扫描带"), th.text, 14, 6, 0));
     write_scene(c, s, 900, 900, path);
+    FigureData data{{"bench", "centre x (m)", "centre y (m)", "half diagonal (m)", "candidate"}, {}};
+    for (std::size_t k = 0; k < f.benches.size(); ++k) {
+        const Rect& b = f.benches[k];
+        const int bench = static_cast<int>(k) + 1;
+        if (distance(b.centre, r.centre) > extent) continue;  // out of the picture
+        const bool candidate = std::find(candidates.begin(), candidates.end(), bench) != candidates.end();
+        data.add({std::to_string(bench), num(b.centre.x()), num(b.centre.y()), num(half_diagonal(b)),
+                  bench == focus ? "focus" : candidate ? "1" : "0"});
+    }
+    write_data(c, path, data);
 }
 
 void first_contact_zoom(const Context& c, const std::string& path) {
@@ -104,6 +114,7 @@ void first_contact_zoom(const Context& c, const std::string& path) {
                                                        "无碰撞：{} 节{}中没有两节不共用把手的板凳")),
                                     f.benches.size(), f.benches.size() == 1 ? c.say("bench has", "板凳") : c.say("benches has", "板凳"));
         write_scene(c, make_scene(sim, f, so), 1000, 1000, path);
+        write_data(c, path, FigureData{{"bench", "corner", "x (m)", "y (m)"}, {}});
         return;
     }
     const Rect& a = f.benches[bench_a - 1];
@@ -165,6 +176,14 @@ void first_contact_zoom(const Context& c, const std::string& path) {
             s.labels.push_back(l);
         }
     write_scene(c, s, 1000, 1000, path);
+    FigureData data{{"bench", "corner", "x (m)", "y (m)"}, {}};
+    for (int bench : {bench_a, bench_b}) {
+        const Corners k = corners(f.benches[static_cast<std::size_t>(bench - 1)]);
+        for (std::size_t i = 0; i < 4; ++i)
+            data.add({std::to_string(bench), std::to_string(i + 1), num(k.p[i].x()), num(k.p[i].y())});
+    }
+    data.add({hit ? "contact" : "closest", "", num(p.x()), num(p.y())});
+    write_data(c, path, data);
 }
 
 // Panel pitches a round step apart around `centre`, none below `lo`: three below it and three
@@ -191,6 +210,7 @@ void pitch_states(const Context& c, const std::string& path) {
     const int decimals = std::max(3, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
     std::vector<Scene> panels;
     std::vector<std::string> captions;
+    FigureData data{{"pitch (m)", "touch", "bench a", "bench b", "t (s)", "head radius (m)"}, {}};
     for (double pitch : pitches) {
         Scenario sc = c.base;
         sc.path.pitch = pitch;
@@ -205,11 +225,14 @@ void pitch_states(const Context& c, const std::string& path) {
             f = hit->frame;
             const Vec2 q = contact_point(f.benches[hit->bench_a - 1], f.benches[hit->bench_b - 1]);
             so.collision = CollisionMark{hit->bench_a, hit->bench_b, q};
+            data.add({num(pitch), "1", std::to_string(hit->bench_a), std::to_string(hit->bench_b), num(hit->time),
+                      num(hit->head_radius)});
             captions.push_back(fmt::format(fmt::runtime(c.say("pitch {:.{}f} m: benches {} and {} touch at t = {:.2f} s",
                                                               "螺距 {:.{}f} m：第 {} 与第 {} 节在 t = {:.2f} s 相碰")),
                                            pitch, decimals, hit->bench_a, hit->bench_b, hit->time));
         } else {
             f = sim.frame(boundary_time(sim));
+            data.add({num(pitch), "0", "", "", num(f.time), num(radius)});
             captions.push_back(fmt::format(fmt::runtime(c.say("pitch {:.{}f} m: the head reaches r = {:g} m, no contact",
                                                               "螺距 {:.{}f} m：龙头到达 r = {:g} m，无碰撞")),
                                            pitch, decimals, radius));
@@ -293,6 +316,7 @@ void pitch_states(const Context& c, const std::string& path) {
             render::text(cr, th.font, fitted.size, gap + inner, title_top * 0.7 + line_h * static_cast<double>(i),
                          fitted.lines[i], 0.0, 0.0, true);
     }, page);
+    write_data(c, path, data);
 }
 
 void clearance_over_time(const Context& c, const std::string& path) {
@@ -306,6 +330,7 @@ void clearance_over_time(const Context& c, const std::string& path) {
     p.y_label = c.say("clearance (m)", "间隙 (m)");
     p.legend = Plot::Legend::none;
     PlotSeries s{"", {}, series_colour(p.theme, 0), 1.6};
+    FigureData data{{"t (s)", "clearance (m)", "bench a", "bench b"}, {}};
     Clearance least{std::numeric_limits<double>::infinity(), 0, 0, Vec2::Zero(), Vec2::Zero()};
     double least_t = span.from;
     Frame f;
@@ -314,6 +339,7 @@ void clearance_over_time(const Context& c, const std::string& path) {
         const Clearance cl = clearance(f);
         if (!std::isfinite(cl.distance)) return;  // fewer than three benches: no pair
         s.points.push_back({t, cl.distance});
+        data.add({num(t), num(cl.distance), std::to_string(cl.bench_a), std::to_string(cl.bench_b)});
         if (cl.distance < least.distance) least = cl, least_t = t;
     };
     // 400 samples over the run, and 300 more over its last 1.5 %, where the gap closes.
@@ -354,6 +380,7 @@ void clearance_over_time(const Context& c, const std::string& path) {
     p.y_min = -0.1 * (top > 0 ? top : 0.2);
     if (s.points.empty()) p.y_max = 1.0;
     write_plot(c, p, 1000, 600, path);
+    write_data(c, path, data);
 }
 
 }  // namespace dragon::fig

@@ -82,8 +82,14 @@ void link_geometry(const Context& c, const std::string& path) {
     // The circle of radius d1 about handle 0 and every point where it meets the path.
     s.polylines.push_back(circle(h0, d1, soft, 1.2, true));
     const double s_head = f.head_arc;
+    FigureData data{{"point", "x (m)", "y (m)", "speed (m/s)", "tangent x", "tangent y"}, {}};
+    for (int i = 0; i <= 2; ++i) {
+        const Handle& h = f.handles[static_cast<std::size_t>(i)];
+        data.add({fmt::format("handle {}", i), num(h.pos.x()), num(h.pos.y()), num(h.speed), num(h.tangent.x()), num(h.tangent.y())});
+    }
     for (Vec2 r : chord_roots(sim.path(), h0, d1, s_head - 80.0, std::min(sim.path().s_max(), s_head + 40.0))) {
         const bool chosen = distance(r, h1) < 1e-6;
+        data.add({chosen ? "root chosen (handle 1)" : "other root", num(r.x()), num(r.y()), "", "", ""});
         s.markers.push_back({r, chosen ? accent : soft, chosen ? 6.0 : 5.0, true});
     }
     // At a print size the labels are shorter: the paper's caption says the rest.
@@ -123,6 +129,7 @@ void link_geometry(const Context& c, const std::string& path) {
     s.labels.push_back(label(h2, c.say("handle 2", "把手 2"), ink, 13, 10, -8));
 
     write_scene(c, s, 1000, 1000, path);
+    write_data(c, path, data);
 }
 
 }  // namespace dragon::fig

@@ -33,18 +33,23 @@ void speeds_by_handle(const Context& c, const std::string& path) {
     // Q1's six moments (0, 60, ..., 300 m of head travel: seconds at 1 m/s), spread over a shorter
     // run if the dragon stops sooner.
     const TimeSpan span = shown_span(sim, 0.0, sim.time_of(300.0), c.answers->contact());
+    FigureData data{{"t (s)", "handle", "speed (m/s)"}, {}};
     for (int i = 0; i <= 5; ++i) {
         const double t = span.from + (span.to - span.from) * i / 5;
         const Frame f = sim.frame(t);
         PlotSeries s;
         s.label = fmt::format("t = {} s", seconds(t));
         s.colour = series_colour(p.theme, i);
-        for (std::size_t k = 0; k < f.handles.size(); ++k) s.points.push_back({double(k), f.handles[k].speed});
+        for (std::size_t k = 0; k < f.handles.size(); ++k) {
+            s.points.push_back({double(k), f.handles[k].speed});
+            data.add({num(t), std::to_string(k), num(f.handles[k].speed)});
+        }
         p.series.push_back(std::move(s));
     }
     p.x_min = 0;
     p.x_max = static_cast<double>(c.base.bench.bench_count);
     write_plot(c, p, 1000, 600, path);
+    write_data(c, path, data);
 }
 
 void s_curve_geometry(const Context& c, const std::string& path) {
@@ -108,6 +113,24 @@ void s_curve_geometry(const Context& c, const std::string& path) {
     point({0, 0}, "O", soft, 6, 16);
     p.x_min = -R - 1.2, p.x_max = R + 1.2, p.y_min = -R - 1.2, p.y_max = R + 1.2;
     write_plot(c, p, 900, 860, path);
+    // The curve's pieces as drawn (arc position s along the turnaround path, 0 at A), then its
+    // named points.
+    FigureData data{{"piece", "s (m)", "x (m)", "y (m)"}, {}};
+    const auto piece = [&](const char* name, double s0, double s1, int n) {
+        for (int i = 0; i <= n; ++i) {
+            const double s = s0 + (s1 - s0) * i / n;
+            const Vec2 q = tp.at_arc(s).pos;
+            data.add({name, num(s), num(q.x()), num(q.y())});
+        }
+    };
+    piece("coil-in spiral", -turn, 0, 400);
+    piece("arc 1", 0, d.length1, 200);
+    piece("arc 2", d.length1, d.length, 200);
+    piece("coil-out spiral", d.length, d.length + turn, 400);
+    for (const auto& [name, q] : {std::pair<const char*, Vec2>{"A (entry)", d.entry}, {"joint", d.joint}, {"B (exit)", d.exit},
+                                  {"C1 (centre of arc 1)", d.c1}, {"C2 (centre of arc 2)", d.c2}})
+        data.add({name, "", num(q.x()), num(q.y())});
+    write_data(c, path, data);
 }
 
 void speed_ratio_on_turnaround(const Context& c, const std::string& path) {
@@ -122,11 +145,13 @@ void speed_ratio_on_turnaround(const Context& c, const std::string& path) {
     p.y_label = c.print() ? c.say("speed ratio", "速度比") : c.say("max handle speed / head speed", "把手最大速度 / 龙头速度");
     p.legend = Plot::Legend::none;
     PlotSeries s{"", {}, series_colour(p.theme, 0), 1.6};
+    FigureData data{{"t (s)", "speed ratio (max handle speed / head speed)"}, {}};
     // Q4's window, 100 m of head travel either side of the turn (100 s at 1 m/s), 1600 samples.
     const TimeSpan span = shown_span(sim, sim.time_of(-100.0), sim.time_of(100.0), std::nullopt);
     for (int i = 0; i <= 1600; ++i) {
         const double t = span.from + (span.to - span.from) * i / 1600;
         s.points.push_back({t, speed_ratio_at(sim.path(), sc.bench, sim.head_arc(t)).ratio});
+        data.add({num(t), num(s.points.back().y())});
     }
     p.series.push_back(s);
     p.ref_lines.push_back({true, 0.0, fmt::format(fmt::runtime(c.say("S-curve: 0 to {:.1f} s", "S 形曲线：0 至 {:.1f} s")),
@@ -150,6 +175,7 @@ void speed_ratio_on_turnaround(const Context& c, const std::string& path) {
                                             "每 {:g} s 采样一次；最大值经细化（{}）。龙头速度上限：2 / {:.6f} = {:.6f} m/s。")),
                          (span.to - span.from) / 1600, who, q5.ratio, q5.max_head_speed);
     write_plot(c, p, 1000, 600, path);
+    write_data(c, path, data);
 }
 
 }  // namespace dragon::fig

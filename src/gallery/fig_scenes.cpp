@@ -9,6 +9,16 @@
 
 namespace dragon::fig {
 
+namespace {
+// Every handle of the frame: where it is and how fast it moves.
+FigureData handle_table(const Frame& f) {
+    FigureData d{{"t (s)", "handle", "x (m)", "y (m)", "speed (m/s)"}, {}};
+    for (std::size_t k = 0; k < f.handles.size(); ++k)
+        d.add({num(f.time), std::to_string(k), num(f.handles[k].pos.x()), num(f.handles[k].pos.y()), num(f.handles[k].speed)});
+    return d;
+}
+}  // namespace
+
 void dragon_at_300s(const Context& c, const std::string& path) {
     const Simulation sim(c.base);
     // Q1's last moment, or the first contact if it comes sooner (the dragon stops there).
@@ -35,6 +45,7 @@ void dragon_at_300s(const Context& c, const std::string& path) {
     s.labels.push_back(tl);
     // Coloured by speed: a full palette keeps the colour map smooth.
     write_scene(c, s, 1100, 1000, path, 256);
+    write_data(c, path, handle_table(f));
 }
 
 void turnaround_scene(const Context& c, const std::string& path) {
@@ -59,6 +70,7 @@ void turnaround_scene(const Context& c, const std::string& path) {
                            "龙头板凳在转动：其后的把手速度高达 {:.3f} m/s，而龙头保持 {:g} m/s")),
         t, sc.path.turn_pitch, fastest, sc.head_speed);
     write_scene(c, make_scene(sim, f, so), 1000, 1000, path, 256);
+    write_data(c, path, handle_table(f));
 }
 
 }  // namespace dragon::fig

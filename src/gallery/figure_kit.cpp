@@ -1,6 +1,11 @@
 #include "gallery/figure_kit.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
 #include <cmath>
 #include <numbers>
 
@@ -94,6 +99,35 @@ void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, const std::vecto
         draw(cr, panels[i], pw, ph);
         cairo_restore(cr);
     }
+}
+
+std::string num(double v) { return std::isfinite(v) ? fmt::format("{}", v) : std::string(); }
+
+void write_data(const Context& c, const std::string& figure_path, const FigureData& data) {
+    if (!c.opt.data) return;
+    std::filesystem::path path(figure_path);
+    path.replace_extension(".csv");
+    // Fields are numbers and plain words; one holding a comma or a quote is quoted.
+    const auto field = [](const std::string& f) {
+        if (f.find_first_of(",\"\n") == std::string::npos) return f;
+        std::string q = "\"";
+        for (char ch : f) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+        return q + "\"";
+    };
+    std::string text;
+    const auto line = [&](const std::vector<std::string>& row) {
+        for (std::size_t i = 0; i < row.size(); ++i) text += (i ? "," : "") + field(row[i]);
+        text += "\n";
+    };
+    line(data.header);
+    for (const auto& row : data.rows) line(row);
+    AtomicFile out(path.string());
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(out.temp_path().c_str(), "wb"), &std::fclose);
+    if (!f) throw out.write_error(std::strerror(errno));
+    if (std::fwrite(text.data(), 1, text.size(), f.get()) != text.size() || std::fflush(f.get()) != 0)
+        throw out.write_error(std::strerror(errno));
+    if (std::fclose(f.release()) != 0) throw out.write_error(std::strerror(errno));
+    out.commit();
 }
 
 SceneOptions Context::scene_options() const {

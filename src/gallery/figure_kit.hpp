@@ -45,6 +45,18 @@ struct Context {
     void tell(const Plot& plot) const;
 };
 
+// The numbers a figure draws, written beside it as CSV when FigureOptions::data asks: a header
+// of column names with their units, then the rows. Numbers are written as the shortest decimal
+// that reads back as the same double.
+struct FigureData {
+    std::vector<std::string> header;
+    std::vector<std::vector<std::string>> rows;
+    void add(std::vector<std::string> row) { rows.push_back(std::move(row)); }
+};
+std::string num(double v);
+// <figure path less its extension>.csv, all-or-nothing, when c.opt.data (nothing otherwise).
+void write_data(const Context& c, const std::string& figure_path, const FigureData& data);
+
 // A straight line from a to b (world units).
 Polyline segment(const Vec2& a, const Vec2& b, Rgba colour, double width_px, bool dashed = false);
 // A circle as a closed polyline (world units).

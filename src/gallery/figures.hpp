@@ -27,6 +27,10 @@ struct FigureOptions {
     // Titles and notes on the figures. Unset: on screen yes, at a print size no (a paper sets
     // its own caption under a figure; the words stay in the figure's data file, see `data`).
     std::optional<bool> titles;
+    // Also write beside each figure, as <name>.csv, the numbers it draws (one header line, each
+    // column's unit in it: "t (s)", "clearance (m)"), so that a paper can redraw it in its own
+    // style.
+    bool data = false;
     // The language of every word the figures draw (titles, notes, labels, legends, axis names).
     Language language = Language::en;
     // Hears every text each figure puts on its picture (titles, notes, captions, labels, axis
