@@ -41,7 +41,7 @@ DEFAULTED_EQUALITY = re.compile(r"^(\s*)(bool operator==\(.*\) const = default;)
 
 def group_declarations(out):
     """Wraps each run of two or more one-line declarations that follows a /// block (no blank
-    line, no comment between) in a member group, marked inline so that no line moves."""
+    line, no comment between) in a member group."""
     i = 0
     while i < len(out):
         if out[i].lstrip().startswith("///") and not out[i].lstrip().startswith("///<"):
@@ -52,10 +52,16 @@ def group_declarations(out):
             while k < len(out) and DECLARATION.match(out[k]) and "///<" not in out[k]:
                 k += 1
             if k - (j + 1) >= 2:
-                first, last = j + 1, k - 1
-                indent = len(out[first]) - len(out[first].lstrip())
-                out[first] = out[first][:indent] + "/*@{*/ " + out[first][indent:]
-                out[last] = out[last] + " /*@}*/"
+                # The group opens on a line of its own before the comment (a blank line there
+                # takes it, so no line moves), so the comment documents its first member and
+                # DISTRIBUTE_GROUP_DOC hands that to the rest.
+                indent = out[i][: len(out[i]) - len(out[i].lstrip())]
+                out[k - 1] = out[k - 1] + " ///@}"
+                if i > 0 and not out[i - 1].strip():
+                    out[i - 1] = indent + "///@{"
+                else:
+                    out.insert(i, indent + "///@{")
+                    k += 1
             i = k
         else:
             i += 1
