@@ -181,12 +181,12 @@ void write_sweep_map(const SweepMap& map, const std::string& path) {
     AtomicFile out(path);
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
     if (const cairo_status_t st = cairo_surface_status(surface.get()))
-        throw std::runtime_error(fmt::format("creating the image surface: {}", cairo_status_to_string(st)));
+        throw SolverError(fmt::format("creating the image surface: {}", cairo_status_to_string(st)));
     {
         cairo::Context cr = cairo::make_context(surface.get());
         paint(cr.get());
         if (const cairo_status_t st = cairo_status(cr.get()))
-            throw std::runtime_error(fmt::format("drawing the map: {}", cairo_status_to_string(st)));
+            throw SolverError(fmt::format("drawing the map: {}", cairo_status_to_string(st)));
     }
     errno = 0;
     if (const cairo_status_t st = cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()))
