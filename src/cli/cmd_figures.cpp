@@ -3,11 +3,11 @@
 
 #include <fmt/format.h>
 
-#include "cli/asset_dir.hpp"
-#include "cli/commands.hpp"
-#include "cli/progress.hpp"
-#include "cli/scenario_flags.hpp"
-#include "cli/status.hpp"
+#include "asset_dir.hpp"
+#include "commands.hpp"
+#include "progress.hpp"
+#include "scenario_flags.hpp"
+#include "status.hpp"
 #include "gallery/figures.hpp"
 
 namespace dragon::cli {

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "dragon/plot.hpp"
-#include "render/map_panels.hpp"
+#include "map_panels.hpp"
 
 namespace dragon::render {
 

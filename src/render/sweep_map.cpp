@@ -12,7 +12,7 @@
 #include "dragon/atomic_file.hpp"
 #include "render/cairo_handles.hpp"
 #include "dragon/scenario.hpp"
-#include "render/map_panels.hpp"
+#include "map_panels.hpp"
 #include "render/paint.hpp"
 #include "render/vector_out.hpp"
 

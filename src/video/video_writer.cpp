@@ -9,12 +9,12 @@
 #include <fmt/format.h>
 
 #include "dragon/atomic_file.hpp"
-#include "video/av_handles.hpp"
+#include "av_handles.hpp"
 #include "dragon/scenario.hpp"
 #include "dragon/video.hpp"
-#include "video/av_error.hpp"
-#include "video/palette.hpp"
-#include "video/yuv_convert.hpp"
+#include "av_error.hpp"
+#include "palette.hpp"
+#include "yuv_convert.hpp"
 
 namespace dragon {
 
