@@ -18,6 +18,24 @@ fi
 "$work/core/frame_handles" | grep -q "handle 101  x  -6.237722  y   3.936008" \
   || { echo "test-consumer: frame_handles printed a wrong handle 101" >&2; exit 1; }
 
+# A machine without FFmpeg, Cairo or libxlsxwriter (pkg-config sees only toml++): the core is still
+# found; the video component is not, and says why.
+mkdir -p "$work/pc" "$work/probe"
+cp "$(pkg-config --variable=pcfiledir tomlplusplus)/tomlplusplus.pc" "$work/pc/"
+cat > "$work/probe/CMakeLists.txt" <<'PROBE'
+cmake_minimum_required(VERSION 3.25)
+project(probe CXX)
+find_package(benchdragon REQUIRED COMPONENTS core)
+find_package(benchdragon COMPONENTS video)
+if(benchdragon_video_FOUND OR NOT benchdragon_video_NOT_FOUND_MESSAGE MATCHES "libav|render")
+  message(FATAL_ERROR "video found, or not found without saying why: ${benchdragon_video_NOT_FOUND_MESSAGE}")
+endif()
+message(STATUS "probe: core found; video not found: ${benchdragon_video_NOT_FOUND_MESSAGE}")
+PROBE
+probe=$(PKG_CONFIG_LIBDIR="$work/pc" cmake -S "$work/probe" -B "$work/probe/build" -DCMAKE_PREFIX_PATH="$work/prefix" 2>&1) \
+  && grep -q "probe: core found; video not found" <<<"$probe" \
+  || { echo "test-consumer: find_package(benchdragon COMPONENTS core) failed without FFmpeg:" >&2; echo "$probe" >&2; exit 1; }
+
 cmake -S examples -B "$work/all" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
 cmake --build "$work/all" >/dev/null
 (cd "$work" && "$work/all/moment_png" "$work/moment.png" >/dev/null && "$work/all/ten_second_film" "$work/film.mp4" >/dev/null)
@@ -32,4 +50,5 @@ fi
 env -u DRAGON_ASSETS "$work/prefix/bin/dragon" render --time 10 --theme dark --size 64x64 -q -o "$work/dark.png"
 test -s "$work/dark.png" || { echo "test-consumer: the installed dragon drew nothing" >&2; exit 1; }
 echo "test-consumer: the installed package builds the examples; the core one links no Cairo, FFmpeg or libxlsxwriter;"
+echo "test-consumer: without FFmpeg, Cairo or libxlsxwriter the core component is still found;"
 echo "test-consumer: the installed dragon finds its assets beside it and holds no source path"

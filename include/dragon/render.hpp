@@ -50,8 +50,8 @@ struct Theme {
 };
 
 // Where to find assets (themes, scenarios): `hint` if not empty, else $DRAGON_ASSETS, else the
-// install dir (<prefix>/share/benchdragon). Throws
-// std::runtime_error if none holds a themes/ folder.
+// install dir (<prefix>/share/benchdragon). Throws FileError (naming the folders tried) if none
+// holds a themes/ folder.
 std::string find_asset_dir(const std::string& hint = "");
 // "light", "dark" (assets/themes/<name>.toml) or a path to a .toml file. Keys missing from the
 // file keep the light theme's values. Throws InputError for an unknown name or a bad file.

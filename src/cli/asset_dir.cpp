@@ -1,4 +1,4 @@
-#include "cli/asset_dir.hpp"
+#include "asset_dir.hpp"
 
 #include <cstdlib>
 #include <filesystem>

@@ -2,11 +2,11 @@
 #include <fmt/format.h>
 
 #include "dragon/answers.hpp"
-#include "cli/commands.hpp"
-#include "cli/report.hpp"
-#include "cli/scenario_flags.hpp"
-#include "cli/status.hpp"
-#include "cli/window_flags.hpp"
+#include "commands.hpp"
+#include "report.hpp"
+#include "scenario_flags.hpp"
+#include "status.hpp"
+#include "window_flags.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/tables.hpp"

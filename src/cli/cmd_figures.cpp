@@ -3,13 +3,13 @@
 
 #include <fmt/format.h>
 
-#include "cli/asset_dir.hpp"
-#include "cli/commands.hpp"
-#include "cli/print_flags.hpp"
-#include "cli/render_flags.hpp"
-#include "cli/progress.hpp"
-#include "cli/scenario_flags.hpp"
-#include "cli/status.hpp"
+#include "asset_dir.hpp"
+#include "commands.hpp"
+#include "progress.hpp"
+#include "scenario_flags.hpp"
+#include "status.hpp"
+#include "print_flags.hpp"
+#include "render_flags.hpp"
 #include "gallery/figures.hpp"
 
 namespace dragon::cli {

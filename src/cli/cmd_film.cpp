@@ -5,12 +5,12 @@
 
 #include <fmt/format.h>
 
-#include "cli/asset_dir.hpp"
-#include "cli/wording.hpp"
-#include "cli/commands.hpp"
-#include "cli/print_flags.hpp"
-#include "cli/progress.hpp"
-#include "cli/status.hpp"
+#include "asset_dir.hpp"
+#include "wording.hpp"
+#include "commands.hpp"
+#include "progress.hpp"
+#include "status.hpp"
+#include "print_flags.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/film.hpp"
 #include "dragon/language.hpp"

@@ -5,12 +5,12 @@
 #include <fmt/format.h>
 
 #include "dragon/answers.hpp"
-#include "cli/commands.hpp"
-#include "cli/progress.hpp"
-#include "cli/report.hpp"
-#include "cli/scenario_flags.hpp"
-#include "cli/wording.hpp"
-#include "cli/status.hpp"
+#include "commands.hpp"
+#include "progress.hpp"
+#include "report.hpp"
+#include "scenario_flags.hpp"
+#include "wording.hpp"
+#include "status.hpp"
 #include "dragon/analyses.hpp"
 
 namespace dragon::cli {

@@ -3,12 +3,12 @@
 
 #include <fmt/format.h>
 
-#include "cli/commands.hpp"
-#include "cli/print_flags.hpp"
-#include "cli/render_flags.hpp"
-#include "cli/report.hpp"
-#include "cli/scenario_flags.hpp"
-#include "cli/status.hpp"
+#include "commands.hpp"
+#include "render_flags.hpp"
+#include "report.hpp"
+#include "scenario_flags.hpp"
+#include "status.hpp"
+#include "print_flags.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/render.hpp"

@@ -3,12 +3,12 @@
 
 #include <fmt/format.h>
 
-#include "cli/commands.hpp"
-#include "cli/report.hpp"
-#include "cli/scenario_flags.hpp"
-#include "cli/status.hpp"
-#include "cli/window_flags.hpp"
-#include "cli/wording.hpp"
+#include "commands.hpp"
+#include "report.hpp"
+#include "scenario_flags.hpp"
+#include "status.hpp"
+#include "window_flags.hpp"
+#include "wording.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/tables.hpp"

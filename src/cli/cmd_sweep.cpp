@@ -8,15 +8,15 @@
 
 #include <fmt/format.h>
 
-#include "cli/commands.hpp"
-#include "cli/scenario_flags.hpp"
-#include "cli/status.hpp"
-#include "cli/sweep_merge.hpp"
-#include "cli/print_flags.hpp"
-#include "cli/render_flags.hpp"
-#include "cli/sweep_plot.hpp"
-#include "cli/sweep_run.hpp"
-#include "cli/wording.hpp"
+#include "commands.hpp"
+#include "scenario_flags.hpp"
+#include "status.hpp"
+#include "sweep_merge.hpp"
+#include "sweep_plot.hpp"
+#include "sweep_run.hpp"
+#include "wording.hpp"
+#include "print_flags.hpp"
+#include "render_flags.hpp"
 #include "dragon/atomic_file.hpp"
 
 namespace dragon::cli {

@@ -1,4 +1,4 @@
-#include "cli/command_line.hpp"
+#include "command_line.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "cli/scenario_flags.hpp"
+#include "scenario_flags.hpp"
 #include "dragon/input_file.hpp"
 
 namespace dragon::cli {

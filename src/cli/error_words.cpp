@@ -1,11 +1,11 @@
-#include "cli/error_words.hpp"
+#include "error_words.hpp"
 
 #include <map>
 #include <utility>
 
 #include <fmt/format.h>
 
-#include "cli/report.hpp"
+#include "report.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/chain.hpp"

@@ -1,4 +1,4 @@
-#include "cli/kill_cleanup.hpp"
+#include "kill_cleanup.hpp"
 
 #include <signal.h>
 

@@ -8,12 +8,12 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "cli/asset_dir.hpp"
-#include "cli/command_line.hpp"
-#include "cli/commands.hpp"
-#include "cli/error_words.hpp"
-#include "cli/kill_cleanup.hpp"
-#include "cli/status.hpp"
+#include "asset_dir.hpp"
+#include "command_line.hpp"
+#include "commands.hpp"
+#include "error_words.hpp"
+#include "kill_cleanup.hpp"
+#include "status.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/input_file.hpp"
 #include "dragon/scenario.hpp"

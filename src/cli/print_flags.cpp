@@ -1,4 +1,4 @@
-#include "cli/print_flags.hpp"
+#include "print_flags.hpp"
 
 #include <fmt/format.h>
 

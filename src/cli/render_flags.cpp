@@ -1,5 +1,5 @@
-#include "cli/asset_dir.hpp"
-#include "cli/render_flags.hpp"
+#include "asset_dir.hpp"
+#include "render_flags.hpp"
 
 #include <cmath>
 

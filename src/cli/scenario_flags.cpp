@@ -1,4 +1,4 @@
-#include "cli/scenario_flags.hpp"
+#include "scenario_flags.hpp"
 
 #include <algorithm>
 #include <cmath>

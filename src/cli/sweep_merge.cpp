@@ -1,4 +1,4 @@
-#include "cli/sweep_merge.hpp"
+#include "sweep_merge.hpp"
 
 #include <cerrno>
 #include <cstdint>
@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/sweep_row_check.hpp"
+#include "sweep_row_check.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/input_file.hpp"
 

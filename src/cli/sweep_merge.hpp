@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/sweep_setup.hpp"
+#include "sweep_setup.hpp"
 
 namespace dragon::cli {
 

@@ -1,4 +1,4 @@
-#include "cli/sweep_plot.hpp"
+#include "sweep_plot.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "cli/wording.hpp"
+#include "wording.hpp"
 
 namespace dragon::cli {
 

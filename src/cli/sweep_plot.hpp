@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/sweep_setup.hpp"
+#include "sweep_setup.hpp"
 #include "dragon/sweep_map.hpp"
 
 namespace dragon::cli {

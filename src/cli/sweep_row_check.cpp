@@ -1,4 +1,4 @@
-#include "cli/sweep_row_check.hpp"
+#include "sweep_row_check.hpp"
 
 #include <fmt/format.h>
 

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "cli/sweep_setup.hpp"
+#include "sweep_setup.hpp"
 
 namespace dragon::cli {
 

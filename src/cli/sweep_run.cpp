@@ -1,4 +1,4 @@
-#include "cli/sweep_run.hpp"
+#include "sweep_run.hpp"
 
 #include <sys/stat.h>
 
@@ -9,10 +9,10 @@
 
 #include <fmt/format.h>
 
-#include "cli/progress.hpp"
-#include "cli/status.hpp"
-#include "cli/wording.hpp"
-#include "cli/sweep_row_check.hpp"
+#include "progress.hpp"
+#include "status.hpp"
+#include "wording.hpp"
+#include "sweep_row_check.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/input_file.hpp"
 

@@ -5,7 +5,7 @@
 #include <functional>
 #include <string>
 
-#include "cli/sweep_setup.hpp"
+#include "sweep_setup.hpp"
 
 namespace dragon::cli {
 

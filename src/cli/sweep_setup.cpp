@@ -1,4 +1,4 @@
-#include "cli/sweep_setup.hpp"
+#include "sweep_setup.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "cli/window_flags.hpp"
+#include "window_flags.hpp"
 #include "dragon/input_file.hpp"
 
 namespace dragon::cli {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/report.hpp"
-#include "cli/scenario_flags.hpp"
+#include "report.hpp"
+#include "scenario_flags.hpp"
 #include "dragon/sweep_setup.hpp"
 
 namespace dragon::cli {

@@ -1,4 +1,4 @@
-#include "cli/window_flags.hpp"
+#include "window_flags.hpp"
 
 #include <cctype>
 #include <cmath>

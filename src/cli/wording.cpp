@@ -1,4 +1,4 @@
-#include "cli/wording.hpp"
+#include "wording.hpp"
 
 #include <vector>
 

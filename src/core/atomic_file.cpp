@@ -14,9 +14,9 @@
 
 #include <fmt/format.h>
 
-#include "core/file_placement.hpp"
-#include "core/live_temp_files.hpp"
-#include "core/run_outputs.hpp"
+#include "file_placement.hpp"
+#include "live_temp_files.hpp"
+#include "run_outputs.hpp"
 #include "dragon/input_file.hpp"
 
 namespace dragon {

@@ -8,9 +8,9 @@
 
 #include <fmt/format.h>
 
-#include "core/chain_front.hpp"
-#include "core/jam_walk.hpp"
-#include "core/make_path.hpp"
+#include "chain_front.hpp"
+#include "jam_walk.hpp"
+#include "make_path.hpp"
 
 namespace dragon {
 

@@ -10,6 +10,7 @@
 // h'' = 2 (|P'|^2 + (P - q) . P''), hence M = 2 (max |P'|^2 + d max |P''|) on the step.
 #pragma once
 
+#include "dragon/errors.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -36,14 +37,14 @@ struct PieceSample {
 // quadratically. Where the piece runs nearly along the chord's circle (a spiral turn round a
 // point near the centre) the curvature bound is loose and the steps shorter, so the allowance is
 // tol::max_march steps per max_step of the range: running out of it means a broken bound, a
-// bug, and throws std::logic_error rather than return a point that is not at the chord.
+// bug, and throws SolverError rather than return a point that is not at the chord.
 template <class Eval, class Bound>
 std::optional<double> march_to_chord(Eval eval, Bound bound, const Vec2& q, double chord, double u0,
                                      double dir, double u_end, double max_step) {
     const double d2 = chord * chord;
     const double allowance = tol::max_march * (1.0 + std::ceil(std::abs(u_end - u0) / max_step));
     if (!(allowance < 1e8))
-        throw std::logic_error("march_to_chord: the range to search is unbounded or too long");
+        throw SolverError("march_to_chord: the range to search is unbounded or too long");
     const long steps = static_cast<long>(allowance);
     double a = u0;
     for (long it = 0; it < steps; ++it) {
@@ -72,7 +73,7 @@ std::optional<double> march_to_chord(Eval eval, Bound bound, const Vec2& q, doub
         if (delta <= 4.0 * std::numeric_limits<double>::epsilon() * (1.0 + std::abs(a))) return next;
         a = next;
     }
-    throw std::logic_error("march_to_chord: no convergence within its allowance of steps");
+    throw SolverError("march_to_chord: no convergence within its allowance of steps");
 }
 
 // The spiral P(theta) = b theta (cos theta, sin theta) as a march piece, and the bounds

@@ -2,7 +2,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/sat.hpp"
+#include "sat.hpp"
 #include "dragon/collision.hpp"
 
 namespace dragon {

@@ -1,5 +1,5 @@
 // Bounds on how fast benches far apart can close in (contact_bounds.hpp).
-#include "core/contact_bounds.hpp"
+#include "contact_bounds.hpp"
 
 #include <algorithm>
 #include <cmath>

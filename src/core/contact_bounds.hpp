@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "core/contact_step.hpp"
-#include "core/motion.hpp"
+#include "contact_step.hpp"
+#include "motion.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/constants.hpp"
 

@@ -1,11 +1,11 @@
-#include "core/contact_step.hpp"
+#include "contact_step.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/contact_bounds.hpp"
-#include "core/corner_gaps.hpp"
-#include "core/sat.hpp"
+#include "contact_bounds.hpp"
+#include "corner_gaps.hpp"
+#include "sat.hpp"
 
 namespace dragon::contact {
 

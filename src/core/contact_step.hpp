@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/motion.hpp"
+#include "motion.hpp"
 #include "dragon/collision.hpp"
 
 namespace dragon::contact {

@@ -1,4 +1,4 @@
-#include "core/corner_gaps.hpp"
+#include "corner_gaps.hpp"
 
 #include <algorithm>
 #include <cmath>

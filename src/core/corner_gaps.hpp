@@ -7,7 +7,7 @@
 
 #include <array>
 
-#include "core/motion.hpp"
+#include "motion.hpp"
 #include "dragon/geometry.hpp"
 
 namespace dragon {

@@ -1,4 +1,4 @@
-#include "core/file_placement.hpp"
+#include "file_placement.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -14,7 +14,7 @@
 
 #include <fmt/format.h>
 
-#include "core/live_temp_files.hpp"
+#include "live_temp_files.hpp"
 #include "dragon/errors.hpp"
 #include "dragon/input_file.hpp"
 

@@ -24,8 +24,8 @@
 #include <limits>
 #include <vector>
 
-#include "core/contact_step.hpp"
-#include "core/untouched_tail.hpp"
+#include "contact_step.hpp"
+#include "untouched_tail.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/constants.hpp"
 #include "dragon/executor.hpp"

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "core/run_outputs.hpp"
+#include "run_outputs.hpp"
 
 namespace dragon {
 

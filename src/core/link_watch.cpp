@@ -1,5 +1,5 @@
-#include "core/link_watch.hpp"
-#include "core/golden_section.hpp"
+#include "link_watch.hpp"
+#include "golden_section.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "core/live_temp_files.hpp"
+#include "live_temp_files.hpp"
 
 #include <unistd.h>
 

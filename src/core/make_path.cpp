@@ -1,5 +1,5 @@
 #include "dragon/constants.hpp"
-#include "core/make_path.hpp"
+#include "make_path.hpp"
 
 #include <cmath>
 

@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "core/golden_section.hpp"
-#include "core/make_path.hpp"
+#include "golden_section.hpp"
+#include "make_path.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/turnaround.hpp"
 

@@ -10,8 +10,8 @@
 
 #include <fmt/format.h>
 
-#include "core/golden_section.hpp"
-#include "core/make_path.hpp"
+#include "golden_section.hpp"
+#include "make_path.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/constants.hpp"
 

@@ -1,4 +1,4 @@
-#include "core/motion.hpp"
+#include "motion.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "core/run_outputs.hpp"
+#include "run_outputs.hpp"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "core/live_temp_files.hpp"
+#include "live_temp_files.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/input_file.hpp"
 

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "core/file_placement.hpp"
+#include "file_placement.hpp"
 
 namespace dragon::run_outputs {
 

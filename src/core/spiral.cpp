@@ -6,7 +6,7 @@
 #include "dragon/constants.hpp"
 #include "dragon/path.hpp"
 #include "dragon/scenario.hpp"
-#include "core/chord_march.hpp"
+#include "chord_march.hpp"
 
 namespace dragon {
 

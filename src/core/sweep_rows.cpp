@@ -11,8 +11,8 @@
 
 #include <fmt/format.h>
 
-#include "core/file_placement.hpp"
-#include "core/run_outputs.hpp"
+#include "file_placement.hpp"
+#include "run_outputs.hpp"
 #include "dragon/input_file.hpp"
 #include "dragon/sweep.hpp"
 

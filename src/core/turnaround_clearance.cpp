@@ -17,7 +17,7 @@
 
 #include <fmt/format.h>
 
-#include "core/golden_section.hpp"
+#include "golden_section.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/collision.hpp"
 #include "dragon/turnaround.hpp"

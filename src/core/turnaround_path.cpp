@@ -3,7 +3,7 @@
 #include <limits>
 #include <utility>
 
-#include "core/chord_march.hpp"
+#include "chord_march.hpp"
 #include "dragon/constants.hpp"
 #include "dragon/turnaround.hpp"
 

@@ -1,4 +1,4 @@
-#include "core/untouched_tail.hpp"
+#include "untouched_tail.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,9 +7,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "core/chain_front.hpp"
-#include "core/jam_walk.hpp"
-#include "core/link_watch.hpp"
+#include "chain_front.hpp"
+#include "jam_walk.hpp"
+#include "link_watch.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/constants.hpp"
 

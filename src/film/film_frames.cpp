@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "render/cairo_handles.hpp"
-#include "film/film_plan.hpp"
+#include "film_plan.hpp"
 #include "render/paint.hpp"
 #include "render/words.hpp"
 

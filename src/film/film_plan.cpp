@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "film/film_plan.hpp"
+#include "film_plan.hpp"
 
 namespace dragon {
 

@@ -9,7 +9,7 @@
 
 #include "dragon/analyses.hpp"
 #include "dragon/film.hpp"
-#include "film/time_map.hpp"
+#include "time_map.hpp"
 
 namespace dragon::film {
 

@@ -6,7 +6,7 @@
 
 #include "dragon/film.hpp"
 #include "dragon/input_file.hpp"
-#include "film/storyboard_values.hpp"
+#include "storyboard_values.hpp"
 
 namespace dragon {
 

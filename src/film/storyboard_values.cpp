@@ -1,4 +1,4 @@
-#include "film/storyboard_values.hpp"
+#include "storyboard_values.hpp"
 
 #include <cctype>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "film/time_map.hpp"
+#include "time_map.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -11,7 +11,7 @@
 #include "dragon/analyses.hpp"
 #include "render/cairo_handles.hpp"
 #include "dragon/collision.hpp"
-#include "gallery/figure_kit.hpp"
+#include "figure_kit.hpp"
 #include "render/paint.hpp"
 
 namespace dragon::fig {

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "gallery/figure_kit.hpp"
+#include "figure_kit.hpp"
 
 namespace dragon::fig {
 

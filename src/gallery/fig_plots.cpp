@@ -7,7 +7,7 @@
 #include <fmt/ranges.h>
 
 #include "dragon/turnaround.hpp"
-#include "gallery/figure_kit.hpp"
+#include "figure_kit.hpp"
 
 namespace dragon::fig {
 

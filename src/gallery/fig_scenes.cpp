@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "dragon/turnaround.hpp"
-#include "gallery/figure_kit.hpp"
+#include "figure_kit.hpp"
 
 namespace dragon::fig {
 

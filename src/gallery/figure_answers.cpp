@@ -1,4 +1,4 @@
-#include "gallery/figure_answers.hpp"
+#include "figure_answers.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "gallery/figure_kit.hpp"
+#include "figure_kit.hpp"
 
 #include <algorithm>
 #include <cerrno>

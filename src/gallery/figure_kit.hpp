@@ -12,7 +12,7 @@
 #include "gallery/figures.hpp"
 #include "dragon/plot.hpp"
 #include "dragon/render.hpp"
-#include "gallery/figure_answers.hpp"
+#include "figure_answers.hpp"
 
 namespace dragon::fig {
 

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "dragon/atomic_file.hpp"
-#include "gallery/figure_kit.hpp"
+#include "figure_kit.hpp"
 
 namespace dragon {
 

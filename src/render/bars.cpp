@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/furniture.hpp"
+#include "furniture.hpp"
 #include "render/paint.hpp"
 #include "render/words.hpp"
 

@@ -1,4 +1,4 @@
-#include "render/clip.hpp"
+#include "clip.hpp"
 
 #include <array>
 #include <cmath>

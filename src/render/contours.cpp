@@ -1,4 +1,4 @@
-#include "render/contours.hpp"
+#include "contours.hpp"
 
 #include <cmath>
 #include <cstdint>

@@ -11,10 +11,10 @@
 #include <fmt/format.h>
 
 #include "dragon/render.hpp"
-#include "render/furniture.hpp"
-#include "render/guide.hpp"
-#include "render/labels.hpp"
-#include "render/view.hpp"
+#include "furniture.hpp"
+#include "guide.hpp"
+#include "labels.hpp"
+#include "view.hpp"
 #include "render/paint.hpp"
 
 namespace dragon {

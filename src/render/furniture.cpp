@@ -1,6 +1,6 @@
 // The text furniture: annotation (top left), legend (below it), clock (top right), captions
 // (bottom centre). Sizes follow the picture (Units) so a 400 x 300 GIF and a 4K frame read alike.
-#include "render/furniture.hpp"
+#include "furniture.hpp"
 
 #include <algorithm>
 #include <string>

@@ -6,7 +6,7 @@
 #include <cairo.h>
 
 #include "dragon/render.hpp"
-#include "render/clip.hpp"
+#include "clip.hpp"
 #include "render/paint.hpp"
 
 namespace dragon::render {

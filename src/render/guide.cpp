@@ -1,4 +1,4 @@
-#include "render/guide.hpp"
+#include "guide.hpp"
 
 #include <algorithm>
 #include <cmath>

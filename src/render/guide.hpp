@@ -8,7 +8,7 @@
 
 #include "dragon/path.hpp"
 #include "dragon/render.hpp"
-#include "render/clip.hpp"
+#include "clip.hpp"
 
 namespace dragon::render {
 

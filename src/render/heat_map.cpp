@@ -9,8 +9,8 @@
 #include <fmt/format.h>
 
 #include "dragon/plot.hpp"
-#include "render/contours.hpp"
-#include "render/map_panels.hpp"
+#include "contours.hpp"
+#include "map_panels.hpp"
 #include "render/words.hpp"
 #include "render/paint.hpp"
 

@@ -4,7 +4,7 @@
 // with the screen furniture, benches other than the one it names under it, lines crossing it,
 // and a little for every pixel it moves away. The cheapest wins, so two labels never fight for a
 // spot, and one pushed away keeps a leader line to its point.
-#include "render/labels.hpp"
+#include "labels.hpp"
 
 #include <algorithm>
 #include <array>

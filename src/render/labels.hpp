@@ -7,8 +7,8 @@
 #include <cairo.h>
 
 #include "dragon/render.hpp"
-#include "render/clip.hpp"
-#include "render/furniture.hpp"
+#include "clip.hpp"
+#include "furniture.hpp"
 
 namespace dragon::render {
 

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "dragon/plot.hpp"
-#include "render/map_panels.hpp"
+#include "map_panels.hpp"
 #include "render/words.hpp"
 
 namespace dragon::render {

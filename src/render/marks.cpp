@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "render/paint.hpp"
-#include "render/view.hpp"
+#include "view.hpp"
 
 namespace dragon::render {
 

@@ -28,7 +28,7 @@ void check_size(int w, int h) {
 
 void check(cairo_status_t st, const char* what) {
     if (st != CAIRO_STATUS_SUCCESS)
-        throw std::runtime_error(fmt::format("{}: {}", what, cairo_status_to_string(st)));
+        throw SolverError(fmt::format("{}: {}", what, cairo_status_to_string(st)));
 }
 
 }  // namespace

@@ -378,7 +378,7 @@ void render_plot_png(const Plot& plot, int w, int h, const std::string& path) {
         cairo::Context cr = cairo::make_context(surface.get());
         draw_plot(cr.get(), plot, 0, 0, w, h);
         if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS)
-            throw std::runtime_error(std::string("drawing the plot: ") + cairo_status_to_string(cairo_status(cr.get())));
+            throw SolverError(std::string("drawing the plot: ") + cairo_status_to_string(cairo_status(cr.get())));
     }
     errno = 0;
     if (const cairo_status_t st = cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()))

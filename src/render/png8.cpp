@@ -91,7 +91,7 @@ void write_png8(cairo_surface_t* surface, const std::string& path, int max_colou
     const auto ignore = [](png_structp, png_const_charp) {};
     pw.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, fail, ignore);
     if (pw.png) pw.info = png_create_info_struct(pw.png);
-    if (!pw.png || !pw.info) throw std::runtime_error("libpng: out of memory");
+    if (!pw.png || !pw.info) throw SolverError("libpng: out of memory");
     std::vector<png_color> pal;
     for (std::uint32_t rgb : palette)
         pal.push_back({static_cast<png_byte>(channel(rgb, 0)), static_cast<png_byte>(channel(rgb, 1)),

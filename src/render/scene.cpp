@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "dragon/render.hpp"
-#include "render/guide.hpp"
+#include "guide.hpp"
 #include "render/words.hpp"
 
 namespace dragon {

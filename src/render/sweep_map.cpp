@@ -12,7 +12,7 @@
 #include "dragon/atomic_file.hpp"
 #include "render/cairo_handles.hpp"
 #include "dragon/scenario.hpp"
-#include "render/map_panels.hpp"
+#include "map_panels.hpp"
 #include "render/paint.hpp"
 #include "render/png8.hpp"
 #include "render/words.hpp"
@@ -197,12 +197,12 @@ void write_sweep_map(const SweepMap& map_in, const std::string& path, const std:
     AtomicFile out(path);
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
     if (const cairo_status_t st = cairo_surface_status(surface.get()))
-        throw std::runtime_error(fmt::format("creating the image surface: {}", cairo_status_to_string(st)));
+        throw SolverError(fmt::format("creating the image surface: {}", cairo_status_to_string(st)));
     {
         cairo::Context cr = cairo::make_context(surface.get());
         paint(cr.get());
         if (const cairo_status_t st = cairo_status(cr.get()))
-            throw std::runtime_error(fmt::format("drawing the map: {}", cairo_status_to_string(st)));
+            throw SolverError(fmt::format("drawing the map: {}", cairo_status_to_string(st)));
     }
     if (page.dpi > 0) {
         render::write_png(surface.get(), out, page.dpi);

@@ -163,8 +163,8 @@ std::string find_asset_dir(const std::string& hint) {
 #endif
     std::string list;
     for (const auto& p : tried) list += (list.empty() ? "" : ", ") + p.string();
-    throw std::runtime_error("no asset folder with themes/ found (tried: " + list +
-                             "); set DRAGON_ASSETS to the assets folder");
+    throw FileError(list.empty() ? "(none)" : list, "find the assets in",
+                    "no folder there holds themes/ (name the assets folder, or set DRAGON_ASSETS to it)");
 }
 
 Theme load_theme(const std::string& name_or_path, const std::string& asset_dir) {

@@ -1,5 +1,5 @@
 // The shapes drawn through a View: paths cut to the picture where they reach far outside it.
-#include "render/view.hpp"
+#include "view.hpp"
 
 #include <algorithm>
 #include <numbers>

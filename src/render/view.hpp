@@ -7,7 +7,7 @@
 #include <cairo.h>
 
 #include "dragon/render.hpp"
-#include "render/clip.hpp"
+#include "clip.hpp"
 
 namespace dragon::render {
 

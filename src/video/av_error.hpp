@@ -1,8 +1,11 @@
-// libav's negative return codes as exceptions with context (the video layer's one error style).
+// libav's negative return codes as the library's exceptions with context (the video layer's one
+// error style): a failure of the encoder or the muxer is a SolverError, a failed write of the
+// file a FileError naming it.
 #pragma once
 
-#include <stdexcept>
 #include <string>
+
+#include "dragon/errors.hpp"
 
 extern "C" {
 #include <libavutil/error.h>
@@ -16,9 +19,15 @@ inline std::string error_text(int code) {
     return buf;
 }
 
-// Throws std::runtime_error("what: libav's message") when code < 0; returns code otherwise.
+// Throws SolverError("what: libav's message") when code < 0; returns code otherwise.
 inline int check(int code, const std::string& what) {
-    if (code < 0) throw std::runtime_error(what + ": " + error_text(code));
+    if (code < 0) throw SolverError(what + ": " + error_text(code));
+    return code;
+}
+
+// Throws FileError (cannot `action` `path`: libav's message) when code < 0.
+inline int check_file(int code, const std::string& path, const std::string& action) {
+    if (code < 0) throw FileError(path, action, error_text(code));
     return code;
 }
 

@@ -34,7 +34,7 @@ namespace {
 cairo::Surface make_surface(int width, int height) {
     cairo::Surface s(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
     if (cairo_surface_status(s.get()) != CAIRO_STATUS_SUCCESS)
-        throw std::runtime_error(fmt::format("cannot allocate a {}x{} frame", width, height));
+        throw SolverError(fmt::format("cannot allocate a {}x{} frame", width, height));
     return s;
 }
 
@@ -42,7 +42,7 @@ void paint_into(cairo_surface_t* surface, int index, const PaintFn& paint) {
     cairo::Context cr(cairo_create(surface));
     paint(index, cr.get());
     if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS)
-        throw std::runtime_error(fmt::format("drawing frame {} failed: {}", index,
+        throw SolverError(fmt::format("drawing frame {} failed: {}", index,
                                              cairo_status_to_string(cairo_status(cr.get()))));
     cairo_surface_flush(surface);
 }

@@ -1,4 +1,4 @@
-#include "video/palette.hpp"
+#include "palette.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -9,12 +9,12 @@
 #include <fmt/format.h>
 
 #include "dragon/atomic_file.hpp"
-#include "video/av_handles.hpp"
+#include "av_handles.hpp"
 #include "dragon/scenario.hpp"
 #include "dragon/video.hpp"
-#include "video/av_error.hpp"
-#include "video/palette.hpp"
-#include "video/yuv_convert.hpp"
+#include "av_error.hpp"
+#include "palette.hpp"
+#include "yuv_convert.hpp"
 
 namespace dragon {
 
@@ -85,7 +85,7 @@ VideoOptions checked(const VideoOptions& opt, VideoFormat format) {
 // Complains about the first option the encoder did not take (a typo would otherwise be silent).
 void require_all_used(const av::Dictionary& left, const char* encoder) {
     if (const AVDictionaryEntry* e = av_dict_get(left.get(), "", nullptr, AV_DICT_IGNORE_SUFFIX))
-        throw std::runtime_error(fmt::format("encoder {} does not take option {}={}", encoder, e->key, e->value));
+        throw SolverError(fmt::format("encoder {} does not take option {}={}", encoder, e->key, e->value));
 }
 
 }  // namespace
@@ -109,7 +109,7 @@ struct VideoWriter::Impl {
         const CodecChoice choice = codec_for(format);
         // The muxer by the target's name: the temporary file's name is not the user's choice.
         const AVOutputFormat* oformat = av_guess_format(nullptr, path.c_str(), nullptr);
-        if (!oformat) throw std::runtime_error(fmt::format("no muxer for '{}'", path));
+        if (!oformat) throw SolverError(fmt::format("this FFmpeg has no muxer for '{}'", path));
         AVFormatContext* raw_mux = nullptr;
         av::check(avformat_alloc_output_context2(&raw_mux, oformat, nullptr, file.temp_path().c_str()),
                   "cannot set up the muxer");
@@ -117,10 +117,14 @@ struct VideoWriter::Impl {
 
         const AVCodec* codec = avcodec_find_encoder_by_name(choice.encoder);
         if (!codec)
-            throw std::runtime_error(fmt::format("this FFmpeg has no {} encoder (needed for .{} files)",
+            throw SolverError(fmt::format("this FFmpeg has no {} encoder (needed for .{} files)",
                                                  choice.encoder, to_string(format)));
         enc.reset(avcodec_alloc_context3(codec));
         if (!enc) throw std::bad_alloc();
+        // The encoders' chatter (x264's statistics, libvpx's version) demoted below libav's
+        // default level, for this context only: no global setting is touched, and a failure
+        // still reaches the caller as an exception from its return code.
+        enc->log_level_offset = AV_LOG_DEBUG - AV_LOG_ERROR;
         const AVRational rate = av_d2q(opt.fps, 100000);
         enc->width = opt.width;
         enc->height = opt.height;
@@ -161,14 +165,13 @@ struct VideoWriter::Impl {
         frame->height = enc->height;
         av::check(av_frame_get_buffer(frame.get(), 0), "cannot allocate a video frame");
 
-        av::check(avio_open(&mux->pb, file.temp_path().c_str(), AVIO_FLAG_WRITE),
-                  fmt::format("cannot write '{}'", file.target()));
+        av::check_file(avio_open(&mux->pb, file.temp_path().c_str(), AVIO_FLAG_WRITE), file.target(), "write");
         AVDictionary* mux_opts = nullptr;
         // The index at the front: browsers start playing before the download ends.
         if (format == VideoFormat::mp4) av_dict_set(&mux_opts, "movflags", "+faststart", 0);
         const int ret = avformat_write_header(mux.get(), &mux_opts);
         av_dict_free(&mux_opts);
-        av::check(ret, "cannot write the video header");
+        av::check_file(ret, file.target(), "write the header of");
     }
 
     void write(const std::uint8_t* argb, int stride) {
@@ -210,18 +213,17 @@ struct VideoWriter::Impl {
             av::check(ret, "cannot encode a frame");
             av_packet_rescale_ts(packet.get(), enc->time_base, stream->time_base);
             packet->stream_index = stream->index;
-            av::check(av_interleaved_write_frame(mux.get(), packet.get()),
-                      fmt::format("cannot write '{}'", file.target()));
+            av::check_file(av_interleaved_write_frame(mux.get(), packet.get()), file.target(), "write");
         }
     }
 
     void finish() {
         if (finished) return;
-        if (next_pts == 0) throw std::runtime_error("a video needs at least one frame");
+        if (next_pts == 0) throw InputError("frame count", "0", "a video needs at least one frame");
         av::check(avcodec_send_frame(enc.get(), nullptr), "cannot flush the encoder");
         drain();
-        av::check(av_write_trailer(mux.get()), fmt::format("cannot finish '{}'", file.target()));
-        av::check(avio_closep(&mux->pb), fmt::format("cannot close '{}'", file.target()));
+        av::check_file(av_write_trailer(mux.get()), file.target(), "finish");
+        av::check_file(avio_closep(&mux->pb), file.target(), "close");
         file.commit();
         finished = true;
     }

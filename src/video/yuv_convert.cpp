@@ -1,4 +1,4 @@
-#include "video/yuv_convert.hpp"
+#include "yuv_convert.hpp"
 
 namespace dragon::video {
 
