@@ -13,12 +13,13 @@ namespace dragon {
 // penetration depth when they overlap (< 0), along `axis` (unit, pointing from a towards b).
 // The distance is exact Euclidean distance when apart (corner-to-corner gaps included).
 struct Separation {
-    double distance;
-    Vec2 axis = Vec2::Zero();
+    double distance;           // m: > 0 apart, < 0 overlapping
+    Vec2 axis = Vec2::Zero();  // unit, from a towards b
     // A witness: the point of b nearest to a (apart), or the corner of either board deepest inside
     // the other (overlapping).
     Vec2 point = Vec2::Zero();
 };
+// How far apart boards a and b are, exactly (or how deep they overlap), and along which axis.
 Separation separation(const Rect& a, const Rect& b);
 
 // Where two touching (or nearly touching) boards meet, to mark it: the corner of either one
@@ -30,11 +31,11 @@ Vec2 contact_point(const Rect& a, const Rect& b);
 // Benches are numbered 1..N; bench_a < bench_b. With fewer than 3 benches there is no such pair
 // and distance is +infinity.
 struct Clearance {
-    double distance;
-    int bench_a = 0;
-    int bench_b = 0;
-    Vec2 axis = Vec2::Zero();
-    Vec2 point = Vec2::Zero();
+    double distance;            // m (+inf: no pair)
+    int bench_a = 0;            // the nearer pair's first bench, 1..N
+    int bench_b = 0;            // and its second, bench_a < bench_b
+    Vec2 axis = Vec2::Zero();   // their Separation's axis
+    Vec2 point = Vec2::Zero();  // their Separation's witness point
 };
 
 // Broad phase: every pair of non-adjacent benches whose rectangles might be within `margin` of
@@ -56,6 +57,7 @@ private:
     std::vector<int> index_;
     std::vector<std::pair<int, int>> pairs_;
 };
+// The broad phase's pairs (i, j), i < j, in one call.
 std::vector<std::pair<int, int>> candidate_pairs(const Frame& f, double margin);
 
 // Clearance over all non-adjacent pairs, through the broad phase. Pairs farther apart than
@@ -68,7 +70,8 @@ Clearance clearance_all_pairs(const Frame& f);
 
 // Two non-adjacent benches overlapping: past the first contact the chain lies across itself.
 struct Overlap {
-    int bench_a = 0, bench_b = 0;  // 1..N, a < b
+    int bench_a = 0;               // 1..N
+    int bench_b = 0;               // 1..N, bench_a < bench_b
     double depth = 0.0;            // penetration depth, m (> 0)
     Vec2 point = Vec2::Zero();     // the corner of either board deepest inside the other
 };

@@ -13,6 +13,7 @@
 
 namespace dragon {
 
+// A value the caller gave cannot be used: which (field), as given (value), and what is allowed.
 class InputError : public std::runtime_error {
 public:
     // A sentence only (a malformed file, a rule between several values).
@@ -21,18 +22,20 @@ public:
     InputError(std::string field, std::string value, std::string allowed);
 
     const std::string& field() const { return field_; }  // empty for a sentence-only error
-    const std::string& value() const { return value_; }
-    const std::string& allowed() const { return allowed_; }
+    const std::string& value() const { return value_; }      // the value as given
+    const std::string& allowed() const { return allowed_; }  // what would be allowed, in words
 
 private:
     std::string field_, value_, allowed_;
 };
 
+// The computation could not reach an answer: not the caller's input.
 class SolverError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
 
+// A file could not be read or written: which, and why.
 class FileError : public std::runtime_error {
 public:
     // what() is "cannot {action} '{path}': {reason}".

@@ -22,6 +22,8 @@ public:
     Cancelled() : std::runtime_error("stopped by the caller") {}
 };
 
+// Where the library's parallel work runs: the caller's threads, behind this interface (given
+// none, the library uses default_executor()).
 class Executor {
 public:
     virtual ~Executor() = default;
@@ -42,10 +44,11 @@ public:
 // item runs here, and stops when that executor would (`outer`).
 class InlineExecutor final : public Executor {
 public:
-    InlineExecutor() = default;
-    explicit InlineExecutor(const Executor* outer) : outer_(outer) {}
+    InlineExecutor() = default;                                         // stops never
+    explicit InlineExecutor(const Executor* outer) : outer_(outer) {}  // stops when `outer` would
     int workers() const override { return 1; }
     bool stop_requested() const override { return outer_ && outer_->stop_requested(); }
+    // As Executor::parallel_for.
     void parallel_for(std::size_t count, const std::function<void(std::size_t, int)>& body) override;
 
 private:
@@ -56,11 +59,12 @@ private:
 // ThreadPool(1) starts none. 0: one worker per core.
 class ThreadPool final : public Executor {
 public:
-    explicit ThreadPool(int workers = 0);
+    explicit ThreadPool(int workers = 0);  // starts workers - 1 threads (0: one worker per core)
     ~ThreadPool() override;
     ThreadPool(const ThreadPool&) = delete;
     ThreadPool& operator=(const ThreadPool&) = delete;
     int workers() const override;
+    // As Executor::parallel_for.
     void parallel_for(std::size_t count, const std::function<void(std::size_t, int)>& body) override;
 
 private:
@@ -73,10 +77,11 @@ private:
 // interrupt (Python's Ctrl-C).
 class StoppableExecutor final : public Executor {
 public:
-    explicit StoppableExecutor(Executor& inner) : inner_(inner) {}
-    void request_stop() { stop_ = true; }
+    explicit StoppableExecutor(Executor& inner) : inner_(inner) {}  // runs on `inner`'s workers
+    void request_stop() { stop_ = true; }                             // from any thread
     bool stop_requested() const override { return stop_.load(std::memory_order_relaxed); }
     int workers() const override { return inner_.workers(); }
+    // As Executor::parallel_for.
     void parallel_for(std::size_t count, const std::function<void(std::size_t, int)>& body) override;
 
 private:

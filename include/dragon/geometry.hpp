@@ -28,7 +28,7 @@ inline Vec2 normalized(const Vec2& a) { return a / norm(a); }
 
 // An oriented rectangle: a bench board seen from above.
 struct Rect {
-    Vec2 centre = Vec2::Zero();
+    Vec2 centre = Vec2::Zero();  // m
     Vec2 axis = Vec2::Zero();  // unit vector along the long side (from the rear handle to the front one)
     double half_length = 0;  // along axis
     double half_width = 0;   // across axis
@@ -39,9 +39,10 @@ inline double half_diagonal(const Rect& r) { return std::sqrt(r.half_length * r.
 
 // The distance from p to rectangle r (0 inside it) and the point of r nearest p.
 struct PointToRect {
-    double distance;
-    Vec2 nearest = Vec2::Zero();
+    double distance;              // m; 0 inside the rectangle
+    Vec2 nearest = Vec2::Zero();  // the point of the rectangle nearest p
 };
+// The distance from p to r and r's point nearest p.
 inline PointToRect point_to_rect(const Vec2& p, const Rect& r) {
     const Vec2 n = perp(r.axis);
     const Vec2 w = p - r.centre;
@@ -53,8 +54,9 @@ inline PointToRect point_to_rect(const Vec2& p, const Rect& r) {
 
 // The four corners, counter-clockwise when axis points right.
 struct Corners {
-    Vec2 p[4];
+    Vec2 p[4];  // the corners in order
 };
+// The four corners of r, in that order.
 inline Corners corners(const Rect& r) {
     const Vec2 a = r.half_length * r.axis;
     const Vec2 n = r.half_width * perp(r.axis);

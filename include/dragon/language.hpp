@@ -8,6 +8,7 @@
 
 namespace dragon {
 
+// The languages the tool's own words come in.
 enum class Language {
     en,  // English
     zh,  // Chinese (simplified), with the contest's terms: 板凳龙, 龙头, 龙身, 龙尾, 把手, 螺距, 调头空间

@@ -8,6 +8,7 @@
 
 namespace dragon {
 
+// A picture's size in pixels, as parse_picture_size reads it.
 struct PictureSize {
     int width = 0;   // pixels
     int height = 0;  // pixels
@@ -28,14 +29,17 @@ PictureSize parse_picture_size(std::string_view text, int max_side = kMaxPicture
 // The body text (labels, ticks, legends, scale bar) is font_pt; titles, captions and clocks a
 // fifth larger; lines and gaps follow the text (a 1 pt line at 8 pt text).
 struct PrintSize {
-    double width_in = 3.5;
-    double font_pt = 8.0;
-    double dpi = 300.0;  // PNG only: PDF and SVG are vector pages of width_in
+    double width_in = 3.5;  // the picture's width on the page, in
+    double font_pt = 8.0;   // the body text's size, pt
+    double dpi = 300.0;     // PNG only: PDF and SVG are vector pages of width_in
 };
-inline constexpr double kMinPrintWidthIn = 1.0, kMaxPrintWidthIn = 40.0;  // a stamp to a poster
-inline constexpr double kMinFontPt = 4.0, kMaxFontPt = 36.0;              // readable to headline
-inline constexpr double kMinDpi = 72.0, kMaxDpi = 1200.0;                 // screen to photo print
-inline constexpr double kCmPerInch = 2.54;
+inline constexpr double kMinPrintWidthIn = 1.0;   // in: a stamp
+inline constexpr double kMaxPrintWidthIn = 40.0;  // in: a poster
+inline constexpr double kMinFontPt = 4.0;         // pt: still readable
+inline constexpr double kMaxFontPt = 36.0;        // pt: a headline
+inline constexpr double kMinDpi = 72.0;           // a screen
+inline constexpr double kMaxDpi = 1200.0;         // a photo print
+inline constexpr double kCmPerInch = 2.54;        // cm in an inch
 
 // The named sizes: "column" (3.5 in, 8 pt: one column of a two-column paper), "page" (7 in,
 // 9 pt: across both columns), "a4" (16 cm, 10.5 pt: the text width of an A4 page with 2.5 cm
@@ -49,16 +53,18 @@ void check_print_size(const PrintSize& size);
 // Where a picture goes on a page: its size in points (PDF, SVG) and the resolution a PNG
 // states (its pHYs chunk, which LaTeX and Word read). Zero: 96 px to the inch, none stated.
 struct Page {
-    double width_pt = 0, height_pt = 0;
-    double dpi = 0;
+    double width_pt = 0;   // the page's width, pt (0: the picture's pixels at 96 to the inch)
+    double height_pt = 0;  // the page's height, pt
+    double dpi = 0;        // a PNG's stated resolution (0: none stated)
 };
 
 // A picture of aspect height / width at a print size: drawn on width_px x height_px (96 px to
 // the inch on a vector page, size.dpi on a PNG), its body text text_px tall, on `page`.
 struct PrintLayout {
-    int width_px = 0, height_px = 0;
-    double text_px = 0;
-    Page page;
+    int width_px = 0;    // the pixels drawn across
+    int height_px = 0;   // the pixels drawn down
+    double text_px = 0;  // the body text's size in those pixels (Scene::text_px)
+    Page page;           // where the drawing goes on the page
 };
 // Throws InputError (check_print_size's, or a sentence when the pixels would exceed max_side
 // or either side fall under kMinPictureSide).

@@ -17,20 +17,23 @@ namespace dragon {
 
 // One end of a window: a time in seconds, or a head travel in metres.
 struct Along {
+    // What `value` measures.
     enum class Unit { seconds, metres };
-    double value = 0.0;
-    Unit unit = Unit::metres;
+    double value = 0.0;        // s, or m of head travel, from t = 0; +inf: open
+    Unit unit = Unit::metres;  // which of the two
 
-    static constexpr Along seconds(double t) { return {t, Unit::seconds}; }
-    static constexpr Along metres(double x) { return {x, Unit::metres}; }
+    static constexpr Along seconds(double t) { return {t, Unit::seconds}; }  // t seconds
+    static constexpr Along metres(double x) { return {x, Unit::metres}; }    // x metres of head travel
     // As head travel (m) and as time (s), at this head speed.
     double travel(double head_speed) const { return unit == Unit::metres ? value : value * head_speed; }
     double time(double head_speed) const { return unit == Unit::seconds ? value : value / head_speed; }
     bool operator==(const Along&) const = default;
 };
 
+// A window of the motion: from one end to the other (each in seconds or head travel).
 struct RunWindow {
-    Along from, to;
+    Along from;  // where it starts
+    Along to;    // where it ends
     bool operator==(const RunWindow&) const = default;
 };
 
@@ -46,9 +49,12 @@ std::optional<Along> parse_along(const std::string& text);
 // A window as the analysis searched it: in travel and in time, after cutting it to the valid
 // motion (the ends are then where the motion ends, and the jams there say why).
 struct Searched {
-    double from = 0.0, to = 0.0;                // s
-    double from_travel = 0.0, to_travel = 0.0;  // m
-    std::optional<Jam> before, after;           // the ends of the valid motion that cut it
+    double from = 0.0;          // s
+    double to = 0.0;            // s
+    double from_travel = 0.0;   // m
+    double to_travel = 0.0;     // m
+    std::optional<Jam> before;  // the end of the valid motion that cut its start
+    std::optional<Jam> after;   // the end of the valid motion that cut its end
 };
 
 }  // namespace dragon
