@@ -52,15 +52,6 @@ std::vector<const Frame*> pick(const std::vector<Frame>& frames, double every) {
     return out;
 }
 
-void write_text(AtomicFile& out, const std::string& text) {
-    errno = 0;
-    std::FILE* f = std::fopen(out.temp_path().c_str(), "wb");
-    if (!f) throw out.write_error(std::strerror(errno));
-    const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-    const int err = errno;
-    if (std::fclose(f) != 0 || !ok) throw out.write_error(std::strerror(ok ? errno : err));
-}
-
 // The scenario values the questions asked for read: a value none of them reads is not checked
 // (a file's pitch does not matter to --only q4), and a flag for one is refused.
 ScenarioValues values_read_by(const ContestOptions& o) {
@@ -226,7 +217,7 @@ void register_solve(CLI::App& app, Registry& reg) {
                            v.max_head_speed, v.ratio, v.handle, v.time,
                            v.jam ? "; searched only up to the end of the valid motion: " + jam_sentence(*v.jam) : "");
         }
-        write_text(*summary_json, json_text(contest_summary(a, contest), 2) + "\n");
+        write_text_file(*summary_json, json_text(contest_summary(a, contest), 2) + "\n");
         std::vector<AtomicFile*> set;
         for (const auto& f : files) set.push_back(f.get());
         require_stdout_written();  // the tables all printed, or no file changes
