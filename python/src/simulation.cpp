@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "common.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/chain.hpp"
