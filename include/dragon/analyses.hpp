@@ -43,6 +43,13 @@ WindowCut cut_window(const Simulation& sim, const RunWindow& window);
 // under `field` unless the moment is within the valid motion.
 void require_valid_at(const Simulation& sim, const Along& at, const char* field);
 
+// Frames at the given times (in any order; each within the valid motion, else the InputError
+// Simulation::frame throws, before any is made), on the executor's workers: `out(k, frame)`
+// hears the frame of times[k] on the worker that made it, to copy what it needs where it
+// belongs (a caller filling arrays copies each frame once).
+void simulate_at(const Simulation& sim, const std::vector<double>& times,
+                 const std::function<void(std::size_t, const Frame&)>& out, Executor* executor = nullptr);
+
 // Q2: the first moment two non-adjacent benches touch. The search runs in head travel, so the
 // contact (its benches, point, head radius, travel) is the same at any head speed and its time
 // is travel / speed.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "dragon/analyses.hpp"
+#include "dragon/contest.hpp"
 #include "dragon/json.hpp"
 #include "dragon/turnaround.hpp"
 
@@ -55,5 +56,11 @@ Json turnaround_answer(const SCurve& design, const std::optional<Jam>& design_ja
 // "from", "to", "from_travel", "to_travel", "jam", "scan_step", "scan_travel", "candidates",
 // "evaluations"}.
 Json max_speed_answer(const MaxSpeed& m, double limit);
+
+// `dragon solve`'s summary.json: a key per question answered ("q1".."q5"): Q1's and Q4's tables
+// (their files, times, rows and the rows left out, the window both ways, the jam that cut it,
+// the first contact they run past), Q2 as collide's answer, Q3 as min-pitch's (and why its
+// range moved), Q4's S-curve and whether this dragon can follow it, Q5 as max-speed's.
+Json contest_summary(const ContestAnswers& a, const ContestOptions& options);
 
 }  // namespace dragon

@@ -71,6 +71,10 @@ public:
 // run's other files.)
 void commit_together(const std::vector<AtomicFile*>& files);
 
+// Writes `text` into the temporary file of `out` (the caller commits it); throws FileError
+// naming the target when the write fails.
+void write_text_file(AtomicFile& out, const std::string& text);
+
 // Makes the folder `dir` and its missing parents for a run's outputs, and says whether it is
 // there now (false: it cannot be made). Inside a RunOutputs, the folders it made are removed
 // again when the run fails, if they are still empty: a failed run leaves no new folder either.

@@ -24,6 +24,31 @@ struct SweepSetup {
     Shard shard;
 };
 
+// What a sweep was asked, as its caller gives it (the tool's flags and sweep file, Python's
+// keyword arguments), to be checked and made into a setup.
+struct SweepAsked {
+    std::vector<std::string> vary;      // each NAME=FROM:TO:COUNT or NAME=V1,V2,... (parse_axis)
+    std::vector<std::string> measures;  // collide, min-pitch, turnaround, max-speed
+    std::optional<std::string> lo, hi;  // min-pitch's range: a pitch, or "width+X"
+    std::optional<double> grid, limit;
+    std::optional<std::string> from, to;  // the window of collide, turnaround and max-speed
+    std::string shard;                    // "K/N", or "" for the whole sweep
+    ScenarioValues fixed_given = 0;       // scenario values the caller fixed (none may be varied too)
+};
+// How the caller names what it was given, for messages: an option ("lo" -> "--lo") and a scenario
+// value ("width" -> "--width").
+struct SweepWords {
+    std::function<std::string(const char* option)> option;
+    std::function<std::string(const char* value)> value;
+};
+// Checks what was asked and makes the setup. `base(fixed, why)` gives the scenario of the fixed
+// values: the values some measure reads and no axis varies (a value given that none reads is
+// refused there, with `why`). Throws InputError naming what is at fault in the caller's words:
+// no axis or measure, a bad axis, a measure given twice or not reading a varied value, an option
+// no measure takes or that every scenario would refuse, a value both fixed and varied.
+SweepSetup make_sweep_setup(const SweepAsked& asked, const SweepWords& words,
+                            const std::function<Scenario(ScenarioValues fixed, const std::string& why)>& base);
+
 // Is `name` ("min-pitch") among the measures?
 bool has_measure(const std::vector<const MeasureInfo*>& measures, const char* name);
 // "collide, max-speed": the measures' names.

@@ -156,4 +156,42 @@ Json max_speed_answer(const MaxSpeed& m, double limit) {
     return answer;
 }
 
+namespace {
+
+Json table_json(const ContestTable& t, const char* file) {
+    Json j = {{"file", file},
+              {"times", t.frames.empty() ? Json(nullptr) : Json::array({t.frames.front().time, t.frames.back().time})},
+              {"rows", t.frames.size()},
+              {"rows_left_out", t.rows_left_out}};
+    add_window(j, t.window);
+    j["jam"] = jam_json(t.jam);
+    j["past_contact"] = t.past_contact ? contact_json(*t.past_contact) : Json(nullptr);
+    return j;
+}
+
+}  // namespace
+
+Json contest_summary(const ContestAnswers& a, const ContestOptions& options) {
+    Json summary = Json::object();
+    if (a.q1) summary["q1"] = table_json(*a.q1, "result1.xlsx");
+    if (a.q2) {
+        summary["q2"] = collide_answer(*a.q2, false);
+        summary["q2"]["file"] = "result2.xlsx";
+    }
+    if (a.q3) {
+        summary["q3"] = min_pitch_answer(*a.q3, a.scenario.path.turn_radius);
+        summary["q3"]["range_moved"] = a.q3_range->moved.empty() ? Json(nullptr) : Json(a.q3_range->moved);
+    }
+    if (a.q4) {
+        Json& q4 = summary["q4"] = table_json(*a.q4, "result4.xlsx");
+        q4["r1"] = a.q4_design->r1;
+        q4["r2"] = a.q4_design->r2;
+        q4["length"] = a.q4_design->length;
+        q4["followable"] = !a.q4_jam;
+        q4["design_jam"] = jam_json(a.q4_jam);
+    }
+    if (a.q5) summary["q5"] = max_speed_answer(*a.q5, options.speed_limit);
+    return summary;
+}
+
 }  // namespace dragon

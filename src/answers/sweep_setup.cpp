@@ -68,6 +68,74 @@ void check_options(const MeasureOptions& o, const std::vector<const MeasureInfo*
     }
 }
 
+SweepSetup make_sweep_setup(const SweepAsked& asked, const SweepWords& words,
+                            const std::function<Scenario(ScenarioValues fixed, const std::string& why)>& base) {
+    const auto option = [&](const char* o) { return words.option(o); };
+    if (asked.vary.empty()) throw InputError(fmt::format("a sweep needs at least one {} NAME=VALUES", option("vary")));
+    std::vector<Axis> axes;
+    for (const std::string& v : asked.vary) axes.push_back(parse_axis(v));
+    SweepGrid grid(std::move(axes));
+    if (asked.measures.empty())
+        throw InputError(fmt::format("a sweep needs {}: one or more of collide, min-pitch, turnaround, max-speed",
+                                     option("measure")));
+    std::vector<const MeasureInfo*> measures;
+    for (const std::string& name : asked.measures) {
+        const MeasureInfo& m = find_measure(name);
+        if (has_measure(measures, m.name))
+            throw InputError(fmt::format("{} {} is given twice: measure each once", option("measure"), name));
+        measures.push_back(&m);
+    }
+    ScenarioValues reads = 0;
+    for (const MeasureInfo* m : measures) {
+        reads |= m->reads;
+        for (const Axis& a : grid.axes())
+            if (!(m->reads & a.parameter->value))
+                throw InputError(fmt::format("{} {} is not allowed with {} {}: {} does not read the {} (every row would "
+                                             "repeat one answer); measure it in a sweep of its own", option("vary"),
+                                             a.parameter->name, option("measure"), m->name, m->name,
+                                             a.parameter->quantity));
+    }
+    const auto only_for = [&](const std::optional<std::string>& given, const char* name, const char* measure) {
+        if (given && !has_measure(measures, measure))
+            throw InputError(fmt::format("{} {} is not allowed: it is an option of {}, which this sweep does not measure",
+                                         option(name), *given, measure));
+    };
+    only_for(asked.lo, "lo", "min-pitch");
+    only_for(asked.hi, "hi", "min-pitch");
+    only_for(asked.grid ? std::optional<std::string>(fmt::format("{}", *asked.grid)) : std::nullopt, "grid", "min-pitch");
+    only_for(asked.limit ? std::optional<std::string>(fmt::format("{}", *asked.limit)) : std::nullopt, "limit",
+             "max-speed");
+    const bool windowed =
+        has_measure(measures, "collide") || has_measure(measures, "turnaround") || has_measure(measures, "max-speed");
+    for (const auto& [given, name] : {std::pair{asked.from, "from"}, std::pair{asked.to, "to"}})
+        if (given && !windowed)
+            throw InputError(fmt::format("{} {} is not allowed: it sets the window of collide, turnaround and "
+                                         "max-speed, and this sweep measures none of them", option(name), *given));
+    for (const Axis& a : grid.axes())
+        if (asked.fixed_given & a.parameter->value)
+            throw InputError(fmt::format("{} is not allowed: the sweep varies it ({} {}=...); give it one way",
+                                         words.value(a.parameter->name), option("vary"), a.parameter->name));
+    const ScenarioValues fixed = reads & ~grid.varied();
+    Scenario s = base(fixed, fmt::format("no measure of this sweep ({}) reads it", measure_names(measures)));
+    s.path.kind = PathKind::spiral;
+    MeasureOptions options;
+    if (asked.lo) options.lo = parse_pitch_bound(option("lo"), *asked.lo);
+    if (asked.hi) options.hi = parse_pitch_bound(option("hi"), *asked.hi);
+    if (asked.grid) options.grid = *asked.grid;
+    if (asked.limit) options.limit = *asked.limit;
+    for (const auto& [given, name] : {std::pair{asked.from, "from"}, std::pair{asked.to, "to"}}) {
+        if (!given) continue;
+        const std::optional<Along> a = parse_along(*given);
+        if (!a)
+            throw InputError(fmt::format("{} {} is not allowed: give a time in seconds (12.5, or 12.5s) or a length of "
+                                         "the head's travel in metres (-100m)", option(name), *given));
+        (std::string(name) == "from" ? options.from : options.to) = a;
+    }
+    check_options(options, measures, option);
+    return {std::move(grid), std::move(measures), s, fixed, options,
+            parse_shard(asked.shard.empty() ? "1/1" : asked.shard)};
+}
+
 std::string spec_line(const SweepSetup& setup) {
     Json vary = Json::object();
     for (const Axis& a : setup.grid.axes()) vary[a.parameter->name] = a.cells;

@@ -52,15 +52,6 @@ std::vector<const Frame*> pick(const std::vector<Frame>& frames, double every) {
     return out;
 }
 
-void write_text(AtomicFile& out, const std::string& text) {
-    errno = 0;
-    std::FILE* f = std::fopen(out.temp_path().c_str(), "wb");
-    if (!f) throw out.write_error(std::strerror(errno));
-    const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-    const int err = errno;
-    if (std::fclose(f) != 0 || !ok) throw out.write_error(std::strerror(ok ? errno : err));
-}
-
 // The scenario values the questions asked for read: a value none of them reads is not checked
 // (a file's pitch does not matter to --only q4), and a flag for one is refused.
 ScenarioValues values_read_by(const ContestOptions& o) {
@@ -83,18 +74,6 @@ std::string table_notes(const ContestTable& t) {
                            "there on benches overlap", format_resolved(t.past_contact->time, t.past_contact->tolerance),
                            t.past_contact->bench_a, t.past_contact->bench_b);
     return out;
-}
-
-Json table_json(const ContestTable& t, const char* file) {
-    Json j = {{"file", file},
-              {"times", t.frames.empty() ? Json(nullptr)
-                                         : Json::array({t.frames.front().time, t.frames.back().time})},
-              {"rows", t.frames.size()},
-              {"rows_left_out", t.rows_left_out}};
-    add_window(j, t.window);
-    j["jam"] = jam_json(t.jam);
-    j["past_contact"] = t.past_contact ? contact_json(*t.past_contact) : Json(nullptr);
-    return j;
 }
 
 }  // namespace
@@ -166,7 +145,6 @@ void register_solve(CLI::App& app, Registry& reg) {
         if (result1) contest.on_q1_table = [result1](const std::vector<Frame>& t) { write_result_xlsx(t, *result1, kWorkbooks); };
         if (result4) contest.on_q4_table = [result4](const std::vector<Frame>& t) { write_result_xlsx(t, *result4, kWorkbooks); };
         const ContestAnswers a = solve_contest(s, contest);
-        Json summary = Json::object();
 
         // Q1: coiling in.
         if (const std::optional<ContestTable>& q1 = a.q1) {
@@ -176,7 +154,6 @@ void register_solve(CLI::App& app, Registry& reg) {
                                           table_notes(*q1)),
                               pick(q1->frames, 60.0 / s.head_speed == std::round(60.0 / s.head_speed)
                                                    ? 60.0 / s.head_speed : 60.0));
-            summary["q1"] = table_json(*q1, "result1.xlsx");
         }
 
         // Q2: the termination time.
@@ -192,8 +169,6 @@ void register_solve(CLI::App& app, Registry& reg) {
             // With no contact, the contest's layout with no rows, so no older answer is left
             // looking like this one's.
             write_result2_xlsx(q2->contact ? q2->contact->frame : Frame{}, *result2, kWorkbooks);
-            summary["q2"] = collide_answer(*q2, false);
-            summary["q2"]["file"] = "result2.xlsx";
         }
 
         // Q3: the minimum pitch.
@@ -216,8 +191,6 @@ void register_solve(CLI::App& app, Registry& reg) {
                 fmt::print("  at pitch {} m (the largest of the scan where this happens) the dragon cannot follow the "
                            "spiral to radius {} m at all: {}\n", m.jam->pitch, s.path.turn_radius,
                            jam_sentence(m.jam->jam));
-            summary["q3"] = min_pitch_answer(m, s.path.turn_radius);
-            summary["q3"]["range_moved"] = a.q3_range->moved.empty() ? Json(nullptr) : Json(a.q3_range->moved);
         }
 
         // Q4: the S-curve and the table around the turn.
@@ -231,12 +204,6 @@ void register_solve(CLI::App& app, Registry& reg) {
                                           table_notes(*q4)),
                               pick(q4->frames, 50.0 / s.head_speed == std::round(50.0 / s.head_speed)
                                                    ? 50.0 / s.head_speed : 50.0));
-            summary["q4"] = table_json(*q4, "result4.xlsx");
-            summary["q4"]["r1"] = sc.r1;
-            summary["q4"]["r2"] = sc.r2;
-            summary["q4"]["length"] = sc.length;
-            summary["q4"]["followable"] = !a.q4_jam;
-            summary["q4"]["design_jam"] = jam_json(a.q4_jam);
         }
 
         // Q5: the speed limit.
@@ -249,9 +216,8 @@ void register_solve(CLI::App& app, Registry& reg) {
                 fmt::print("\nQ5: largest head speed {:.6f} m/s (speed ratio {:.6f} at handle {}, t = {:.6f} s){}\n",
                            v.max_head_speed, v.ratio, v.handle, v.time,
                            v.jam ? "; searched only up to the end of the valid motion: " + jam_sentence(*v.jam) : "");
-            summary["q5"] = max_speed_answer(v, contest.speed_limit);
         }
-        write_text(*summary_json, json_text(summary, 2) + "\n");
+        write_text_file(*summary_json, json_text(contest_summary(a, contest), 2) + "\n");
         std::vector<AtomicFile*> set;
         for (const auto& f : files) set.push_back(f.get());
         require_stdout_written();  // the tables all printed, or no file changes

@@ -86,59 +86,13 @@ SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags) {
         take_file_options(f, req.file, req, all_measures);
         flags.fill(f.scenario, f.fixed, fmt::format("sweep file '{}': [fixed]", req.file));
     }
-    std::vector<Axis> axes;
-    if (req.vary.empty()) throw InputError("a sweep needs at least one --vary NAME=VALUES");
-    for (const std::string& v : req.vary) axes.push_back(parse_axis(v));
-    SweepGrid grid(std::move(axes));
-    if (req.measures.empty())
-        throw InputError("a sweep needs --measure: one or more of collide, min-pitch, turnaround, max-speed");
-    std::vector<const MeasureInfo*> measures;
-    for (const std::string& name : req.measures) {
-        const MeasureInfo& m = find_measure(name);
-        if (has_measure(measures, m.name))
-            throw InputError(fmt::format("--measure {} is given twice: measure each once", name));
-        measures.push_back(&m);
-    }
-    ScenarioValues reads = 0;
-    for (const MeasureInfo* m : measures) {
-        reads |= m->reads;
-        for (const Axis& a : grid.axes())
-            if (!(m->reads & a.parameter->value))
-                throw InputError(fmt::format("--vary {} is not allowed with --measure {}: {} does not read the {} (every "
-                                             "row would repeat one answer); measure it in a sweep of its own",
-                                             a.parameter->name, m->name, m->name, a.parameter->quantity));
-    }
-    const auto only_for = [&](const std::optional<std::string>& given, const char* flag, const char* measure) {
-        if (given && !has_measure(measures, measure))
-            throw InputError(fmt::format("{} {} is not allowed: it is an option of {}, which this sweep does not measure",
-                                         flag, *given, measure));
-    };
-    only_for(req.lo, "--lo", "min-pitch");
-    only_for(req.hi, "--hi", "min-pitch");
-    only_for(req.grid ? std::optional<std::string>(fmt::format("{}", *req.grid)) : std::nullopt, "--grid", "min-pitch");
-    only_for(req.limit ? std::optional<std::string>(fmt::format("{}", *req.limit)) : std::nullopt, "--limit", "max-speed");
-    const bool windowed = has_measure(measures, "collide") || has_measure(measures, "turnaround") ||
-                          has_measure(measures, "max-speed");
-    for (const auto& [given, flag] : {std::pair{req.from, "--from"}, std::pair{req.to, "--to"}})
-        if (given && !windowed)
-            throw InputError(fmt::format("{} {} is not allowed: it sets the window of collide, turnaround and "
-                                         "max-speed, and this sweep measures none of them", flag, *given));
-    for (const Axis& a : grid.axes())
-        if (flags.given() & a.parameter->value)
-            throw InputError(fmt::format("--{} is not allowed: the sweep varies it (--vary {}=...); give it one way",
-                                         a.parameter->name, a.parameter->name));
-    const ScenarioValues fixed = reads & ~grid.varied();
-    Scenario base = flags.resolve(fixed, fmt::format("no measure of this sweep ({}) reads it", measure_names(measures)));
-    base.path.kind = PathKind::spiral;
-    MeasureOptions options;
-    if (req.lo) options.lo = parse_pitch_bound("--lo", *req.lo);
-    if (req.hi) options.hi = parse_pitch_bound("--hi", *req.hi);
-    if (req.grid) options.grid = *req.grid;
-    if (req.limit) options.limit = *req.limit;
-    if (req.from) options.from = parse_along("--from", *req.from);
-    if (req.to) options.to = parse_along("--to", *req.to);
-    check_options(options, measures, [](const char* option) { return fmt::format("--{}", option); });
-    return {std::move(grid), std::move(measures), base, fixed, options, parse_shard(req.shard.empty() ? "1/1" : req.shard)};
+    const SweepAsked asked{req.vary, req.measures, req.lo,   req.hi, req.grid,
+                           req.limit, req.from,     req.to, req.shard, flags.given()};
+    const SweepWords words{[](const char* option) { return fmt::format("--{}", option); },
+                           [](const char* value) { return fmt::format("--{}", value); }};
+    return make_sweep_setup(asked, words, [&](ScenarioValues fixed, const std::string& why) {
+        return flags.resolve(fixed, why);
+    });
 }
 
 }  // namespace dragon::cli

@@ -115,4 +115,13 @@ void commit_together(const std::vector<AtomicFile*>& files) {
     }
 }
 
+void write_text_file(AtomicFile& out, const std::string& text) {
+    errno = 0;
+    std::FILE* f = std::fopen(out.temp_path().c_str(), "wb");
+    if (!f) throw out.write_error(std::strerror(errno));
+    const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    const int err = errno;
+    if (std::fclose(f) != 0 || !ok) throw out.write_error(std::strerror(ok ? errno : err));
+}
+
 }  // namespace dragon

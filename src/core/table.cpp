@@ -46,4 +46,18 @@ std::vector<Frame> simulate_table(const Simulation& sim, double t0, double t1, d
     return frames;
 }
 
+void simulate_at(const Simulation& sim, const std::vector<double>& times,
+                 const std::function<void(std::size_t, const Frame&)>& out, Executor* executor) {
+    for (double t : times) sim.require_valid(t, "time");
+    // Small sets stay on this thread (starting the workers would cost more than the frames).
+    InlineExecutor here(executor);
+    Executor& ex = times.size() < 64 ? here : executor_or_default(executor);
+    std::vector<Frame> scratch(static_cast<std::size_t>(ex.workers()));
+    ex.parallel_for(times.size(), [&](std::size_t k, int worker) {
+        Frame& f = scratch[static_cast<std::size_t>(worker)];
+        sim.frame_into(times[k], f);
+        out(k, f);
+    });
+}
+
 }  // namespace dragon

@@ -12,6 +12,9 @@
 #include "link_watch.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/constants.hpp"
+#include "dragon/errors.hpp"
+
+#include <fmt/format.h>
 
 namespace dragon {
 
@@ -228,11 +231,19 @@ Walk::Walk(const Path& path, const BenchSpec& spec, double from, double dir, dou
     // longest link, and moving back it stays there (all handles move with the head then).
     w.calm_head = path.curvature_bounded_before(kCalmBend / longest_link(spec));
     double s = from;
+    // A path calm everywhere (a turning space far wider than the longest link) bends no link
+    // enough to lose a root, in either direction.
+    if (w.calm_head == INFINITY) {
+        w.done = w.forever = true;
+        return;
+    }
     if (dir > 0.0 && s < w.calm_head) s = std::min(w.calm_head, end);
     if ((dir < 0.0 && s <= w.calm_head)) {
         w.done = w.forever = true;
         return;
     }
+    if (!std::isfinite(s))
+        throw SolverError(fmt::format("the valid-motion walk cannot start at head travel {} m", s));
     w.search.evaluate(s, w.cur);
     if (s == end) w.done = true;
 }

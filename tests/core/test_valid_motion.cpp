@@ -198,3 +198,15 @@ TEST(ValidMotion, GentleScenariosNeverJam) {
     EXPECT_EQ(r.to, sim.end_time());
     EXPECT_NO_THROW(sim.frame(r.to));
 }
+
+TEST(ValidMotion, ATurnWiderThanEveryLinkIsFollowedForEver) {
+    // A turning space of radius 20 m bends no link near its limit anywhere: the path is calm
+    // everywhere, the walk has nothing to do in either direction, and the dense scan agrees.
+    Scenario s;
+    s.path.kind = PathKind::turnaround;
+    s.path.turn_radius = 20.0;
+    const PathBuild b = make_path(s);
+    EXPECT_FALSE(find_jam(*b.path, s.bench, b.start_arc, 1.0, -INFINITY, INFINITY));
+    EXPECT_FALSE(find_jam(*b.path, s.bench, b.start_arc, 1.0, 0.0, -INFINITY));
+    expect_agree(*b.path, s, b.start_arc, -100.0, 100.0, "turn radius 20");
+}

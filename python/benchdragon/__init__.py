@@ -1,0 +1,483 @@
+"""benchdragon: exact simulation, collisions, pictures and films of the Bench Dragon.
+
+The Bench Dragon is Problem A of the 2024 China Undergraduate Mathematical Contest in Modeling:
+a chain of 223 benches (224 handles) coiling in along an Archimedean spiral, turning around on an
+S-curve and coiling out again. This package is the benchdragon C++ library, the same one the
+``dragon`` tool runs, as Python data:
+
+>>> import benchdragon as bd
+>>> round(bd.collide(bd.Scenario()).time, 6)
+412.473838
+
+Lengths are in metres, times in seconds, speeds in m/s. A scenario's values are the tool's
+scenario flags in snake_case (``--bench-count`` is ``bench_count``). Windows of the motion
+(``from_``, ``to``) take seconds, or head travel as a string (``"-100m"``): the chain's shape
+depends on the head's travel alone, so every geometric answer is the same at any head speed.
+
+Answers are result objects whose keys are attributes too and whose ``to_dict()`` equals the
+tool's ``--json`` for the same scenario; frames are numpy arrays; sweeps are pandas DataFrames,
+computed on any ``concurrent.futures.Executor`` (a Dask ``distributed.Client`` too). Long calls
+release the GIL and stop on Ctrl-C (KeyboardInterrupt).
+
+Errors: ``InputError`` (a ``ValueError``: ``.field``, ``.value``, ``.allowed``, and ``.jam``
+for a moment past the end of the dragon's valid motion), ``FileError`` (an ``OSError``),
+``SolverError`` (a ``RuntimeError``).
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import os
+import threading
+from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
+
+from . import _benchdragon as _core
+from ._benchdragon import FileError, InputError, SolverError
+
+__version__ = "0.1.0"
+__all__ = [
+    "Scenario", "Simulation", "Frame", "Frames", "ValidRange", "Result", "CollideResult", "MinPitchResult",
+    "TurnaroundResult", "MaxSpeedResult", "SolveResult", "collide", "min_pitch", "turnaround", "max_speed",
+    "solve", "sweep", "InputError", "FileError", "SolverError", "ASSETS",
+]
+
+#: The package's own assets (colour themes, scenario presets, storyboards).
+ASSETS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "assets")
+
+Moment = Union[None, float, str]
+
+
+# ---- Scenarios -------------------------------------------------------------------------------
+
+
+class Scenario:
+    """A dragon, its path and its head's speed.
+
+    Keyword values, each the ``dragon`` tool's scenario flag in snake_case, over the contest's
+    defaults: ``pitch`` (0.55 m, the plain spiral's), ``speed`` (1 m/s, the head's),
+    ``bench_count`` (223, head and tail included), ``head_length`` (3.41 m), ``body_length``
+    (2.2 m), ``width`` (0.3 m), ``hole_offset`` (0.275 m), ``start_turn`` (16), ``turn_radius``
+    (4.5 m), ``turn_pitch`` (1.7 m, the turnaround's spirals) and ``arc_ratio`` (2).
+
+    Each value is checked on its own range when the scenario is made (``InputError`` names it);
+    rules between values (the pitch above the bench width) are checked where a computation reads
+    them, as the tool does. Scenarios are immutable, compare equal by value, hash, and pickle.
+    """
+
+    __slots__ = ("_values",)
+
+    def __init__(self, **values: float) -> None:
+        object.__setattr__(self, "_values", _core._scenario(values))
+
+    @classmethod
+    def from_toml(cls, path: Union[str, os.PathLike], **overrides: float) -> "Scenario":
+        """The scenario a TOML file describes (as ``dragon --scenario FILE``), keywords over it."""
+        values, _given = _core._scenario_from_toml(os.fspath(path))
+        return cls(**{**values, **overrides})
+
+    def replace(self, **changes: float) -> "Scenario":
+        """This scenario with some values changed."""
+        return Scenario(**{**self._values, **changes})
+
+    def to_dict(self) -> dict:
+        """Every value, by keyword."""
+        return dict(self._values)
+
+    def __getattr__(self, name: str) -> Any:
+        try:
+            return self._values[name]
+        except KeyError:
+            raise AttributeError(f"Scenario has no value {name!r}") from None
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError("a Scenario is immutable: use replace()")
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Scenario) and self._values == other._values
+
+    def __hash__(self) -> int:
+        return hash(tuple(sorted(self._values.items())))
+
+    def __reduce__(self):
+        return (Scenario._from_values, (dict(self._values),))
+
+    @staticmethod
+    def _from_values(values: dict) -> "Scenario":
+        return Scenario(**values)
+
+    def __repr__(self) -> str:
+        default = _core._scenario({})
+        changed = ", ".join(f"{k}={v!r}" for k, v in self._values.items() if default[k] != v)
+        return f"Scenario({changed})"
+
+    def __dir__(self):
+        return sorted(set(super().__dir__()) | set(self._values))
+
+
+def _values(scenario: Optional[Scenario]) -> dict:
+    if scenario is None:
+        return {}
+    if not isinstance(scenario, Scenario):
+        raise TypeError(f"expected a Scenario, got {type(scenario).__name__}")
+    return scenario.to_dict()
+
+
+# ---- Results ---------------------------------------------------------------------------------
+
+
+class Result(dict):
+    """An answer: a dict of the tool's ``--json`` keys, each also an attribute.
+
+    Keys that are Python keywords take a trailing underscore as attributes (``r.from_`` is
+    ``r["from"]``). ``to_dict()`` is a plain copy, equal to ``json.loads`` of the command's
+    ``--json`` for the same scenario.
+    """
+
+    def __getattr__(self, name: str) -> Any:
+        if name in self:
+            return self[name]
+        if name.endswith("_") and name[:-1] in self:
+            return self[name[:-1]]
+        raise AttributeError(f"{type(self).__name__} has no {name!r}")
+
+    def __dir__(self):
+        return sorted(set(super().__dir__()) | {k if k.isidentifier() and k != "from" else k + "_" for k in self})
+
+    def to_dict(self) -> dict:
+        return json.loads(json.dumps(self))
+
+    def __repr__(self) -> str:
+        keys = ", ".join(list(self)[:6])
+        return f"<{type(self).__name__}: {keys}{', ...' if len(self) > 6 else ''}>"
+
+
+class CollideResult(Result):
+    """Q2: the first contact (``dragon collide --json``).
+
+    ``time`` (s) and ``travel`` (m of head travel) of the first contact, or None; ``benches``
+    (the two touching, numbered from 1 at the head); ``head_radius`` (m); ``point`` (the contact
+    point, m); ``tolerance`` (s); the window searched (``from``/``to`` in s, ``from_travel``/
+    ``to_travel`` in m); ``jam`` (where the dragon's valid motion ended the search, or None);
+    ``handles`` (every handle then, rounded as the tool prints). ``frame`` (not in ``to_dict``)
+    is that moment as a :class:`Frame`.
+    """
+
+
+class MinPitchResult(Result):
+    """Q3: the smallest pitch reaching the turning space collision-free (``dragon min-pitch --json``).
+
+    ``pitch`` (m, to 1e-9 m), or None with ``below_range`` / ``above_range`` saying which side it
+    lies on; ``intervals`` (feasible and infeasible pitches over the range), ``grid``, ``jam``
+    and ``guarantee`` (what the search proves).
+    """
+
+
+class TurnaroundResult(Result):
+    """Q4: the S-curve, whether it can be shorter, its first contact and clearance (``dragon turnaround --json``)."""
+
+
+class MaxSpeedResult(Result):
+    """Q5: the largest head speed with every handle at or under the limit (``dragon max-speed --json``).
+
+    ``max_head_speed`` (m/s), ``ratio`` (the fastest handle over the head), ``handle`` and
+    ``tied`` (which reach it), ``time`` (s) and ``travel`` (m), the window, ``jam`` and
+    ``unbounded`` (a handle's speed without bound before the window ends).
+    """
+
+
+class SolveResult(Result):
+    """The contest's five questions (``dragon solve``'s summary.json): keys ``q1`` .. ``q5``."""
+
+
+class Jam(Result):
+    """The end of the dragon's valid motion: ``time`` (s), ``travel`` (m), ``handle`` (which
+    would have to jump), ``kind`` (``root_vanishes`` or ``nearer_root``, as time runs forward),
+    ``ahead`` (the motion is valid until it, else from it), ``point``, ``tolerance`` (s)."""
+
+
+def _jam(d: Optional[dict]) -> Optional[Jam]:
+    return None if d is None else Jam(d)
+
+
+# ---- Simulations -----------------------------------------------------------------------------
+
+
+class Frame:
+    """The whole chain at one moment, as numpy arrays (float64).
+
+    ``time`` (s), ``travel`` (m), ``positions`` (H, 2) and ``tangents`` (H, 2) of the H handles
+    (0: the head's front), ``speeds`` (H,) signed along the path (negative: backing up), and the
+    benches' rectangles: ``bench_centres`` (N, 2), ``bench_axes`` (N, 2, unit, rear to front) and
+    ``bench_half_sizes`` (N, 2: half length, half width).
+    """
+
+    __slots__ = ("time", "travel", "positions", "speeds", "tangents", "bench_centres", "bench_axes",
+                 "bench_half_sizes")
+
+    def __init__(self, d: dict) -> None:
+        for k in self.__slots__:
+            setattr(self, k, d[k])
+
+    def __repr__(self) -> str:
+        return f"<Frame t={self.time:g} s: {len(self.speeds)} handles>"
+
+
+class Frames:
+    """Frames at several moments: ``times`` (T,), ``positions`` (T, H, 2), ``speeds`` (T, H)."""
+
+    __slots__ = ("times", "positions", "speeds")
+
+    def __init__(self, times, positions, speeds) -> None:
+        self.times, self.positions, self.speeds = times, positions, speeds
+
+    def __len__(self) -> int:
+        return len(self.times)
+
+    def __repr__(self) -> str:
+        return f"<Frames: {self.positions.shape[0]} times x {self.positions.shape[1]} handles>"
+
+
+class ValidRange:
+    """Where the dragon can follow its path: ``from_`` .. ``to`` (s; -inf/inf when it never
+    stops), the same as head travel (``from_travel``, ``to_travel``, m), and the :class:`Jam`
+    that ends it on each side (``before``, ``after``), or None."""
+
+    __slots__ = ("from_", "to", "from_travel", "to_travel", "before", "after")
+
+    def __init__(self, d: dict) -> None:
+        self.from_, self.to = d["from"], d["to"]
+        self.from_travel, self.to_travel = d["from_travel"], d["to_travel"]
+        self.before, self.after = _jam(d["before"]), _jam(d["after"])
+
+    def __repr__(self) -> str:
+        return f"<ValidRange {self.from_:g} .. {self.to:g} s>"
+
+
+class Simulation:
+    """A scenario made runnable on a path: ``"spiral"`` (the contest's Q1-Q3) or ``"turnaround"``
+    (Q4, Q5; t = 0 where the head enters the S-curve).
+
+    Moments past the end of the dragon's valid motion (where a handle would have to jump) raise
+    ``InputError`` with ``.jam``. A Simulation may be shared by threads.
+    """
+
+    def __init__(self, scenario: Optional[Scenario] = None, path: str = "spiral") -> None:
+        self.scenario = scenario if scenario is not None else Scenario()
+        self.path = path
+        self._sim = _core._Simulation(_values(self.scenario), path)
+
+    @property
+    def valid_range(self) -> ValidRange:
+        """Where the dragon can follow its path (searched once, then kept)."""
+        return ValidRange(self._sim.valid_range())
+
+    def frame(self, t: float) -> Frame:
+        """The chain at time t (s)."""
+        return Frame(self._sim.frame(float(t)))
+
+    def frames(self, times: Iterable[float]) -> Frames:
+        """The chain at each of `times` (s), computed in parallel straight into numpy arrays."""
+        return Frames(*self._sim.frames(_as_times(times)))
+
+    def to_pandas(self, times: Iterable[float]):
+        """The frames at `times` in the tool's CSV layout: one row per handle per time, columns
+        ``t, handle, x, y, speed`` (unrounded)."""
+        import numpy as np
+        import pandas as pd
+
+        f = self.frames(times)
+        t_count, h_count = f.speeds.shape
+        return pd.DataFrame({
+            "t": np.repeat(f.times, h_count),
+            "handle": np.tile(np.arange(h_count), t_count),
+            "x": f.positions[:, :, 0].ravel(),
+            "y": f.positions[:, :, 1].ravel(),
+            "speed": f.speeds.ravel(),
+        })
+
+    def time_of(self, travel: float) -> float:
+        """The time (s) at which the head has travelled `travel` metres from its place at t = 0."""
+        return self._sim.time_of(float(travel))
+
+    def __repr__(self) -> str:
+        return f"Simulation({self.scenario!r}, path={self.path!r})"
+
+
+def _as_times(times: Iterable[float]):
+    import numpy as np
+
+    return np.ascontiguousarray(np.asarray(list(times) if not hasattr(times, "__array__") else times, dtype=float))
+
+
+# ---- Progress --------------------------------------------------------------------------------
+
+
+def _progress(progress, unit: str, description: str):
+    """A (callback, closer) pair: the callback hears (done, total). progress=True shows a tqdm
+    bar when tqdm is installed; a callable is called as is; False or None shows nothing."""
+    if callable(progress):
+        return progress, lambda: None
+    if not progress:
+        return None, lambda: None
+    try:
+        from tqdm.auto import tqdm
+    except ImportError:
+        return None, lambda: None
+    bar = None
+
+    def update(done: int, total: int) -> None:
+        nonlocal bar
+        if bar is None:
+            bar = tqdm(total=total, unit=unit, desc=description, leave=False)
+        bar.n = done
+        bar.refresh()
+
+    return update, lambda: bar.close() if bar is not None else None
+
+
+# ---- The contest's questions -----------------------------------------------------------------
+
+
+def collide(scenario: Optional[Scenario] = None, *, path: str = "spiral", from_: Moment = None,
+            to: Moment = None) -> CollideResult:
+    """Q2: the first moment two non-adjacent benches touch, to 1e-9 s (``dragon collide``).
+
+    Searched over `from_` .. `to` (seconds, or head travel as "-100m"): by default on the plain
+    spiral from t = 0 as far as the dragon can follow it, on the turnaround path 100 m of head
+    travel either side of the turn. Raises InputError when benches already overlap where the
+    search starts (their first contact lies before it).
+    """
+    text, frame = _core._collide(_values(scenario), path, from_, to)
+    result = CollideResult(json.loads(text))
+    result.frame = Frame(frame) if frame is not None else None
+    return result
+
+
+def min_pitch(scenario: Optional[Scenario] = None, *, lo: float = 0.35, hi: float = 0.55, grid: float = 0.0025,
+              progress: Union[bool, Callable[[int, int], None], None] = True) -> MinPitchResult:
+    """Q3: the smallest pitch (m) with which the head reaches the turning space collision-free
+    (``dragon min-pitch``), searched over `lo` .. `hi` on a first scan of spacing `grid`, each
+    change of feasibility narrowed to 1e-9 m. `progress` hears the first scan's runs."""
+    callback, close = _progress(progress, "pitches", "min_pitch")
+    try:
+        return MinPitchResult(json.loads(_core._min_pitch(_values(scenario), float(lo), float(hi), float(grid),
+                                                          callback)))
+    finally:
+        close()
+
+
+def turnaround(scenario: Optional[Scenario] = None, *, from_: Moment = None, to: Moment = None,
+               clearance: bool = True,
+               progress: Union[bool, Callable[[int, int], None], None] = True) -> TurnaroundResult:
+    """Q4: the S-curve's design, whether it can be shorter (its length against the radius ratio
+    and the entry radius, and whether this dragon can follow each), and over `from_` .. `to`
+    (default: 100 m of head travel either side of the turn) its first contact and the smallest
+    clearance before it (``dragon turnaround``; `clearance=False` leaves that check out)."""
+    callback, close = _progress(progress, "samples", "turnaround")
+    try:
+        return TurnaroundResult(json.loads(_core._turnaround(_values(scenario), from_, to, bool(clearance), callback)))
+    finally:
+        close()
+
+
+def max_speed(scenario: Optional[Scenario] = None, *, limit: float = 2.0, from_: Moment = None,
+              to: Moment = None) -> MaxSpeedResult:
+    """Q5: the largest head speed (m/s) keeping every handle at or under `limit` (m/s) over the
+    turnaround's window (default: 100 m of head travel either side of the turn) (``dragon max-speed``)."""
+    return MaxSpeedResult(json.loads(_core._max_speed(_values(scenario), float(limit), from_, to)))
+
+
+def solve(scenario: Optional[Scenario] = None, out: Union[None, str, os.PathLike] = None, *,
+          only: Optional[Sequence[Union[int, str]]] = None, lo: Optional[float] = None, hi: Optional[float] = None,
+          grid: float = 0.0025, limit: float = 2.0, from_: Moment = None, to: Moment = None) -> SolveResult:
+    """The contest's five questions (``dragon solve``): the result is summary.json's content. With
+    `out`, result1/2/4.xlsx and summary.json are written there too, all new or all as they were.
+    `only` picks questions (``[1, 4]`` or ``["q1", "q4"]``); `lo`, `hi`, `grid` are Q3's range
+    and scan, `limit` Q5's, `from_`/`to` the window of Q4's table and Q5's search."""
+    questions = []
+    for q in only or []:
+        questions.append(int(q[1:]) if isinstance(q, str) and q[:1] in "qQ" else int(q))
+    text = _core._solve(_values(scenario), None if out is None else os.fspath(out), questions, lo, hi, float(grid),
+                        float(limit), from_, to)
+    return SolveResult(json.loads(text))
+
+
+# ---- Sweeps ----------------------------------------------------------------------------------
+
+
+def _axis(name: str, spec: Any) -> str:
+    flag = name.replace("_", "-")
+    if isinstance(spec, str):
+        return f"{flag}={spec}"
+    if isinstance(spec, (int, float)):
+        spec = [spec]
+    return f"{flag}=" + ",".join(repr(int(v)) if float(v).is_integer() and flag == "bench-count" else repr(float(v))
+                                 for v in spec)
+
+
+def _sweep_rows(spec: str, indices: Sequence[int], stop: Optional[Callable[[], bool]] = None) -> list:
+    """A chunk of a sweep's rows (CSV lines), by index: what an executor's worker runs. Only
+    text and numbers cross to it, so it runs in another process or on a Dask worker too."""
+    return _core._sweep_rows(spec, list(indices), stop)
+
+
+def sweep(vary: Mapping[str, Any], measure: Union[str, Sequence[str]], fixed: Optional[Mapping[str, float]] = None,
+          *, lo: Union[None, float, str] = None, hi: Union[None, float, str] = None, grid: Optional[float] = None,
+          limit: Optional[float] = None, from_: Moment = None, to: Moment = None, executor: Any = None,
+          chunk: Optional[int] = None,
+          progress: Union[bool, Callable[[int, int], None], None] = True):
+    """Answers over the design space (``dragon sweep``), as a pandas DataFrame with the tool's
+    columns: a column per varied value, then each measure's answer with its keys prefixed by the
+    measure (``min-pitch.pitch``), then ``status``; a row per scenario, in the grid's order (the
+    first value varies slowest).
+
+    `vary` maps a scenario value (a Scenario keyword) to ``"FROM:TO:COUNT"`` or a sequence of
+    values; `measure` is one or more of collide, min-pitch, turnaround, max-speed; `fixed` holds
+    the other values (Scenario keywords). `lo`, `hi` (a pitch, or "width+X"), `grid` are
+    min-pitch's, `limit` max-speed's, `from_`/`to` the window of collide, turnaround and
+    max-speed. The rows are computed in chunks on `executor`: any object with
+    ``submit(fn, *args)`` returning futures with ``result()`` (a ThreadPoolExecutor, a
+    ProcessPoolExecutor, a Dask ``distributed.Client``, mpi4py's MPIPoolExecutor); by default a
+    thread pool with a worker per core (the rows release the GIL).
+    """
+    import pandas as pd
+
+    measures = [measure] if isinstance(measure, str) else list(measure)
+    spec, header, count = _core._sweep_setup([_axis(k, v) for k, v in vary.items()], measures, dict(fixed or {}),
+                                             lo, hi, grid, limit, from_, to)
+    workers = os.cpu_count() or 1
+    if chunk is None:
+        chunk = max(1, min(64, count // (4 * workers) or 1))
+    chunks = [list(range(k, min(count, k + chunk))) for k in range(0, count, chunk)]
+    own = executor is None
+    if own:
+        from concurrent.futures import ThreadPoolExecutor
+
+        executor = ThreadPoolExecutor(max_workers=workers)
+    threads = own or type(executor).__name__ == "ThreadPoolExecutor"
+    stopping = threading.Event()
+    callback, close = _progress(progress, "scenarios", "sweep")
+    lines: list = [None] * len(chunks)
+    try:
+        futures = [executor.submit(_sweep_rows, spec, c, stopping.is_set if threads else None) for c in chunks]
+        done = 0
+        try:
+            for k, f in enumerate(futures):
+                lines[k] = f.result()
+                done += len(chunks[k])
+                if callback:
+                    callback(done, count)
+        except BaseException:
+            stopping.set()
+            for f in futures:
+                f.cancel()
+            raise
+    finally:
+        close()
+        if own:
+            executor.shutdown(wait=True, cancel_futures=True)
+    text = ",".join(header) + "\n" + "".join(line + "\n" for chunk_lines in lines for line in chunk_lines)
+    frame = pd.read_csv(io.StringIO(text))
+    frame.attrs["sweep"] = spec[len("# dragon sweep "):]
+    return frame

@@ -1,0 +1,147 @@
+// The contest's questions: each the library's analysis and the library's JSON answer (the text
+// the tool prints for --json), which Python turns into its result objects.
+#include <pybind11/functional.h>
+#include <pybind11/stl.h>
+
+#include <filesystem>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "common.hpp"
+#include "dragon/answers.hpp"
+#include "dragon/atomic_file.hpp"
+#include "dragon/contest.hpp"
+#include "dragon/sweep_setup.hpp"
+#include "dragon/tables.hpp"
+#include "dragon/turnaround.hpp"
+
+namespace dragon::python {
+
+py::dict frame_object(const Simulation& sim, const Frame& f);
+
+namespace {
+
+// A progress callback from Python (or None): called with (done, total) while the GIL is held.
+WorkProgress progress_from(const py::object& callback) {
+    if (callback.is_none()) return {};
+    auto fn = std::make_shared<py::object>(callback);
+    return [fn](std::int64_t done, std::int64_t total) {
+        py::gil_scoped_acquire acquire;
+        (*fn)(done, total);
+    };
+}
+
+}  // namespace
+
+void bind_answers(py::module_& m) {
+    m.def("_collide",
+          [](const py::dict& scenario, const std::string& path, const py::object& from, const py::object& to) {
+              Scenario s = scenario_from(scenario);
+              s.path.kind = path_kind(path);
+              const RunWindow window = window_from(default_window(s.path.kind), from, to);
+              const Simulation sim(s);
+              const CollideAnswer a = interruptible([&](Executor& ex) { return collide(sim, window, &ex); });
+              return py::make_tuple(json_text(collide_answer(a, true)),
+                                    a.contact ? py::object(frame_object(sim, a.contact->frame)) : py::none());
+          },
+          py::arg("scenario"), py::arg("path"), py::arg("from_"), py::arg("to"));
+
+    m.def("_min_pitch",
+          [](const py::dict& scenario, double lo, double hi, double grid, const py::object& progress) {
+              Scenario s = scenario_from(scenario);
+              s.path.kind = PathKind::spiral;
+              MinPitchOptions o;
+              o.grid = grid;
+              o.progress = progress_from(progress);
+              const MinPitch mp = interruptible([&](Executor& ex) {
+                  o.executor = &ex;
+                  return min_pitch(s, lo, hi, o);
+              });
+              return json_text(min_pitch_answer(mp, s.path.turn_radius));
+          },
+          py::arg("scenario"), py::arg("lo"), py::arg("hi"), py::arg("grid"), py::arg("progress"));
+
+    m.def("_turnaround",
+          [](const py::dict& scenario, const py::object& from, const py::object& to, bool clearance,
+             const py::object& progress) {
+              Scenario s = scenario_from(scenario);
+              s.path.kind = PathKind::turnaround;
+              const RunWindow window = window_from(kTurnaroundWindow, from, to);
+              const WorkProgress report = progress_from(progress);
+              return interruptible([&](Executor& ex) {
+                  const TurnaroundStudy st = study_turnaround(s);
+                  std::optional<RunClearance> clear;
+                  if (clearance) clear = min_clearance(s, window, report, &ex);
+                  return json_text(turnaround_answer(st.design, st.design_jam, clear, &st));
+              });
+          },
+          py::arg("scenario"), py::arg("from_"), py::arg("to"), py::arg("clearance"), py::arg("progress"));
+
+    m.def("_max_speed",
+          [](const py::dict& scenario, double limit, const py::object& from, const py::object& to) {
+              Scenario s = scenario_from(scenario);
+              s.path.kind = PathKind::turnaround;
+              const RunWindow window = window_from(kTurnaroundWindow, from, to);
+              return interruptible(
+                  [&](Executor& ex) { return json_text(max_speed_answer(max_head_speed(s, limit, window, &ex), limit)); });
+          },
+          py::arg("scenario"), py::arg("limit"), py::arg("from_"), py::arg("to"));
+
+    // The contest's questions; with `out`, its files as `dragon solve -o out` writes them (all new
+    // or all as they were). Returns summary.json's text.
+    m.def("_solve",
+          [](const py::dict& scenario, const py::object& out, const std::vector<int>& only, const py::object& lo,
+             const py::object& hi, double grid, double limit, const py::object& from, const py::object& to) {
+              const Scenario s = scenario_from(scenario);
+              ContestOptions o;
+              if (!only.empty()) {
+                  o.questions.clear();
+                  for (int q : only) {
+                      if (q < 1 || q > 5) throw InputError("only", fmt::format("{}", q), "the questions are 1 to 5");
+                      o.questions.push_back(static_cast<Question>(q - 1));
+                  }
+              }
+              if (!lo.is_none()) o.pitch_lo = lo.cast<double>();
+              if (!hi.is_none()) o.pitch_hi = hi.cast<double>();
+              o.pitch_grid = grid;
+              o.speed_limit = limit;
+              o.turn_window = window_from(kTurnaroundWindow, from, to);
+              std::vector<std::unique_ptr<AtomicFile>> files;
+              AtomicFile *result1 = nullptr, *result2 = nullptr, *result4 = nullptr, *summary = nullptr;
+              if (!out.is_none()) {
+                  namespace fs = std::filesystem;
+                  const fs::path dir = py::str(out).cast<std::string>();
+                  if (!make_output_folder(dir.string()))
+                      throw FileError(dir.string(), "make the folder", "it cannot be made there");
+                  const auto target = [&](bool needed, const char* name) -> AtomicFile* {
+                      if (!needed) return nullptr;
+                      files.push_back(std::make_unique<AtomicFile>((dir / name).string()));
+                      return files.back().get();
+                  };
+                  result1 = target(o.asks(Question::q1), "result1.xlsx");
+                  result2 = target(o.asks(Question::q2), "result2.xlsx");
+                  result4 = target(o.asks(Question::q4), "result4.xlsx");
+                  summary = target(true, "summary.json");
+                  if (result1) o.on_q1_table = [result1](const std::vector<Frame>& t) { write_result_xlsx(t, *result1); };
+                  if (result4) o.on_q4_table = [result4](const std::vector<Frame>& t) { write_result_xlsx(t, *result4); };
+              }
+              return interruptible([&](Executor& ex) {
+                  o.executor = &ex;
+                  const ContestAnswers a = solve_contest(s, o);
+                  const std::string text = json_text(contest_summary(a, o), 2) + "\n";
+                  if (summary) {
+                      if (result2) write_result2_xlsx(a.q2 && a.q2->contact ? a.q2->contact->frame : Frame{}, *result2);
+                      write_text_file(*summary, text);
+                      std::vector<AtomicFile*> set;
+                      for (const auto& f : files) set.push_back(f.get());
+                      commit_together(set);
+                  }
+                  return text;
+              });
+          },
+          py::arg("scenario"), py::arg("out"), py::arg("only"), py::arg("lo"), py::arg("hi"), py::arg("grid"),
+          py::arg("limit"), py::arg("from_"), py::arg("to"));
+}
+
+}  // namespace dragon::python
