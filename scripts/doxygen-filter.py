@@ -19,6 +19,18 @@ import re
 import sys
 
 COMMENT_LINE = re.compile(r"^(\s*)//(?!/)(.*)$")
+TAG_LIKE = re.compile(r"<(?=[A-Za-z/!?])")
+LINE_END_DOTS = re.compile(r"(?<=\s)(\.+)\s*$")
+
+
+def plain(text):
+    """Comment text as Doxygen shows it as written: its command characters escaped (a backslash,
+    an at sign), a <word> kept as text rather than taken for an HTML tag, and dots ending a line
+    after a space (a range's 'a ..' going on below) kept as text rather than taken for the end
+    of a list (an empty HTML comment after them, which shows as nothing)."""
+    text = text.replace("\\", "\\\\").replace("@", "\\@")
+    text = TAG_LIKE.sub(r"\\<", text)
+    return LINE_END_DOTS.sub(r"\1<!-- -->", text)
 
 
 def trailing_comment(line):
@@ -36,6 +48,8 @@ def trailing_comment(line):
 
 
 DECLARATION = re.compile(r"^\s*(?!//|/\*|\*|#|\}|public:|private:|protected:)\S.*[;}]\s*(///<.*)?$")
+# Destructors and deleted copies say what they are by their form: a group stops before them.
+BY_FORM = re.compile(r"^\s*(~\w+\(\)|.*=\s*delete\s*;)")
 DEFAULTED_EQUALITY = re.compile(r"^(\s*)(bool operator==\(.*\) const = default;)\s*$")
 
 
@@ -49,7 +63,7 @@ def group_declarations(out):
             while j + 1 < len(out) and out[j + 1].lstrip().startswith("///") and not out[j + 1].lstrip().startswith("///<"):
                 j += 1
             k = j + 1
-            while k < len(out) and DECLARATION.match(out[k]) and "///<" not in out[k]:
+            while k < len(out) and DECLARATION.match(out[k]) and "///<" not in out[k] and not BY_FORM.match(out[k]):
                 k += 1
             if k - (j + 1) >= 2:
                 # The group opens on a line of its own before the comment (a blank line there
@@ -78,16 +92,16 @@ def main(path):
         m = COMMENT_LINE.match(line)
         if at_top:
             if m:
-                file_doc.append(m.group(2))
+                file_doc.append(plain(m.group(2)))
                 out.append("")
                 continue
             at_top = False
         if m:
             if continuation >= 0 and len(m.group(1)) == continuation:
-                out.append(m.group(1) + "///<" + m.group(2))
+                out.append(m.group(1) + "///<" + plain(m.group(2)))
                 continue
             continuation = -1
-            out.append(m.group(1) + "///" + m.group(2))
+            out.append(m.group(1) + "///" + plain(m.group(2)))
             continue
         eq = DEFAULTED_EQUALITY.match(line)
         if eq:  # says what it is by its form: member-wise equality
@@ -98,7 +112,7 @@ def main(path):
         code = line[:col].rstrip() if col >= 0 else line
         member = code.strip() and not code.endswith("{") and not code.lstrip().startswith(("}", "#"))
         if col >= 0 and member and not line.startswith("///", col):
-            out.append(line[:col] + "///<" + line[col + 2:])
+            out.append(line[:col] + "///<" + plain(line[col + 2:]))
             continuation = col
         else:
             out.append(line)
