@@ -30,8 +30,11 @@ RunWindow default_window(PathKind kind);
 // A window cut to the valid motion: the head travel looked at, and where the end of the valid
 // motion cut the window short.
 struct WindowCut {
-    double from = 0.0, to = 0.0;       // m of head travel
-    std::optional<Jam> before, after;  // the jams that cut it at each end
+    double from = 0.0;          // m of head travel
+    double to = 0.0;            // m of head travel
+    std::optional<Jam> before;  // the jam that cut its start
+    std::optional<Jam> after;   // the jam that cut its end
+    // The same window in time too, at this head speed (m/s).
     Searched searched(double head_speed) const;
 };
 // Throws InputError ("time range start", "time range end": the end as given) for an end that is
@@ -54,9 +57,10 @@ void simulate_at(const Simulation& sim, const std::vector<double>& times,
 // contact (its benches, point, head radius, travel) is the same at any head speed and its time
 // is travel / speed.
 struct Contact {
-    double time;
-    int bench_a, bench_b;
-    double head_radius;
+    double time;                // s
+    int bench_a;                // the touching pair's first bench, 1..N
+    int bench_b;                // and its second, bench_a < bench_b
+    double head_radius;         // m: the head front handle's distance from the origin then
     Vec2 point = Vec2::Zero();  // contact witness point
     Frame frame;    // the whole chain at that moment (speeds at the scenario's head speed)
     int steps = 0;  // clearance evaluations the search used
@@ -69,7 +73,8 @@ struct Contact {
 // The search takes the range in stretches of head travel cut at fixed places (multiples of
 // 10 m), spread over the executor's workers: the answer, and the work it took, do not depend on
 // the number of workers, nor on which one finished first.
-using StepObserver = std::function<void(double from, double to)>;
+using StepObserver = std::function<void(double from, double to)>;  // a contact-free stretch, m of head travel
+// How first_contact searches: where it runs, and what it tells or skips.
 struct ContactSearchOptions {
     // If given, hears of every interval [from, to] the search has declared contact-free by its
     // bounds (without looking inside), in order; the search then runs on the calling thread.
@@ -90,7 +95,7 @@ std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from
 
 // Q2 as `dragon collide` asks it: the first contact over a window, cut to the valid motion.
 struct CollideAnswer {
-    std::optional<Contact> contact;
+    std::optional<Contact> contact;  // none: nothing touched in the window searched
     RunWindow asked;   // the window as given
     Searched window;   // the stretch searched: the window cut to the valid motion
     // The end of the valid motion where it cut the window short and nothing touched before it.
@@ -104,8 +109,10 @@ struct CollideAnswer {
 // window's start for a command (field "time range start"); a verdict on the scenario for a
 // sweep's map, as min-pitch calls such a pitch "collides".
 struct OverlapAtStart : InputError {
+    // `start`: the window's start as given ("0 m", "420"); benches a < b overlap by `overlap` m.
     OverlapAtStart(const std::string& start, int a, int b, double overlap);
-    int bench_a, bench_b;
+    int bench_a;   // 1..N
+    int bench_b;   // 1..N, bench_a < bench_b
     double depth;  // how deep they overlap, m
 };
 // Throws InputError as cut_window does, and OverlapAtStart when two benches already overlap
@@ -130,28 +137,32 @@ double boundary_travel(const Simulation& sim);
 
 // Q3: smallest pitch for which the head reaches the turning-space boundary without a collision.
 struct PitchInterval {
-    double lo, hi;
-    bool feasible;
+    double lo;      // m
+    double hi;      // m
+    bool feasible;  // whether the pitches inside reach the boundary untouched
 };
 // A pitch at which the dragon cannot follow the spiral to the boundary at all.
 struct PitchJam {
-    double pitch;
-    Jam jam;
+    double pitch;  // m
+    Jam jam;       // where the valid motion ended at that pitch
 };
+// Q3's answer: the smallest feasible pitch and the feasibility of the whole range searched.
 struct MinPitch {
     // The smallest feasible pitch: where the first feasible interval begins, when that is a
     // change found inside the range. NaN when the range holds no such change: below_range (the
     // range's low end is already feasible, so the answer lies at or below it) or above_range
     // (no pitch in the range is feasible).
     double pitch;
-    bool below_range = false, above_range = false;
+    bool below_range = false;  // feasible already at the range's low end
+    bool above_range = false;  // nothing in the range is feasible
     std::vector<PitchInterval> intervals;  // alternating feasible / infeasible over the range
-    double search_lo, search_hi;
+    double search_lo;  // the range searched, m
+    double search_hi;  // m
     // The search's range must start above this pitch: the bench width, or where the head
     // would start on the turning space's edge (turn_radius / start_turn; lowest_is_start),
     // whichever is larger. A below_range answer lies between it and search_lo.
     double lowest = 0.0;
-    bool lowest_is_start = false;
+    bool lowest_is_start = false;  // `lowest` is the start on the turning space's edge, not the width
     double grid;                           // the first scan's pitch spacing, m
     // The largest pitch probed at which the run cannot reach the boundary because the valid
     // motion ends first (it is infeasible for that reason, not for a collision); none if no
@@ -162,10 +173,12 @@ struct MinPitch {
 // The run of the head to the boundary at one pitch: its first contact, else the end of the
 // valid motion if that comes before the boundary. Feasible when neither happens.
 struct BoundaryRun {
-    std::optional<Contact> contact;
-    std::optional<Jam> jam;
-    bool feasible() const { return !contact && !jam; }
+    std::optional<Contact> contact;  // the first contact before the boundary
+    std::optional<Jam> jam;          // the end of the valid motion before the boundary (and before any contact)
+    bool feasible() const { return !contact && !jam; }  // neither: the head reaches the boundary untouched
 };
+// `s` with its pitch set to `pitch` (m). Throws InputError when that pitch puts the head's start
+// inside the turning space, and as Simulation does for a scenario it refuses.
 BoundaryRun run_to_boundary(Scenario s, double pitch);
 // The first contact of that run (none also when the run jams first).
 std::optional<Contact> contact_before_boundary(Scenario s, double pitch);
@@ -175,7 +188,7 @@ inline constexpr double kDefaultPitchGrid = 2.5e-3;
 inline constexpr int kMaxPitchGridSteps = 100000;  // about 10 minutes of runs on 2 cores
 // `progress` hears of the first scan's runs, one per grid pitch (most of the time taken).
 struct MinPitchOptions {
-    double grid = kDefaultPitchGrid;
+    double grid = kDefaultPitchGrid;  // the first scan's pitch spacing, m
     WorkProgress progress;         // hears of the first scan's runs, one call per run
     Executor* executor = nullptr;  // runs the pitches in parallel; null: default_executor()
 };

@@ -21,6 +21,7 @@
 
 namespace dragon {
 
+// One output file, written to a temporary file beside it and put in place by commit().
 class AtomicFile {
 public:
     // Creates the (empty) temporary file now, so a bad path fails before any work: throws
@@ -34,7 +35,7 @@ public:
 
     // Where to write: a unique temporary path in the target's folder, same extension.
     const std::string& temp_path() const { return temp_; }
-    const std::string& target() const { return target_; }
+    const std::string& target() const { return target_; }  // the path asked for
     // Renames the temporary file over the target (or hands it to the open RunOutputs, which
     // will). Throws FileError on failure.
     void commit();

@@ -13,19 +13,20 @@
 
 namespace dragon {
 
+// A handle (the peg joining two benches) at one instant.
 struct Handle {
-    Vec2 pos = Vec2::Zero();
+    Vec2 pos = Vec2::Zero();      // m
     Vec2 tangent = Vec2::Zero();  // unit tangent of the path at the handle, direction of travel
     double speed;   // m/s, exact (rigid-link projection)
-    Place place;
+    Place place;    // where on the path: piece and parameter, for the next link's solve
 };
 
 // One instant: handles 0..N (0 = head front) and benches 1..N stored at index 0..N-1.
 struct Frame {
-    double time = 0.0;
-    double head_arc = 0.0;
-    std::vector<Handle> handles;
-    std::vector<Rect> benches;
+    double time = 0.0;            // s
+    double head_arc = 0.0;        // m: the head front handle's arc position on the path
+    std::vector<Handle> handles;  // N + 1, head front first
+    std::vector<Rect> benches;    // N, bench 1 (the head) first
 };
 
 // Fills `out` with the chain whose head front handle is at arc position head_arc moving at
@@ -40,9 +41,12 @@ Rect bench_rect(const BenchSpec& spec, int bench, const Vec2& front, const Vec2&
 
 // The stretch of time over which the dragon follows its path (dragon/valid_motion.hpp).
 struct ValidRange {
-    double from = 0.0, to = 0.0;       // s: the motion is continuous on [from, to]
-    double from_travel = 0.0, to_travel = 0.0;  // m of head travel: the same range
-    std::optional<Jam> before, after;  // what ends it at each side; nullopt: the path's end, or never
+    double from = 0.0;          // s: the motion is continuous on [from, to]
+    double to = 0.0;            // s
+    double from_travel = 0.0;   // m of head travel: the same range
+    double to_travel = 0.0;     // m
+    std::optional<Jam> before;  // what ends it before t = 0; nullopt: the path's end, or never
+    std::optional<Jam> after;   // what ends it after t = 0; nullopt: the path's end, or never
 };
 
 // A scenario made runnable: its path, and the head's arc position as a function of time.
@@ -55,16 +59,17 @@ struct ValidRange {
 // searched in travel, so it is the same event, bit for bit, at any head speed.
 class Simulation {
 public:
+    // Throws InputError (a ScenarioError) for a scenario validate() refuses.
     explicit Simulation(const Scenario& s);
 
-    const Scenario& scenario() const { return scenario_; }
-    const Path& path() const { return *path_; }
-    std::shared_ptr<const Path> shared_path() const { return path_; }
+    const Scenario& scenario() const { return scenario_; }              // as given
+    const Path& path() const { return *path_; }                         // the path the head follows
+    std::shared_ptr<const Path> shared_path() const { return path_; }  // the same, to keep (a Scene's guides)
 
     // Arc position of the head front handle at time t (t = 0: the start, or on the
     // turnaround path the moment the head begins the turn).
     double head_arc(double t) const { return start_arc_ + scenario_.head_speed * t; }
-    double start_arc() const { return start_arc_; }
+    double start_arc() const { return start_arc_; }  // head_arc(0), m
     // The head's travel from its place at t = 0 by time t, m, and the time of a travel, s.
     double travel(double t) const { return scenario_.head_speed * t; }
     double time_of(double travel) const { return travel / scenario_.head_speed; }
@@ -101,16 +106,21 @@ public:
     // Throws InputError (naming from_what or to_what) when an end lies off the path or the
     // range holds no valid moment.
     struct Span {
-        double from, to;
-        std::optional<Jam> jam;
+        double from;             // s
+        double to;               // s
+        std::optional<Jam> jam;  // the jam that cut it, if one did
     };
+    // [t0, t1], s, as a Span.
     Span clip_to_valid(double t0, double t1, const char* from_what, const char* to_what) const;
     // The same for a range of head travel [x0, x1], m, with the jam at each end that cut it, and
     // cut at the spiral's centre too.
     struct TravelSpan {
-        double from, to;
-        std::optional<Jam> before, after;
+        double from;                // m of head travel
+        double to;                  // m of head travel
+        std::optional<Jam> before;  // the jam that cut its start
+        std::optional<Jam> after;   // the jam that cut its end
     };
+    // [x0, x1], m, as a TravelSpan.
     TravelSpan clip_travel(double x0, double x1, const char* from_what, const char* to_what) const;
 
     // The chain at time t; throws InputError unless t is within the valid range (require_valid).
@@ -148,10 +158,11 @@ std::string describe(const Jam& j);
 // A moment past the end of the valid motion (Simulation::require_valid): the field and time,
 // and the jam, for an application to word (allowed() words it in the library's terms).
 struct PastTheValidMotion : InputError {
+    // The moment t, s, under `field`, past the jam j.
     PastTheValidMotion(const char* field, double t, const Jam& j);
     // The same for a value as given ("120 m" of head travel, say).
     PastTheValidMotion(const char* field, const std::string& value, const Jam& j);
-    Jam jam;
+    Jam jam;     // the end of the valid motion it lies past
     bool ahead;  // jam.ahead: the motion is valid until it, else from it
 };
 

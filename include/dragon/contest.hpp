@@ -21,8 +21,11 @@
 
 namespace dragon {
 
+// The contest's questions: Q1 the coiling-in table, Q2 the first contact, Q3 the minimum pitch,
+// Q4 the turnaround (its S-curve and table), Q5 the largest head speed.
 enum class Question { q1, q2, q3, q4, q5 };
 
+// Which questions to answer, over which windows and ranges, and on which threads.
 struct ContestOptions {
     // The questions to answer (all five by default).
     std::vector<Question> questions{Question::q1, Question::q2, Question::q3, Question::q4, Question::q5};
@@ -30,22 +33,25 @@ struct ContestOptions {
     RunWindow q1_window{Along::metres(0.0), Along::metres(300.0)};
     // Q3's pitch search: the range (unset: the contest's 0.35 to 0.55 m, moved up where the
     // scenario cannot use it; default_pitch_range) and the first scan's spacing.
-    std::optional<double> pitch_lo, pitch_hi;
-    double pitch_grid = kDefaultPitchGrid;
+    std::optional<double> pitch_lo;        // m
+    std::optional<double> pitch_hi;        // m
+    double pitch_grid = kDefaultPitchGrid;  // m
     // Q4's table and Q5's search: 100 m of head travel either side of the turn.
     RunWindow turn_window = kTurnaroundWindow;
     double speed_limit = 2.0;  // Q5, m/s
     // Called on a worker as soon as Q1's or Q4's table is ready (a workbook can be written while
     // the other questions are answered); it may throw, which ends the run with that error.
-    std::function<void(const std::vector<Frame>&)> on_q1_table, on_q4_table;
+    std::function<void(const std::vector<Frame>&)> on_q1_table;
+    // The same for Q4's table.
+    std::function<void(const std::vector<Frame>&)> on_q4_table;
     Executor* executor = nullptr;  // null: default_executor()
 
-    bool asks(Question q) const;
+    bool asks(Question q) const;  // whether `questions` holds q
 };
 
 // A table of frames at whole seconds over a window, cut to the valid motion.
 struct ContestTable {
-    std::vector<Frame> frames;
+    std::vector<Frame> frames;  // one per whole second, in order
     Searched window;          // the window asked for, cut to the valid motion
     double asked_to = 0.0;    // s: the window's end as asked (before the cut)
     double asked_from = 0.0;  // s
@@ -61,21 +67,23 @@ struct ContestTable {
 // else from just above the smallest usable pitch to 1.5 times it, or 0.55 m if more. `moved`
 // says the contest's range could not be used, and why.
 struct PitchRange {
-    double lo = 0.35, hi = 0.55;
+    double lo = 0.35;   // m
+    double hi = 0.55;   // m
     std::string moved;  // "" for the contest's own range
 };
-PitchRange default_pitch_range(const Scenario& s);
+PitchRange default_pitch_range(const Scenario& s);  // Q3's range for s, as above
 
+// Each question's answer, present when it was asked.
 struct ContestAnswers {
     Scenario scenario;  // as solved (the path kind is each question's own)
-    std::optional<ContestTable> q1;
-    std::optional<CollideAnswer> q2;
-    std::optional<MinPitch> q3;
-    std::optional<PitchRange> q3_range;
-    std::optional<SCurve> q4_design;
-    std::optional<ContestTable> q4;
+    std::optional<ContestTable> q1;          // the coiling-in table
+    std::optional<CollideAnswer> q2;         // the first contact
+    std::optional<MinPitch> q3;              // the minimum pitch
+    std::optional<PitchRange> q3_range;      // the range Q3 searched
+    std::optional<SCurve> q4_design;         // the turnaround's S-curve
+    std::optional<ContestTable> q4;          // the turnaround table
     std::optional<Jam> q4_jam;        // turnaround_jam: whether this dragon can follow the S-curve
-    std::optional<MaxSpeed> q5;
+    std::optional<MaxSpeed> q5;              // the largest head speed
 };
 
 // Answers the questions asked. Throws what the analyses throw for a value the scenario or the

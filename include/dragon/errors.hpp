@@ -40,8 +40,8 @@ class FileError : public std::runtime_error {
 public:
     // what() is "cannot {action} '{path}': {reason}".
     FileError(std::string path, std::string action, std::string reason);
-    const std::string& path() const { return path_; }
-    const std::string& reason() const { return reason_; }
+    const std::string& path() const { return path_; }      // the file, as named
+    const std::string& reason() const { return reason_; }  // why it failed (the system's words)
 
 private:
     std::string path_, reason_;

@@ -23,8 +23,8 @@ inline Vec2 perp(const Vec2& a) { return {-a.y(), a.x()}; }
 // Eigen's norm is a plain sqrt of the squared sum, not std::hypot: lengths here are metres, far
 // from overflow, and hypot is ~10x slower.
 inline double norm(const Vec2& a) { return a.norm(); }
-inline double distance(const Vec2& a, const Vec2& b) { return norm(a - b); }
-inline Vec2 normalized(const Vec2& a) { return a / norm(a); }
+inline double distance(const Vec2& a, const Vec2& b) { return norm(a - b); }  // |a - b|
+inline Vec2 normalized(const Vec2& a) { return a / norm(a); }                // a / |a|, for a != 0
 
 // An oriented rectangle: a bench board seen from above.
 struct Rect {

@@ -35,8 +35,8 @@ public:
     // limit (in `limit_words`, "1 MiB") when there is more.
     std::string read_rest(std::size_t max_bytes, const std::string& limit_words);
 
-    const std::string& path() const { return path_; }
-    const std::string& what() const { return what_; }
+    const std::string& path() const { return path_; }  // as given
+    const std::string& what() const { return what_; }  // what the file is, for messages ("the storyboard")
     // "<what> '<path>'", as messages start.
     std::string named() const;
 

@@ -9,6 +9,7 @@
 
 namespace dragon {
 
+// A JSON value whose objects keep their keys in the order written.
 using Json = nlohmann::ordered_json;
 
 // The value a computed double stands for: rounded to 15 significant digits (0.0025, not

@@ -16,9 +16,10 @@
 
 namespace dragon {
 
+// A place on a path: which piece, and the piece's own parameter there.
 struct Place {
-    int piece = 0;
-    double u = 0.0;
+    int piece = 0;   // 0 .. piece_count() - 1, in travel order
+    double u = 0.0;  // the piece's parameter: theta on a spiral, the angle about the centre on an arc (rad)
 };
 
 // What a spiral's chord solver learned placing this point, kept for the next link: the angle
@@ -28,25 +29,29 @@ struct Place {
 // same chord, and reaches the same root from any consistent guess (Chain.TheChordMemoIsOnlyAGuess).
 // Empty (chord 0) everywhere else.
 struct ChordMemo {
-    double theta = 0.0;
-    double chord = 0.0;
-    double angle = 0.0;
-    double cos_half = 1.0, sin_half = 0.0;
-    double drift = 0.0;
+    double theta = 0.0;     // rad: the place it was made at
+    double chord = 0.0;     // m: the chord it solved (0: empty)
+    double angle = 0.0;     // rad: the angle the chord spanned
+    double cos_half = 1.0;  // cos(angle / 2)
+    double sin_half = 0.0;  // sin(angle / 2)
+    double drift = 0.0;     // rad: the predicted change of `angle` for the next link
 };
 
 // A place with its point and unit tangent (pointing in the direction of travel).
 struct Located {
-    Place place;
-    Vec2 pos = Vec2::Zero();
-    Vec2 tangent = Vec2::Zero();
-    ChordMemo memo{};
+    Place place;                  // where
+    Vec2 pos = Vec2::Zero();      // m
+    Vec2 tangent = Vec2::Zero();  // unit
+    ChordMemo memo{};             // what the chord solver learned placing it (empty but on a spiral)
 };
 
+// A path the head follows: pieces joined end to end, each with its own parameter u, measured
+// by arc position s (m) in the direction of travel.
 class Path {
 public:
     virtual ~Path() = default;
 
+    // The point and unit tangent at a place.
     virtual Located at(Place p) const = 0;
     // Arc position of a place, and its inverse. at_arc requires s_min() <= s <= s_max().
     virtual double arc(Place p) const = 0;
@@ -72,6 +77,7 @@ public:
     // The piece's parameter u where it begins and where it ends, in travel order (infinite for
     // an endless piece).
     virtual std::pair<double, double> piece_span(int piece) const = 0;
+    // The least and largest |curvature| on the piece, 1/m.
     virtual std::pair<double, double> curvature_span(int piece) const = 0;
 
     // The nearest place behind `from` (largest s' < s(from)) whose straight-line distance
@@ -84,10 +90,10 @@ public:
 // L(theta) = (b/2) (theta sqrt(1 + theta^2) + asinh theta) is the arc length from the centre.
 class Spiral final : public Path {
 public:
-    explicit Spiral(double pitch);
+    explicit Spiral(double pitch);  // m between turns, > 0 (not checked here: validate() checks a scenario's)
 
-    double pitch() const { return pitch_; }
-    double b() const { return b_; }
+    double pitch() const { return pitch_; }  // m
+    double b() const { return b_; }          // pitch / 2pi, m per radian
 
     Located at(Place p) const override;
     double arc(Place p) const override;

@@ -8,6 +8,7 @@
 
 namespace dragon {
 
+// Called with the units of work done so far and the total; may be empty (nobody listening).
 using WorkProgress = std::function<void(std::int64_t done, std::int64_t total)>;
 
 }  // namespace dragon

@@ -20,27 +20,30 @@ namespace dragon {
 
 // A colour, components in [0, 1] (straight, not premultiplied).
 struct Rgba {
-    double r = 0, g = 0, b = 0, a = 1;
+    double r = 0;  // red
+    double g = 0;  // green
+    double b = 0;  // blue
+    double a = 1;  // opacity: 0 clear, 1 opaque
 };
 
 // Colours and type of a picture. The defaults are the light theme, so a Theme{} is usable
 // without any asset file.
 struct Theme {
-    std::string name = "light";
-    std::string font = "DejaVu Sans";
-    Rgba background{1, 1, 1};
-    Rgba text{0.13, 0.13, 0.15};
-    Rgba grid{0.85, 0.86, 0.88};
+    std::string name = "light";        // as load_theme was given it
+    std::string font = "DejaVu Sans";  // the text's family (characters it lacks come from a CJK fallback)
+    Rgba background{1, 1, 1};          // the picture's ground
+    Rgba text{0.13, 0.13, 0.15};       // every word and number
+    Rgba grid{0.85, 0.86, 0.88};       // plots' grid lines and frames
     Rgba guide{0.62, 0.66, 0.72};          // the coil-in spiral
     Rgba guide_out{0.55, 0.70, 0.62};      // the coil-out spiral (turnaround path)
     Rgba s_curve{0.80, 0.45, 0.10};        // the two arcs of the turnaround
     Rgba turning_space{0.35, 0.55, 0.85};  // outline of the turning-space disk
-    Rgba turning_fill{0.35, 0.55, 0.85, 0.07};
-    Rgba head{0.80, 0.16, 0.16};
-    Rgba body{0.96, 0.72, 0.30};
-    Rgba tail{0.30, 0.45, 0.75};
-    Rgba outline{0.25, 0.18, 0.10};
-    Rgba handle{0.12, 0.12, 0.14};
+    Rgba turning_fill{0.35, 0.55, 0.85, 0.07};  // inside the turning-space disk
+    Rgba head{0.80, 0.16, 0.16};       // bench 1
+    Rgba body{0.96, 0.72, 0.30};       // benches 2 .. N - 1
+    Rgba tail{0.30, 0.45, 0.75};       // bench N
+    Rgba outline{0.25, 0.18, 0.10};    // every bench's edge
+    Rgba handle{0.12, 0.12, 0.14};     // the handles' dots
     Rgba highlight{0.55, 0.30, 0.85};      // benches singled out (e.g. the broad phase's picks)
     Rgba collision{0.90, 0.05, 0.35};      // the touching benches
     Rgba contact{0.05, 0.05, 0.05};        // the contact point marker
@@ -60,18 +63,21 @@ Theme load_theme(const std::string& name_or_path, const std::string& asset_dir =
 // What part of the plane the picture shows. The view keeps the aspect ratio: the given extent
 // fits inside the image along both directions (y up, metres).
 struct Camera {
+    // What the camera keeps in view.
     enum class Mode {
         fit_dragon,   // the bounding box of all benches, plus a margin
         fixed,        // centre and extent as given
         follow_head,  // centred on the head front handle, extent as given
     };
-    Mode mode = Mode::fit_dragon;
+    Mode mode = Mode::fit_dragon;  // which of the three
     Vec2 centre = Vec2::Zero();  // fixed mode
     double extent = 0.0;  // fixed / follow_head: width and height of the square that must fit, m
     double margin = 0.04; // fit_dragon: fraction of the box added on every side
 
-    static Camera fit() { return {}; }
+    static Camera fit() { return {}; }  // the whole dragon
+    // A fixed view about c (m), extent_m metres across.
     static Camera at(const Vec2& c, double extent_m) { return {Mode::fixed, c, extent_m}; }
+    // A view following the head, extent_m metres across.
     static Camera follow(double extent_m) { return {Mode::follow_head, Vec2::Zero(), extent_m}; }
 };
 
@@ -85,6 +91,9 @@ inline constexpr double kMaxViewExtent = 1e8;         // m
 inline constexpr double kMaxViewCentre = 1e8;         // m, each coordinate
 inline constexpr double kMinPixelOverRadius = 1e-12;  // pixel size over the view's distance from the origin
 
+// What check_view finds wrong with a view, if anything (in the order of the paragraph above:
+// not finite; narrower than kMinViewExtent; wider than kMaxViewExtent; centred beyond
+// kMaxViewCentre; pixels finer than kMinPixelOverRadius allows).
 enum class ViewError { none, not_finite, too_narrow, too_wide, too_far, too_fine };
 // What is wrong with a view of view_width x view_height metres about `centre`, drawn on
 // width_px x height_px pixels (the view fits inside, aspect ratio kept).
@@ -94,21 +103,23 @@ double narrowest_view(const Vec2& centre, int width_px, int height_px);
 
 // Two benches that touch and where (from first_contact / clearance).
 struct CollisionMark {
-    int bench_a = 0;  // 1..N
-    int bench_b = 0;
-    Vec2 point = Vec2::Zero();
+    int bench_a = 0;            // 1..N
+    int bench_b = 0;            // 1..N
+    Vec2 point = Vec2::Zero();  // where they touch, m
 };
 
+// What make_scene draws and how: the camera, the colours and what the picture carries.
 struct SceneOptions {
-    Camera camera;
-    Theme theme;
-    bool colour_by_speed = false;
+    Camera camera;                  // the view
+    Theme theme;                    // the colours and type
+    bool colour_by_speed = false;   // benches coloured by their speed (with a colour bar)
     // Speed range of the colour map, m/s; unset: the frame's own minimum and maximum.
-    std::optional<double> speed_min, speed_max;
+    std::optional<double> speed_min;
+    std::optional<double> speed_max;  // m/s; unset: the frame's own maximum
     bool show_guides = true;         // the path: spiral(s) and S-curve
     bool show_turning_space = true;  // the turning-space circle
-    bool show_handles = true;
-    bool show_scale_bar = true;
+    bool show_handles = true;        // the handles' dots
+    bool show_scale_bar = true;      // a bar of a round number of metres
     bool show_colour_bar = true;     // only drawn when colouring by speed
     // All text (annotation, scale-bar and colour-bar labels). Golden tests switch it off.
     bool show_text = true;
@@ -126,7 +137,7 @@ struct SceneOptions {
     bool show_inset = false;
     // The inset's view; unset: the frame's whole dragon (a film fixes one for the clip).
     std::optional<Camera> inset_camera;
-    std::optional<CollisionMark> collision;
+    std::optional<CollisionMark> collision;  // two touching benches to mark, and where
     std::vector<int> highlight_benches;  // drawn in the theme's highlight colour
     // Benches lying across each other (past the first contact the chain overlaps itself): drawn
     // in the touching colour, each overlap's deepest corner marked, the deepest labelled with
@@ -146,17 +157,18 @@ inline constexpr double kTouchingDepth = 1e-6;  // m
 // Overlays figures add on top of the dragon (world coordinates; sizes in pixels at 800 px,
 // scaled with the image).
 struct Polyline {
-    std::vector<Vec2> points;
-    Rgba colour;
-    double width_px = 1.5;
-    bool dashed = false;
-    bool closed = false;
+    std::vector<Vec2> points;  // m
+    Rgba colour;               // the line's
+    double width_px = 1.5;     // the line's width
+    bool dashed = false;       // dashed, else solid
+    bool closed = false;       // back to the first point
     bool arrow = false;  // an arrowhead at the last point
 };
+// A dot (or ring) at a point.
 struct Marker {
-    Vec2 pos = Vec2::Zero();
-    Rgba colour;
-    double radius_px = 4.0;
+    Vec2 pos = Vec2::Zero();  // m
+    Rgba colour;              // its colour
+    double radius_px = 4.0;   // its radius
     bool ring = false;  // an open circle instead of a dot
 };
 // A label names a point. draw() places it by one rule rather than by its offset alone: the
@@ -165,11 +177,12 @@ struct Marker {
 // the lines drawn and of every bench but the one it names; a label set away from its point
 // gets a leader line to it.
 struct Label {
-    Vec2 pos = Vec2::Zero();
-    std::string text;
-    Rgba colour;
-    double size_px = 13.0;
-    double dx_px = 4.0, dy_px = -4.0;
+    Vec2 pos = Vec2::Zero();  // the point it names, m
+    std::string text;         // the words
+    Rgba colour;              // the text's
+    double size_px = 13.0;    // the text's size
+    double dx_px = 4.0;       // the preferred offset of the text's baseline start, right
+    double dy_px = -4.0;      // and down (negative: up)
     int bench = 0;    // the first bench (1..N) the label names, which it may cover; 0: none
     int benches = 1;  // how many benches from `bench` on it names (a handle's number: the two it joins)
 };
@@ -177,39 +190,47 @@ struct Label {
 // A display list: everything draw() needs, already resolved (no solver calls while drawing;
 // only the guides' path is evaluated, over the part of it in the picture).
 struct Scene {
+    // Which of the theme's colours a bench is drawn in.
     enum class Style { head, body, tail, highlight, collision };
+    // One bench as drawn.
     struct Bench {
-        Rect rect;
-        Style style;
+        Rect rect;      // its board, m
+        Style style;    // its colour
         double speed;  // mean of its two handles, m/s
     };
     // A stretch of the path, drawn as a thin line. draw() flattens it into Bezier curves only
     // where the picture shows it, so a close-up of a long path costs what it shows.
     struct Guide {
-        std::shared_ptr<const Path> path;
-        double s0 = 0.0, s1 = 0.0;  // arc range on one piece of the path
-        Rgba colour;
-        double width_px = 1.0;
-        bool dashed = false;
+        std::shared_ptr<const Path> path;  // the path it is a stretch of
+        double s0 = 0.0;                   // arc range on one piece of the path, m: from
+        double s1 = 0.0;                   // to
+        Rgba colour;                       // the line's
+        double width_px = 1.0;             // the line's width
+        bool dashed = false;               // dashed, else solid
     };
 
-    Theme theme;
+    Theme theme;  // the colours and type
     // The view: world box that must fit (centre, extent in x and y).
     Vec2 view_centre = Vec2::Zero();
-    double view_width = 1.0, view_height = 1.0;
+    double view_width = 1.0;   // m
+    double view_height = 1.0;  // m
 
     std::vector<Bench> benches;  // bench k at index k-1
-    std::vector<Vec2> handles;
+    std::vector<Vec2> handles;   // m, head front first
     double handle_radius = 0.0275;  // m (hole radius); drawn at least ~1 px
-    std::vector<Guide> guides;
+    std::vector<Guide> guides;   // the path, under the benches
     std::optional<double> turning_radius;  // circle about the origin, m
-    std::optional<CollisionMark> collision;
+    std::optional<CollisionMark> collision;  // the touching benches, marked
     std::vector<Overlap> overlaps;  // benches lying across each other, deepest first
 
-    bool colour_by_speed = false;
-    double speed_min = 0.0, speed_max = 1.0;
-    bool show_handles = true, show_scale_bar = true, show_colour_bar = true, show_text = true;
-    std::string annotation;
+    bool colour_by_speed = false;  // benches in the speed ramp's colours
+    double speed_min = 0.0;        // m/s at the ramp's low end
+    double speed_max = 1.0;        // m/s at its high end
+    bool show_handles = true;      // SceneOptions::show_handles
+    bool show_scale_bar = true;    // SceneOptions::show_scale_bar
+    bool show_colour_bar = true;   // SceneOptions::show_colour_bar
+    bool show_text = true;         // SceneOptions::show_text
+    std::string annotation;        // top left; empty: none
     bool title_band = false;  // SceneOptions::title_band
     // The size of the body text (labels, legend, scale bar, colour-bar numbers), px, for a
     // picture at a print size: titles, captions and the clock are a fifth larger, and lines and
@@ -219,21 +240,22 @@ struct Scene {
 
     // Screen furniture (films mostly). Text is set at a size that follows the picture's height
     // but never below kMinTextPx, so it reads on a 400 x 300 GIF as on a 4K frame.
-    bool legend = false;
+    bool legend = false;           // a key to the colours, top left
     bool legend_touching = false;  // the legend has an entry for touching benches
     std::string clock;             // top right, e.g. "t = 412.474 s"
     std::string rate;              // under the clock, e.g. "×20": simulated seconds per second of film
+    // A caption at the bottom of the picture.
     struct Caption {
-        std::string text;
+        std::string text;      // the words
         double opacity = 1.0;  // captions fade in and out
     };
     std::vector<Caption> captions;  // bottom centre, one box each, the last lowest
     // The whole dragon, drawn small in the bottom right corner with the main view's box on it.
     std::shared_ptr<const Scene> inset;
 
-    std::vector<Polyline> polylines;
-    std::vector<Marker> markers;
-    std::vector<Label> labels;
+    std::vector<Polyline> polylines;  // a figure's overlays, over the benches
+    std::vector<Marker> markers;      // over the lines
+    std::vector<Label> labels;        // over everything, placed clear of each other
 };
 
 // The smallest text any picture sets, px: the size a 13 px label has at 800 px keeps to at

@@ -9,6 +9,7 @@
 
 namespace dragon {
 
+// The benches: how many, and each board's size and where its holes are.
 struct BenchSpec {
     int bench_count = 223;       // benches in the chain; bench 1 is the head
     double head_length = 3.41;   // board length of bench 1, m
@@ -16,7 +17,8 @@ struct BenchSpec {
     double width = 0.30;         // board width, m
     double hole_offset = 0.275;  // hole centre to the nearer board end, m
 
-    int handle_count() const { return bench_count + 1; }
+    int handle_count() const { return bench_count + 1; }  // N + 1: a handle at each end of every bench
+    // Board length of bench 1..N, m.
     double board_length(int bench) const { return bench == 1 ? head_length : body_length; }
     // Handle-to-handle chord of bench 1..N.
     double link_length(int bench) const { return board_length(bench) - 2.0 * hole_offset; }
@@ -32,10 +34,13 @@ struct BenchSpec {
 // reach 2.2e4 m; a million, 2.2e6 m.)
 inline constexpr double kMaxReach = 1e7;
 
+// The path the head follows: the plain spiral, coiling in (Q1-Q3), or the turnaround path:
+// the coil-in spiral, the S-curve in the turning space and the coil-out spiral (Q4, Q5).
 enum class PathKind { spiral, turnaround };
 
+// The path's kind and its shape's values (each kind reads its own).
 struct PathSpec {
-    PathKind kind = PathKind::spiral;
+    PathKind kind = PathKind::spiral;  // which path
     double pitch = 0.55;        // coil-in pitch of the plain spiral (Q1-Q3), m
     double start_turn = 16.0;   // head starts at theta = 2 pi * start_turn on the plain spiral
     double turn_radius = 4.5;   // radius of the turning space, m
@@ -43,9 +48,10 @@ struct PathSpec {
     double arc_ratio = 2.0;     // radius of the first S-curve arc over the second's
 };
 
+// Everything a Simulation needs: the benches, the path and the head's speed.
 struct Scenario {
-    BenchSpec bench;
-    PathSpec path;
+    BenchSpec bench;  // the benches
+    PathSpec path;    // the path
     double head_speed = 1.0;  // m/s along the path
 
     // The pitch of the spiral the head coils in along for this path kind.
@@ -57,19 +63,19 @@ struct Scenario {
 // reason to refuse it.
 using ScenarioValues = unsigned;
 namespace value {
-inline constexpr ScenarioValues bench_count = 1u << 0;
-inline constexpr ScenarioValues head_length = 1u << 1;
-inline constexpr ScenarioValues body_length = 1u << 2;
-inline constexpr ScenarioValues width = 1u << 3;
-inline constexpr ScenarioValues hole_offset = 1u << 4;
-inline constexpr ScenarioValues head_speed = 1u << 5;
+inline constexpr ScenarioValues bench_count = 1u << 0;  // BenchSpec::bench_count
+inline constexpr ScenarioValues head_length = 1u << 1;  // BenchSpec::head_length
+inline constexpr ScenarioValues body_length = 1u << 2;  // BenchSpec::body_length
+inline constexpr ScenarioValues width = 1u << 3;        // BenchSpec::width
+inline constexpr ScenarioValues hole_offset = 1u << 4;  // BenchSpec::hole_offset
+inline constexpr ScenarioValues head_speed = 1u << 5;   // Scenario::head_speed
 inline constexpr ScenarioValues pitch = 1u << 6;        // the plain spiral's
 inline constexpr ScenarioValues start_turn = 1u << 7;   // the plain spiral's
 inline constexpr ScenarioValues turn_radius = 1u << 8;  // the turning space
 inline constexpr ScenarioValues turn_pitch = 1u << 9;   // the turnaround path's spirals
 inline constexpr ScenarioValues arc_ratio = 1u << 10;   // the turnaround path's S-curve
-inline constexpr ScenarioValues bench = bench_count | head_length | body_length | width | hole_offset;
-inline constexpr ScenarioValues all = (1u << 11) - 1;
+inline constexpr ScenarioValues bench = bench_count | head_length | body_length | width | hole_offset;  // the benches' values
+inline constexpr ScenarioValues all = (1u << 11) - 1;  // every value above
 }  // namespace value
 
 // What a Simulation on a path of this kind reads: the benches and the head speed, and the
@@ -79,8 +85,9 @@ ScenarioValues values_read(PathKind kind);
 // A value that is not allowed, and which values the failed rule involves (one, or two or
 // more for a rule between them, such as the pitch against the width).
 struct ScenarioError : InputError {
+    // `what`: the whole sentence; `involved`: the values of the rule it breaks.
     ScenarioError(const std::string& what, ScenarioValues involved) : InputError(what), values(involved) {}
-    ScenarioValues values;
+    ScenarioValues values;  // the values the failed rule involves
 };
 
 // Throws ScenarioError naming the first bad value among `values` and what is allowed. A rule
@@ -91,8 +98,8 @@ void validate(const Scenario& s);
 
 // A scenario read from a TOML file, and which values the file set.
 struct LoadedScenario {
-    Scenario scenario;
-    ScenarioValues values = 0;
+    Scenario scenario;          // the file's values over the base
+    ScenarioValues values = 0;  // the values the file set
 };
 // Reads a TOML scenario over `base` (missing keys keep base's values); throws InputError for an
 // unreadable or malformed file (or a folder), an unknown section or key, or a value of the
@@ -102,6 +109,7 @@ LoadedScenario read_scenario_file(const std::string& path, Scenario base = {});
 // read_scenario_file(path, base).scenario.
 Scenario load_scenario(const std::string& path, Scenario base = {});
 
+// "spiral" or "turnaround".
 const char* to_string(PathKind k);
 
 // Is this the contest's own dragon, path and speed (the built-in defaults; the path kind aside)?

@@ -38,15 +38,15 @@ struct SweepParameter {
 const std::vector<SweepParameter>& sweep_parameters();
 // The parameter of that name, or nullptr.
 const SweepParameter* find_sweep_parameter(std::string_view name);
-void set_parameter(Scenario& s, const SweepParameter& p, double v);
-double get_parameter(const Scenario& s, const SweepParameter& p);
+void set_parameter(Scenario& s, const SweepParameter& p, double v);  // s's value of p set to v
+double get_parameter(const Scenario& s, const SweepParameter& p);     // s's value of p
 
 // One varied value: its parameter and the values it takes, each with its cell, the text that
 // identifies it in the rows (the shortest text that reads back as exactly that value).
 struct Axis {
-    const SweepParameter* parameter = nullptr;
-    std::vector<double> values;
-    std::vector<std::string> cells;
+    const SweepParameter* parameter = nullptr;  // what it varies
+    std::vector<double> values;                 // in its parameter's unit, in the order given
+    std::vector<std::string> cells;             // each value's text in the rows, as `values`
 };
 // "width=0.20:0.40:21" (21 values from 0.20 to 0.40, both included, evenly spaced and rounded to
 // 12 significant digits) or "speed=0.5,1,2" (a list; one value is a list too). Throws InputError
@@ -55,13 +55,15 @@ struct Axis {
 Axis parse_axis(const std::string& spec);
 // The axis from the cells a sweep file recorded; throws InputError as parse_axis does.
 Axis axis_from_cells(const std::string& name, const std::vector<std::string>& cells);
-inline constexpr std::size_t kMaxAxisValues = 100000;
+inline constexpr std::size_t kMaxAxisValues = 100000;       // values on one axis
 inline constexpr std::size_t kMaxSweepScenarios = 10000000;  // ten million rows: a few GB of CSV
 
 // One of N disjoint parts of a sweep: scenario i belongs to shard K of N when i % N == K - 1, so
 // the parts are the same size to within one and each spreads over the whole grid.
 struct Shard {
-    std::size_t index = 1, count = 1;  // K and N, 1 <= K <= N
+    std::size_t index = 1;  // K, 1 <= K <= N
+    std::size_t count = 1;  // N
+    // Whether scenario `scenario` (0-based, of the whole grid) is in this shard.
     bool holds(std::size_t scenario) const { return scenario % count == index - 1; }
     // Scenarios of a grid of `total` in this shard.
     std::size_t size(std::size_t total) const { return total / count + (total % count > index - 1 ? 1 : 0); }
@@ -76,8 +78,8 @@ class SweepGrid {
 public:
     // Throws InputError for no axis, a parameter on two axes, or more than kMaxSweepScenarios.
     explicit SweepGrid(std::vector<Axis> axes);
-    const std::vector<Axis>& axes() const { return axes_; }
-    std::size_t size() const { return size_; }
+    const std::vector<Axis>& axes() const { return axes_; }  // as given; the first varies slowest
+    std::size_t size() const { return size_; }               // scenarios: the product of the axes' sizes
     // The position of scenario `index` on each axis.
     std::vector<std::size_t> position(std::size_t index) const;
     // `base` with the varied values of scenario `index`.
@@ -105,19 +107,19 @@ std::vector<std::string> split_csv(std::string_view line);
 // and how many rows, each a complete line, follow. A last line without its line end (a kill
 // while it was written) is not a row: `torn` says there was one, `complete_bytes` where it began.
 struct RowFileScan {
-    std::vector<std::string> preamble;
-    std::size_t rows = 0;
-    bool torn = false;
-    std::size_t complete_bytes = 0;
+    std::vector<std::string> preamble;  // its first lines, without their line ends
+    std::size_t rows = 0;               // the complete rows after them
+    bool torn = false;                  // a last line without its line end followed
+    std::size_t complete_bytes = 0;     // bytes up to the end of the last complete line
 };
 // How a rows' file is named in messages, and the longest lines it may have: a sweep's first
 // line lists every axis's values (at most kMaxAxisValues of up to 24 characters each, on a few
 // axes), a row a cell per column (the caller knows how many).
 struct RowFileLimits {
-    std::string what = "sweep rows";
+    std::string what = "sweep rows";  // the file as messages name it
     bool output_too = false;  // the run's own output, gone on with (see InputFile)
-    std::size_t preamble_line_bytes = std::size_t{16} << 20;
-    std::size_t row_bytes = std::size_t{1} << 20;
+    std::size_t preamble_line_bytes = std::size_t{16} << 20;  // the longest preamble line, bytes
+    std::size_t row_bytes = std::size_t{1} << 20;             // the longest row, bytes
 };
 // Reads a rows' file whose preamble has `preamble_lines` lines a line at a time (a file of
 // millions of rows is never held): on_preamble hears the preamble (and may throw to stop),
@@ -154,7 +156,7 @@ public:
     // at `target`, keeping the mode of a file it replaces (as AtomicFile does). Inside a
     // RunOutputs, held until the run commits; a run that fails leaves the rows where they are.
     void finish(const std::string& target);
-    const std::string& path() const { return path_; }
+    const std::string& path() const { return path_; }  // where the rows are being written
 
 private:
     RowLog(std::string path, int fd) : path_(std::move(path)), fd_(fd) {}
@@ -201,9 +203,11 @@ struct SweepFile {
     std::vector<std::pair<std::string, std::string>> fixed;
     // [measure] key = value (a table per measure): ("min-pitch", "lo", "width+0.05").
     struct Option {
-        std::string measure, key, value;
+        std::string measure;  // "min-pitch"
+        std::string key;      // "lo"
+        std::string value;    // "width+0.05", as text
     };
-    std::vector<Option> options;
+    std::vector<Option> options;  // one per key given
 };
 // Throws InputError naming the file and the key for an unreadable or malformed file, an unknown
 // key, or a value of the wrong type.

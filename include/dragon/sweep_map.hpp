@@ -18,6 +18,7 @@
 
 namespace dragon {
 
+// What a map's cell holds: a value, or why it has none (each kind drawn and keyed apart).
 enum class MapCell : unsigned char {
     value,        // the answer
     jam,          // cut short: the dragon cannot follow its path far enough
@@ -29,6 +30,7 @@ enum class MapCell : unsigned char {
     overlapping,  // benches already overlap where the analysis starts: the chain collides
 };
 
+// One axis of a map: the quantity a sweep varied and the values it took.
 struct MapAxis {
     std::string quantity;         // "bench width"
     std::string unit;             // "m", or "" for none
@@ -38,26 +40,29 @@ struct MapAxis {
     std::optional<double> mark;
 };
 
+// One measured quantity over the map's scenarios: a panel of its own.
 struct MapPanel {
     std::string quantity;  // "minimum pitch"
     std::string unit;      // "m"
     // One per scenario: index ix * (y ? y->values.size() : 1) + iy, as the axes list their
     // values; NaN where the cell is not a value.
     std::vector<double> values;
-    std::vector<MapCell> cells;
+    std::vector<MapCell> cells;  // what each cell holds, indexed as `values`
     // The legend's words for the kinds whose meaning depends on the measure.
     std::string jam_label = "cut short: the dragon cannot follow its path";
     std::string below_label = "answer below the range searched";
     std::string above_label = "answer above the range searched";
 };
 
+// A sweep's results as pictures: a heat map per panel over two axes (x, y), or line plots over
+// one (x).
 struct SweepMap {
-    Theme theme;
-    MapAxis x;
+    Theme theme;               // the colours and type
+    MapAxis x;                 // across
     std::optional<MapAxis> y;  // none: line plots
-    std::vector<MapPanel> panels;
+    std::vector<MapPanel> panels;  // one per measured quantity, drawn one under another
     std::string note;          // under each panel's title: what was held fixed
-    std::string mark_label = "the contest's dragon";
+    std::string mark_label = "the contest's dragon";  // the legend's words for the axes' marks
     // The body text's size, px, for a map at a print size (Plot::text_px); 0: on screen.
     double text_px = 0.0;
     // The language of the map's own words (titles, the legend of cells without a value); the

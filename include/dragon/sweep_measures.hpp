@@ -15,6 +15,8 @@ namespace dragon {
 
 struct MeasureOptions;
 
+// One measure a sweep can take: its name, what it reads, how it answers and how its answer
+// becomes a row's cells.
 struct MeasureInfo {
     const char* name;        // as in --measure: "collide", "min-pitch", "turnaround", "max-speed"
     PathKind path;           // the path its command runs on
@@ -42,25 +44,27 @@ const MeasureInfo& find_measure(const std::string& name);
 // A pitch bound of min-pitch's search: a number, or the bench width plus one ("width+0.05"),
 // for sweeps that vary the width.
 struct PitchBound {
-    double offset = 0.0;
-    bool above_width = false;
+    double offset = 0.0;       // m: the pitch, or what is added to the bench width
+    bool above_width = false;  // the bound is the bench width plus `offset`
     // The bound for this scenario; width+X rounded to 12 significant digits, as a sweep's values
     // are (0.42, not 0.42000000000000004: the same pitch the command's --lo 0.42 searches from).
     double at(const Scenario& s) const;
-    std::string text() const;
+    std::string text() const;  // as given: "0.42", "width+0.05"
 };
 // Throws InputError naming `flag` and the text.
 PitchBound parse_pitch_bound(const std::string& flag, const std::string& text);
 
 // The options of the measures (those of their commands a sweep passes on).
 struct MeasureOptions {
-    PitchBound lo{0.35, false}, hi{0.55, false};  // min-pitch --lo, --hi
+    PitchBound lo{0.35, false};                   // min-pitch --lo
+    PitchBound hi{0.55, false};                   // min-pitch --hi
     double grid = kDefaultPitchGrid;              // min-pitch --grid
     double limit = 2.0;                           // max-speed --limit
-    // --from, --to: the window of collide, turnaround and max-speed over their path's default
+    // --from (and --to, below): the window of collide, turnaround and max-speed over their path's default
     // (default_window), as the commands take them.
-    std::optional<Along> from, to;
-    RunWindow window(PathKind kind) const;
+    std::optional<Along> from;
+    std::optional<Along> to;  // the window's end, as --to
+    RunWindow window(PathKind kind) const;  // from and to over the default window on that path
     // The measures run on the calling thread (a sweep spreads its scenarios over the cores);
     // they stop when this executor asks (Executor::stop_requested), if given.
     const Executor* stop_source = nullptr;
@@ -70,10 +74,12 @@ struct MeasureOptions {
 struct MeasureResult {
     // collides: benches overlap where the analysis starts (a verdict, with no answer's cells).
     enum class State { ok, jam, collides, refused, failed };
-    State state = State::ok;
+    State state = State::ok;  // how the measure went
     std::optional<Json> answer;  // the command's --json (without its bulky tables); none when refused or failed
     std::string note;            // for the row's status: why it was refused or failed, where the jam is
 };
+// Checks the scenario for the measure and answers; never throws for the scenario's sake: a
+// refusal (InputError), a collision at the start or a failure is the result's state and note.
 MeasureResult run_measure(const MeasureInfo& m, const Scenario& s, const MeasureOptions& options);
 // How a row's status begins the note of State::collides: "collides at the start (collide): ".
 std::string overlap_note_prefix(const MeasureInfo& m);

@@ -15,13 +15,14 @@
 
 namespace dragon {
 
+// One sweep, checked: every scenario it runs and every measure it takes on each.
 struct SweepSetup {
-    SweepGrid grid;
-    std::vector<const MeasureInfo*> measures;
+    SweepGrid grid;                            // the varied values: one scenario per point
+    std::vector<const MeasureInfo*> measures;  // each once, in the order asked
     Scenario base;              // the fixed values (the contest's where none is given)
     ScenarioValues fixed = 0;   // the values some measure reads and no axis varies
-    MeasureOptions options;
-    Shard shard;
+    MeasureOptions options;     // the measures' options, checked
+    Shard shard;                // the part of the grid this run makes
 };
 
 // What a sweep was asked, as its caller gives it (the tool's flags and sweep file, Python's
@@ -29,17 +30,20 @@ struct SweepSetup {
 struct SweepAsked {
     std::vector<std::string> vary;      // each NAME=FROM:TO:COUNT or NAME=V1,V2,... (parse_axis)
     std::vector<std::string> measures;  // collide, min-pitch, turnaround, max-speed
-    std::optional<std::string> lo, hi;  // min-pitch's range: a pitch, or "width+X"
-    std::optional<double> grid, limit;
-    std::optional<std::string> from, to;  // the window of collide, turnaround and max-speed
+    std::optional<std::string> lo;      // min-pitch's lower bound: a pitch (m), or "width+X"
+    std::optional<std::string> hi;      // min-pitch's upper bound, the same way
+    std::optional<double> grid;         // min-pitch's grid step, m
+    std::optional<double> limit;        // max-speed's limit on any handle's speed, m/s
+    std::optional<std::string> from;    // where the window of collide, turnaround and max-speed starts (parse_along)
+    std::optional<std::string> to;      // and where it ends
     std::string shard;                    // "K/N", or "" for the whole sweep
     ScenarioValues fixed_given = 0;       // scenario values the caller fixed (none may be varied too)
 };
 // How the caller names what it was given, for messages: an option ("lo" -> "--lo") and a scenario
 // value ("width" -> "--width").
 struct SweepWords {
-    std::function<std::string(const char* option)> option;
-    std::function<std::string(const char* value)> value;
+    std::function<std::string(const char* option)> option;  // "lo" -> "--lo"
+    std::function<std::string(const char* value)> value;    // "width" -> "--width"
 };
 // Checks what was asked and makes the setup. `base(fixed, why)` gives the scenario of the fixed
 // values: the values some measure reads and no axis varies (a value given that none reads is
@@ -81,10 +85,12 @@ std::vector<std::string> header(const SweepSetup& setup);
 // One scenario's row: its CSV line and the same as a JSON object (the varied values, each
 // measure's answer or null, the status). Its measures run on the calling thread.
 struct SweepRow {
-    std::string csv;
-    Json json;
+    std::string csv;      // one line, no newline, in header()'s columns
+    Json json;            // the same values as an object
     bool failed = false;  // a measure failed for a reason other than the input's
 };
+// Runs the measures on scenario `index` of the setup's grid (0 .. grid size - 1); a scenario the
+// measures refuse is a row saying so, not an error.
 SweepRow make_row(const SweepSetup& setup, std::size_t index);
 
 }  // namespace dragon

@@ -48,7 +48,7 @@ void write_json(const std::vector<Frame>& frames, const std::string& path, int d
 // descriptor 2 points at /dev/null meanwhile, which is process-wide, so a host that shares its
 // stderr (a notebook, a server) leaves it off.
 struct WorkbookOptions {
-    bool mute_library_stderr = false;
+    bool mute_library_stderr = false;  // point stderr at /dev/null while the workbook closes
 };
 
 // The most frames one worksheet holds: 16,384 columns, one for the labels.

@@ -31,12 +31,16 @@ struct SCurve {
     Vec2 entry = Vec2::Zero();  // A
     Vec2 exit = Vec2::Zero();  // B = -A
     Vec2 direction = Vec2::Zero();  // unit direction of travel at A; the same at B (the spirals are point-symmetric)
-    Vec2 c1 = Vec2::Zero(), c2 = Vec2::Zero();
-    double r1 = 0, r2 = 0;
+    Vec2 c1 = Vec2::Zero();   // arc 1's centre, m
+    Vec2 c2 = Vec2::Zero();   // arc 2's centre, m
+    double r1 = 0;            // arc 1's radius, m
+    double r2 = 0;            // arc 2's radius, m
     double angle1 = 0;        // clockwise angle arc 1 sweeps, rad
     double angle2 = 0;        // counter-clockwise angle arc 2 sweeps, rad
     Vec2 joint = Vec2::Zero();  // where arc 1 meets arc 2
-    double length1 = 0, length2 = 0, length = 0;  // arc lengths and their sum, m
+    double length1 = 0;       // arc 1's length, m
+    double length2 = 0;       // arc 2's length, m
+    double length = 0;        // the S-curve's length, length1 + length2, m
     double max_radius = 0;    // farthest point of the S-curve from the centre, m
 };
 
@@ -52,9 +56,9 @@ SCurve design_s_curve(const Scenario& s);
 // and s > length on the coil-out one; the path is unbounded both ways.
 class TurnaroundPath final : public Path {
 public:
-    explicit TurnaroundPath(const SCurve& design);
+    explicit TurnaroundPath(const SCurve& design);  // design_s_curve's: not checked again
 
-    const SCurve& design() const { return design_; }
+    const SCurve& design() const { return design_; }  // the S-curve it turns on
     // Arc positions where pieces 1, 2 and 3 begin: 0, length1, length.
     double join_arc(int piece) const;
     // The range of u on a piece, as {u at the piece's start, u at its end} in the travel order.
@@ -88,9 +92,10 @@ private:
 
 // Q4: can the turning curve be shorter? One row per S-curve studied.
 struct TurnStudyRow {
-    double ratio;
+    double ratio;           // r1 / r2
     double entry_radius;    // where the turn starts, m (the turning space's radius by default)
-    double r1, r2;
+    double r1;              // arc 1's radius, m
+    double r2;              // arc 2's radius, m
     double angle;           // each arc's angle, rad (the S-curve's two arcs sweep the same angle)
     double s_curve_length;  // m
     // The head's whole way inside the turning space: coil-in spiral from the turning-space
@@ -101,7 +106,7 @@ struct TurnStudyRow {
     // spiral to far out on the coil-out one? If not, where its valid motion ends (times with
     // t = 0 where the head enters the S-curve). Filled by study_turnaround / followability.
     std::optional<Jam> jam;
-    bool followable() const { return !jam; }
+    bool followable() const { return !jam; }  // the dragon follows it the whole way
 };
 // Length against the radius ratio, entry at the turning-space boundary.
 std::vector<TurnStudyRow> length_vs_ratio(double pitch, double turn_radius,
@@ -119,11 +124,13 @@ void followability(std::vector<TurnStudyRow>& rows, double pitch, const BenchSpe
 // reach the turn as simulated), else the one ahead. The same jam every command reports.
 std::optional<Jam> turnaround_jam(const Simulation& sim);
 
+// Q4's study: the scenario's S-curve, and how the turn's length varies with the arcs' ratio and
+// with where the turn starts.
 struct TurnaroundStudy {
-    SCurve design;
+    SCurve design;                  // the scenario's own S-curve
     std::optional<Jam> design_jam;  // turnaround_jam: where the valid motion ends on the scenario's own S-curve
-    std::vector<TurnStudyRow> by_ratio;
-    std::vector<TurnStudyRow> by_entry;
+    std::vector<TurnStudyRow> by_ratio;  // over the ratio, the turn starting at the boundary
+    std::vector<TurnStudyRow> by_entry;  // over the entry radius, at the scenario's ratio
     double ratio_spread;    // largest minus smallest S-curve length over by_ratio, m
 };
 // The default study: ratios 0.25..10 and entry radii from the boundary in to half of it, each
@@ -144,9 +151,10 @@ struct RunClearance {
     double distance = 0.0;
     double time = 0.0;         // when, s
     double travel = 0.0;       // the head's travel then, m
-    int bench_a = 0, bench_b = 0;  // the closest pair then (1..N); 0 when none came within the cutoff
+    int bench_a = 0;           // the closest pair's first bench then (1..N); 0 when none came within the cutoff
+    int bench_b = 0;           // and its second, bench_a < bench_b
     std::optional<Contact> first_contact;  // the window's first contact, if any
-    bool collision_free() const { return !first_contact; }
+    bool collision_free() const { return !first_contact; }  // no contact in the window
     double scan_step = 0.0;    // s
     double scan_travel = 0.0;  // m of head travel: the scan's spacing (each local minimum then refined)
     int evaluations = 0;       // frames whose clearance the scan and its refinement computed
@@ -180,8 +188,8 @@ struct MaxSpeed {
     // if one did. When the valid motion's own handle races there (speed_unbounded_at), its
     // speed grows without bound as the jam nears: no head speed keeps every handle under any limit.
     Searched window;
-    std::optional<Jam> jam;
-    bool unbounded = false;
+    std::optional<Jam> jam;   // the jam that cut the window, if one did
+    bool unbounded = false;   // the handle racing at the jam: no head speed keeps to the limit
 };
 // Searches `window` of the turnaround run (the scenario's kind is taken as turnaround), in head
 // travel: everything but the times is the same at any head speed. Speeds are signed along the
@@ -193,9 +201,11 @@ MaxSpeed max_head_speed(const Scenario& s, double limit, const RunWindow& window
 
 // The largest handle speed (magnitude) over the head speed at one head arc position, and which handle.
 struct SpeedRatio {
-    double ratio;
-    int handle;
+    double ratio;  // the largest |handle speed| / head speed
+    int handle;    // which handle (0..N); the first when several tie
 };
+// The ratio with the head front handle at arc position head_arc, m, on `path`. Throws InputError
+// as solve_chain does when the chain runs off the path.
 SpeedRatio speed_ratio_at(const Path& path, const BenchSpec& spec, double head_arc);
 
 }  // namespace dragon

@@ -21,6 +21,8 @@
 
 namespace dragon {
 
+// How the valid motion ends (see the file's comment): the followed root vanishes, or a nearer
+// one is born.
 enum class JamKind { root_vanishes, nearer_root };
 // "root_vanishes" or "nearer_root".
 const char* to_string(JamKind k);

@@ -25,13 +25,14 @@ enum class VideoFormat {
 };
 // Throws InputError naming the extension and the allowed ones.
 VideoFormat video_format_for(const std::string& path);
-const char* to_string(VideoFormat f);
+const char* to_string(VideoFormat f);  // "mp4", "webm", "gif"
 
 // The quality each codec gets when VideoOptions::crf is unset.
 struct DefaultCrf {
-    int h264, vp9;
+    int h264;  // libx264's constant rate factor
+    int vp9;   // libvpx-vp9's
 };
-inline constexpr DefaultCrf kDefaultCrf{23, 35};
+inline constexpr DefaultCrf kDefaultCrf{23, 35};  // measured on line art by scripts/bench-video.sh
 
 // The rates a video can have, frames per second: a frame at least every 100 s (GIF stores a
 // frame's delay in 1/100 s in 16 bits, 655 s at most, and the MP4 muxer refuses the durations of
@@ -55,9 +56,10 @@ inline constexpr long kMaxFrameRingBytes = 256L << 20;
 // stops a typo from running for days.
 inline constexpr int kMaxFilmFrames = 1'000'000;
 
+// How a video is encoded: its size, rate, quality and the codec's settings.
 struct VideoOptions {
     int width = 1280;   // pixels; even for mp4 and webm (yuv420p halves the chroma planes)
-    int height = 720;
+    int height = 720;   // pixels; even for mp4 and webm
     double fps = 30.0;  // frames per second of the video, 0.01 to 240
     // Quality: constant rate factor; lower is better and larger. None: the codec's default here
     // (H.264: 23, VP9: 35; see kDefaultCrf). GIF has none.
@@ -101,8 +103,8 @@ public:
     VideoWriter(const VideoWriter&) = delete;
     VideoWriter& operator=(const VideoWriter&) = delete;
 
-    VideoFormat format() const;
-    const VideoOptions& options() const;
+    VideoFormat format() const;              // from the path's extension
+    const VideoOptions& options() const;     // as checked
 
     // GIF only (a no-op for the others): lets a picture's colours shape the palette. Call it
     // before the first frame, with frames spread over the clip (its first, middle and last,
@@ -120,7 +122,7 @@ public:
     // Drains the encoder, writes the trailer and renames the file into place.
     void finish();
 
-    int frames_written() const;
+    int frames_written() const;  // frames handed to the encoder so far, repeats included
 
 private:
     struct Impl;
@@ -133,10 +135,11 @@ void quiet_codec_logs();
 
 // Progress of a long encode: frames done of total, seconds since the start.
 struct Progress {
-    int done = 0;
-    int total = 0;
-    double elapsed = 0.0;
+    int done = 0;          // frames encoded
+    int total = 0;         // frames to encode
+    double elapsed = 0.0;  // s of wall time
 };
+// Hears a long encode's progress (may be empty).
 using ProgressFn = std::function<void(const Progress&)>;
 
 // Paints frame `index` (0-based) onto an ARGB32 image surface of the video's size; it must
@@ -145,9 +148,11 @@ using ProgressFn = std::function<void(const Progress&)>;
 // beforehand, on the caller's thread, for the palette's sample frames.
 using PaintFn = std::function<void(int index, cairo_t* cr)>;
 
+// What an encode did and how fast.
 struct EncodeStats {
-    int frames = 0;
+    int frames = 0;        // frames encoded
     double seconds = 0.0;  // wall time, end to end
+    // Frames encoded a second of wall time (0 before any time passed).
     double fps() const { return seconds > 0 ? frames / seconds : 0.0; }
 };
 
@@ -176,8 +181,8 @@ struct Clip {
 
 // A moment a film says in words: a caption from `time` on.
 struct FilmEvent {
-    double time = 0.0;  // simulated s
-    std::string caption;
+    double time = 0.0;     // simulated s
+    std::string caption;   // the words, in the film's language
 };
 
 // What a film shows besides the dragon. Text follows the frame's height and never drops below
@@ -212,8 +217,11 @@ Camera fit_over(const Simulation& sim, double from, double to, double margin = C
 // One speed range for a stretch, from 257 moments spread over it (speeds peak briefly), so a
 // colour means one speed all through.
 struct SpeedRange {
-    double lo, hi;
+    double lo;  // m/s
+    double hi;  // m/s, above lo
 };
+// The range over [from, to], s, within the valid motion (else the InputError Simulation::frame
+// throws).
 SpeedRange speed_range_over(const Simulation& sim, double from, double to);
 
 // A clip made drawable: the moment and the scene of every frame. Frames are at from,
@@ -235,13 +243,13 @@ public:
     Animation(const Simulation& sim, Clip clip, double fps, SceneOptions scene,
               std::optional<CollisionMark> end_mark = {}, FilmLook look = {});
 
-    int frame_count() const { return frame_count_; }
+    int frame_count() const { return frame_count_; }  // held frames included
     // Frames that differ: from this one on, the held last moment repeats frame distinct_frames() - 1.
     int distinct_frames() const { return moving_frames_; }
-    double fps() const { return fps_; }
-    const Clip& clip() const { return clip_; }
-    double time_at(int index) const;
-    Scene scene_at(int index) const;
+    double fps() const { return fps_; }           // frames a second of film
+    const Clip& clip() const { return clip_; }    // as given
+    double time_at(int index) const;              // the simulated moment of frame `index`, s
+    Scene scene_at(int index) const;              // what frame `index` shows
     // draw(scene_at(index)) onto a width x height picture.
     void paint(int index, cairo_t* cr, int width, int height) const;
 
