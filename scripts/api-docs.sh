@@ -4,6 +4,10 @@
 # errors (docs/api/Doxyfile): an undocumented public symbol fails this script, and CI with it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+if ! command -v doxygen > /dev/null; then
+    echo "api-docs: doxygen is not installed (scripts/install-deps.sh installs it)" >&2
+    exit 1
+fi
 mkdir -p build/api
 if ! doxygen docs/api/Doxyfile 2> build/api/warnings.txt; then
     n=$(grep -c "not documented" build/api/warnings.txt || true)
