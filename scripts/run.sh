@@ -8,7 +8,7 @@ bash scripts/build.sh
 mkdir -p out
 ./build/src/dragon solve -o out
 ./build/src/dragon figures -o renders --scale 0.8 --data   # about 800 px each, 640 KB in all; each figure's numbers as CSV
-# Two figures in Chinese and one at a column's width (3.5 in, text 8 pt, at 200 dpi), as the README shows them
+# Two figures in Chinese and two at a column's width (3.5 in, text 8 pt, at 200 dpi), as the README shows them
 ./build/src/dragon figures -o renders/zh --lang zh --scale 0.8 --only fig4_first_contact,plot_s_curve
 ./build/src/dragon figures -o renders/column --print column --dpi 200 --only plot_speeds,fig1_link_geometry
 ./build/src/dragon video -o renders/coil.gif --size 400x300 --colours 48 --fps 8 --speedup 40 --to collision --no-legend
