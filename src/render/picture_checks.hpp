@@ -7,16 +7,15 @@
 #include <cairo.h>
 
 #include "dragon/errors.hpp"
+#include "dragon/picture_size.hpp"
 
 namespace dragon::render {
 
-// 16K on a side is far beyond any screen and keeps an ARGB32 surface under 1 GiB.
-inline constexpr int kMaxPictureSide = 16384;
-
+// The sides dragon/picture_size.hpp allows (an ARGB32 surface stays under 1 GiB).
 inline void check_picture_size(int w, int h) {
-    if (w < 16 || h < 16 || w > kMaxPictureSide || h > kMaxPictureSide)
-        throw InputError(fmt::format("image size {} x {} px is not allowed: each side must be 16..{}", w, h,
-                                     kMaxPictureSide));
+    if (w < kMinPictureSide || h < kMinPictureSide || w > kMaxPictureSide || h > kMaxPictureSide)
+        throw InputError(fmt::format("image size {} x {} px is not allowed: each side must be {}..{}", w, h,
+                                     kMinPictureSide, kMaxPictureSide));
 }
 
 inline void check_cairo(cairo_status_t st, const char* what) {

@@ -21,8 +21,8 @@ struct End {
 
 Along moment(const std::string& name, const std::string& text) {
     if (const std::optional<Along> a = parse_along(text)) return *a;
-    throw InputError(fmt::format("{} {} is not allowed: give a time in seconds (12.5, or 12.5s) or a length of the "
-                                 "head's travel in metres (-100m)", name, text.empty() ? "''" : text));
+    throw InputError(name, text.empty() ? "''" : text,
+                     "give a time in seconds (12.5, or 12.5s) or a length of the head's travel in metres (-100m)");
 }
 
 End resolve_end(const std::string& to, const Simulation& sim, double from, const ClipWords& words) {
@@ -32,37 +32,38 @@ End resolve_end(const std::string& to, const Simulation& sim, double from, const
         sim.require_valid(from, "time range start");
         const CollideAnswer a = first_contact_of_motion(sim);
         if (!a.contact)
-            throw InputError(fmt::format("{} collision: no two benches touch between t = {} s and {} s{}", words.to,
-                                         format_time(a.window.from), format_time(a.window.to),
-                                         a.jam ? " (" + jam_sentence(*a.jam) + ")" : ""));
+            throw InputError(words.to, "collision",
+                             fmt::format("no two benches touch between t = {} s and {} s{}", format_time(a.window.from),
+                                         format_time(a.window.to), a.jam ? " (" + jam_sentence(*a.jam) + ")" : ""));
         const Contact& c = *a.contact;
         if (!(c.time > from))
-            throw InputError(fmt::format("{} collision is not allowed with {} {}: the first contact, bench {} touching "
-                                         "bench {}, is at t = {} s, before it", words.to, words.from, from, c.bench_a,
-                                         c.bench_b, format_resolved(c.time, c.tolerance)));
+            throw InputError(words.to, "collision",
+                             fmt::format("not with {} {}: the first contact, bench {} touching bench {}, is at t = {} s, "
+                                         "before it", words.from, from, c.bench_a, c.bench_b,
+                                         format_resolved(c.time, c.tolerance)));
         return {c.time, CollisionMark{c.bench_a, c.bench_b, c.point}};
     }
     if (what == "boundary") {
         const double t = boundary_time(sim);
         if (t <= from) {
             const double r = norm(sim.path().at_arc(sim.head_arc(from)).pos);
-            throw InputError(fmt::format("{} boundary is not allowed: the head is already inside the turning space at "
-                                         "{} {} s (radius {:.6f} m, turning space {} m) and never reaches its boundary "
-                                         "after that", words.to, words.from, from, r, sim.scenario().path.turn_radius));
+            throw InputError(words.to, "boundary",
+                             fmt::format("the head is already inside the turning space at {} {} s (radius {:.6f} m, "
+                                         "turning space {} m) and never reaches its boundary after that", words.from,
+                                         from, r, sim.scenario().path.turn_radius));
         }
         return {t, std::nullopt};
     }
     if (what == "end") {
         const double end = sim.valid_end();
         if (!std::isfinite(end))
-            throw InputError(fmt::format("{} end is not allowed here: the dragon follows this path for ever; give a time",
-                                         words.to));
+            throw InputError(words.to, "end", "the dragon follows this path for ever here; give a time");
         return {end, std::nullopt};
     }
     const std::optional<Along> a = parse_along(what);
     if (!a)
-        throw InputError(fmt::format("{} {} is not allowed: give a time in seconds (12.5), head travel in metres "
-                                     "(100m), collision, boundary or end", words.to, to));
+        throw InputError(words.to, to,
+                         "give a time in seconds (12.5), head travel in metres (100m), collision, boundary or end");
     require_valid_at(sim, *a, "time range end");
     return {a->time(sim.scenario().head_speed), std::nullopt};
 }
