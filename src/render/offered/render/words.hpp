@@ -28,6 +28,10 @@ struct Words {
     const char* overlap;
     const char* bench;
     const char* bench_head;        // bench 1, the head
+    // A still's default annotation: {t s} {bench} {bench} at the first contact; {t s} {pitch m}
+    // {bench} {bench} {contact's t s} past it.
+    const char* still_contact;
+    const char* still_past_contact;
     // Films: the clock {t s}, a held frame, the events' captions.
     const char* clock;
     const char* held;
