@@ -11,6 +11,7 @@
 
 namespace dragon {
 
+// A clip as a caller asks for it, in words (a command's flags, a Python call's arguments).
 struct ClipRequest {
     // "12.5", "12.5s": simulated seconds; "-100m": head travel. Unset: 0 on the plain spiral,
     // 100 m of head travel before the turn on the turnaround path.
@@ -26,14 +27,15 @@ struct ClipRequest {
 
 // How the caller names the request's two ends in its messages (the tool: its flags, --from, --to).
 struct ClipWords {
-    std::string from = "from", to = "to";
+    std::string from = "from";  // the start's name ("--from")
+    std::string to = "to";      // the end's name ("--to")
 };
 
 // The clip, the benches touching at its end (to = collision) and the captions of its events.
 struct ClipPlan {
-    Clip clip;
-    std::optional<CollisionMark> end_mark;
-    std::vector<FilmEvent> events;
+    Clip clip;                              // the simulated stretch, its playback rate and hold
+    std::optional<CollisionMark> end_mark;  // the benches touching at its end, when it ends at the first contact
+    std::vector<FilmEvent> events;          // the captions (clip_events), in the request's language
 };
 
 // Throws InputError (naming the ends by `words`) for a moment that is neither a time nor

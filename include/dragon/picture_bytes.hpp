@@ -10,6 +10,7 @@
 
 namespace dragon {
 
+// The file formats a picture's bytes come in.
 enum class PictureType { png, svg, pdf };
 // "png", "svg" or "pdf"; InputError (field "format") for anything else.
 PictureType picture_type(const std::string& name);
