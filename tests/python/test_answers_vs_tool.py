@@ -82,3 +82,17 @@ def test_the_contest_answer_to_the_last_digit():
     r = bd.collide(bd.Scenario())
     assert f"{r.time:.10f}".startswith("412.4738376821")
     assert r.benches == [1, 9]
+
+
+def test_concurrent_calls_from_threads_answer_as_alone():
+    from concurrent.futures import ThreadPoolExecutor
+
+    scenarios = [bd.Scenario(pitch=p) for p in (0.5, 0.55, 0.6, 0.65)]
+    alone = [bd.collide(s).to_dict() for s in scenarios]
+    sim = bd.Simulation()
+    with ThreadPoolExecutor(max_workers=4) as ex:
+        together = list(ex.map(lambda s: bd.collide(s).to_dict(), scenarios * 2))
+        frames = list(ex.map(lambda t: sim.frame(t).positions, [10.0, 200.0] * 4))
+    assert together == alone * 2
+    for k, f in enumerate(frames):
+        assert (f == sim.frame([10.0, 200.0][k % 2]).positions).all()
