@@ -23,7 +23,8 @@ std::string format_time(double t, int digits);
 std::string time_header(double t);
 
 // Decimals of the CSV and JSON tables: 6 by default (the contest's), at most 17 (every bit of a
-// double, for a reader who wants the value itself).
+// double of 0.1 or more, for a reader who wants the value itself; smaller values keep 17
+// decimals, fewer significant digits).
 inline constexpr int kDefaultDigits = 6;
 inline constexpr int kMaxDigits = 17;
 // v with `digits` decimals (0..17) as the tables print it, never "-0.000": by round6's rule

@@ -85,6 +85,8 @@ class Scenario:
         return dict(self._values)
 
     def __getattr__(self, name: str) -> Any:
+        if name == "_values":  # not made (its __init__ raised): no values to look in
+            raise AttributeError(name)
         try:
             return self._values[name]
         except KeyError:

@@ -93,16 +93,8 @@ void register_errors(py::module_& m) {
             a["field"] = python_name(e.field());
             a["value"] = e.value();
             a["allowed"] = e.allowed();
-            const Jam& j = e.jam;
-            py::dict jam;
-            jam["time"] = j.time;
-            jam["travel"] = j.travel;
-            jam["handle"] = j.handle;
-            jam["kind"] = to_string(j.kind);
-            jam["ahead"] = j.ahead;
-            jam["point"] = py::make_tuple(j.point.x(), j.point.y());
-            jam["tolerance"] = j.tolerance;
-            a["jam"] = jam;
+            // The package's Jam (a result: keys and attributes), as valid_range gives it.
+            a["jam"] = py::module_::import("benchdragon").attr("Jam")(jam_object(e.jam));
             raise_with(input_error, e.what(), a);
         } catch (const ScenarioError& e) {
             std::string field, value, allowed;
