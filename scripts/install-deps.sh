@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages benchdragon needs, only those missing. Idempotent; run as root.
 #   install-deps.sh run   what the tool needs to build and run (scripts/run.sh)
-#   install-deps.sh       that, plus what the tests, the Python package and the notebook need
+#   install-deps.sh       that, plus what the tests, the API reference, the Python package and the
+#                         notebook need
 set -euo pipefail
 run_packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libfmt-dev libtomlplusplus-dev libcli11-dev libxlsxwriter-dev nlohmann-json3-dev
   libcairo2-dev fonts-dejavu-core
   fonts-noto-cjk          # Chinese (and Japanese, Korean) glyphs: the pictures' fallback font
-  doxygen                 # the API reference of include/ (scripts/api-docs.sh)
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
 )
 test_packages=(
@@ -16,6 +16,7 @@ test_packages=(
   python3 python3-openpyxl
   poppler-utils ffmpeg
   clang libclang-rt-14-dev
+  doxygen                 # the API reference of include/, built in CI (scripts/api-docs.sh)
   # The Python package (pybind11) and its tests, sweeps on Dask, the notebook run by nbconvert,
   # and pip install . offline (setuptools and wheel from Debian).
   python3-dev pybind11-dev python3-numpy python3-pandas python3-pytest python3-hypothesis
