@@ -126,7 +126,7 @@ row simulate --path turnaround --pitch 0.6 -o out.csv
 row solve --only q4 --pitch 0.5
 row turnaround --no-clearance --to 5
 row figures --list --scale 2
-row max-speed --quiet
+row max-speed --digits 3
 
 header "dragon sweep (tests/cli/test_cli_sweep.cpp, tests/cli/test_cli_sweep_resume.cpp)"
 row sweep --vary width=0.2:0.4 --measure collide -o out.csv

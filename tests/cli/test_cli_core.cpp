@@ -118,7 +118,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"simulate --path turnaround --pitch 0.6 -o @OUT", "--pitch is not used on the turnaround path"},
         BadCase{"turnaround --no-clearance --to 5", "--no-clearance and --to cannot be given together"},
         BadCase{"figures --list --scale 2", "--list and --scale cannot be given together"},
-        BadCase{"max-speed --quiet", "dragon max-speed has no option --quiet"},
+        BadCase{"max-speed --digits 3", "dragon max-speed has no option --digits"},
         BadCase{"simulate --body-count 3 -o @OUT", "it is now --bench-count"},
         BadCase{"simulate --bench-count 0 -o @OUT", "--bench-count 0 is not allowed"},
         BadCase{"simulate --pich 0.6 -o @OUT", "did you mean --pitch?"},

@@ -29,7 +29,7 @@ struct Taken {
     bool path, spiral, start_turn, turn_radius, turnaround, quiet, digits;
 };
 
-// The table the README's Commands section gives: which command reads what.
+// The table docs/usage.md gives: which command reads what (and every command takes --quiet).
 const std::map<std::string, Taken> kTable = {
     //              --path spiral start-turn turn-radius turnaround --quiet --digits
     {"simulate", {true, true, true, true, true, true, true}},
@@ -40,7 +40,7 @@ const std::map<std::string, Taken> kTable = {
     {"figures", {false, true, true, true, true, true, false}},
     {"min-pitch", {false, false, true, true, false, true, false}},
     {"turnaround", {false, false, false, true, true, true, false}},
-    {"max-speed", {false, false, false, true, true, false, false}},
+    {"max-speed", {false, false, false, true, true, true, false}},
 };
 
 // Help lists an option as "  --pitch FLOAT ..." or "  -q,--quiet ...".
