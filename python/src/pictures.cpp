@@ -224,9 +224,15 @@ void bind_pictures(py::module_& m) {
               settings["width"] = board.film.width;
               settings["height"] = board.film.height;
               settings["fps"] = board.film.fps;
-              const VideoOptions vo =
-                  poster ? VideoOptions{board.film.width, board.film.height, board.film.fps}
-                         : encoder_options(settings, video_format_for(out));
+              // A poster is one PNG: only the film's size and rate matter to it.
+              VideoOptions vo;
+              if (poster) {
+                  vo.width = board.film.width;
+                  vo.height = board.film.height;
+                  vo.fps = board.film.fps;
+              } else {
+                  vo = encoder_options(settings, video_format_for(out));
+              }
               const WorkProgress report = progress_from(progress);
               const std::optional<double> moment = poster ? std::optional(at.cast<double>()) : std::nullopt;
               { AtomicFile probe(out); }

@@ -131,8 +131,9 @@ TEST(RandomDifferential, FirstContactOnBothPaths) {
         // And real: overlapping (or touching) at it, apart just before it, by every pair (unless
         // they overlap already where the window starts).
         EXPECT_LE(clearance_all_pairs(unit.frame(lib.contact->travel)).distance, 1e-12) << describe(s);
-        if (!lib.overlapping)
+        if (!lib.overlapping) {
             EXPECT_GT(clearance_all_pairs(unit.frame(lib.contact->travel - 1e-9)).distance, 0.0) << describe(s);
+        }
     }
     EXPECT_GE(contacts, 6);  // the draw holds contacts, not only collision-free runs
 }
