@@ -451,7 +451,7 @@ def render(sim: Union[Simulation, Scenario, None] = None, t: Optional[float] = N
            size: Sequence[int] = (1600, 1600), format: str = "png", theme: str = "light",
            speed_colours: bool = False, zoom: Optional[float] = None, centre: Optional[Sequence[float]] = None,
            follow_head: bool = False, guides: bool = True, text: bool = True, annotation: Optional[str] = None,
-           legend: bool = False, inset: bool = False) -> Picture:
+           legend: bool = False, inset: bool = False, lang: str = "en") -> Picture:
     """One moment of the dragon drawn (``dragon render``): at time `t` (s), or at the motion's
     first contact with ``collision=True`` (the touching benches marked, the one every command
     reports).
@@ -461,14 +461,15 @@ def render(sim: Union[Simulation, Scenario, None] = None, t: Optional[float] = N
     (m/s) with a colour bar. `zoom` shows a square this many metres wide, about the head, the
     contact, or `centre` (x, y in metres); `follow_head` centres on the head. `guides`, `text`,
     `legend`, `inset` switch the path, all text, the key to the colours and the whole-dragon
-    inset; `annotation` replaces the top-left text ("" for none).
+    inset; `annotation` replaces the top-left text ("" for none). `lang` is the language of the
+    picture's own words: "en" or "zh" (the contest's terms: 龙头, 龙身, 龙尾, 把手).
     """
     if not isinstance(sim, Simulation):
         sim = Simulation(sim)
     width, height = _picture_size(size)
     look = {"theme": os.fspath(theme), "speed_colours": speed_colours, "zoom": zoom,
             "centre": None if centre is None else tuple(float(c) for c in centre), "follow_head": follow_head,
-            "guides": guides, "text": text, "annotation": annotation, "legend": legend, "inset": inset}
+            "guides": guides, "text": text, "annotation": annotation, "legend": legend, "inset": inset, "lang": lang}
     when = None if t is None else float(t)
     data, time = _core._render(sim._sim, when, bool(collision), width, height, format, look, ASSETS)
     return Picture(data, format, time, (width, height),
@@ -480,7 +481,7 @@ def video(scenario: Optional[Scenario] = None, out: Union[str, os.PathLike] = "d
           fps: float = 30.0, size: Sequence[int] = (1280, 720), crf: Optional[int] = None, preset: str = "faster",
           tune: str = "animation", threads: int = 0, colours: Optional[int] = None, follow_head: bool = False,
           zoom: Optional[float] = None, theme: str = "light", speed_colours: bool = False, guides: bool = True,
-          text: bool = True, legend: bool = True, inset: bool = True,
+          text: bool = True, legend: bool = True, inset: bool = True, lang: str = "en",
           progress: Union[bool, Callable[[int, int], None], None] = True) -> dict:
     """A film of the motion (``dragon video``) written to `out` (.mp4 H.264, .webm VP9 or .gif),
     all-or-nothing; returns what was written (frames, seconds, size, fps, encode_seconds).
@@ -490,15 +491,15 @@ def video(scenario: Optional[Scenario] = None, out: Union[str, os.PathLike] = "d
     the turning space) or "end" (the end of the valid motion). Defaults: 0 .. collision on the
     spiral, -100m .. 100m on the turnaround path. `speedup` is simulated seconds per second of
     film; `hold` seconds the last moment stays (1 at a collision). `crf`, `preset`, `tune`,
-    `threads`, `colours` are the encoder's, as the tool's flags. Ctrl-C stops it within a frame,
-    leaving no file.
+    `threads`, `colours` are the encoder's, as the tool's flags; `lang` ("en" or "zh") the
+    language of its captions, clock and legend. Ctrl-C stops it within a frame, leaving no file.
     """
     width, height = _picture_size(size)
     encoder = {"width": width, "height": height, "fps": float(fps), "crf": crf, "preset": preset, "tune": tune,
                "threads": int(threads),
                "colours": colours if colours is not None else (256 if speed_colours else 64)}
     look = {"theme": os.fspath(theme), "speed_colours": speed_colours, "zoom": zoom, "follow_head": follow_head,
-            "guides": guides, "text": text, "legend": legend, "inset": inset}
+            "guides": guides, "text": text, "legend": legend, "inset": inset, "lang": lang}
     callback, close = _progress(progress, "frames", "video")
     try:
         return _core._video(_values(scenario), path, os.fspath(out), from_, to, float(speedup), hold, encoder, look,

@@ -34,6 +34,7 @@ std::string python_name(const std::string& field) {
         {"measure", "measure"},             {"sweep axis", "vary"},
         {"path", "path"},                   {"head speed", "speed"},
         {"video size", "size"},             {"zoom", "zoom"},
+        {"language", "lang"},
     };
     if (const auto it = names.find(field); it != names.end()) return it->second;
     std::string out = field;

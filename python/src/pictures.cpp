@@ -15,6 +15,7 @@
 #include "dragon/clip_plan.hpp"
 #include "dragon/decimals.hpp"
 #include "dragon/film.hpp"
+#include "dragon/language.hpp"
 #include "dragon/picture_bytes.hpp"
 #include "dragon/picture_size.hpp"
 #include "dragon/still.hpp"
@@ -39,6 +40,7 @@ void check_zoom(double zoom) {
 SceneOptions scene_look(const py::dict& look, const std::string& assets) {
     SceneOptions so;
     so.theme = load_theme(get<std::string>(look, "theme", "light"), assets);
+    so.language = parse_language(get<std::string>(look, "lang", "en"));
     so.colour_by_speed = get(look, "speed_colours", false);
     so.show_guides = so.show_turning_space = get(look, "guides", true);
     so.show_text = get(look, "text", true);
@@ -175,6 +177,7 @@ void bind_pictures(py::module_& m) {
               VideoOptions vo = encoder_options(enc, format);
               SceneOptions scene;
               scene.theme = load_theme(get<std::string>(look, "theme", "light"), assets);
+              scene.language = parse_language(get<std::string>(look, "lang", "en"));
               scene.colour_by_speed = get(look, "speed_colours", false);
               scene.show_guides = scene.show_turning_space = get(look, "guides", true);
               scene.show_text = get(look, "text", true);
@@ -189,6 +192,7 @@ void bind_pictures(py::module_& m) {
               if (!to.is_none()) request.to = py::str(to).cast<std::string>();
               request.speedup = speedup;
               if (!hold.is_none()) request.hold = hold.cast<double>();
+              request.language = scene.language;
               FilmLook film_look;
               film_look.legend = get(look, "legend", true);
               film_look.inset = get(look, "inset", true);

@@ -111,3 +111,14 @@ def test_a_storyboards_poster(dragon, tmp_path):
     bd.film(board, tmp_path / "py.png", at=2.0, size=(320, 180), progress=False)
     dragon("film", board, "--at", "2", "--size", "320x180", "-o", str(tmp_path / "tool.png"), "--quiet")
     assert (tmp_path / "py.png").read_bytes() == (tmp_path / "tool.png").read_bytes()
+
+
+def test_chinese_words_as_the_tool_draws_them(dragon, tmp_path):
+    dragon("render", "--collision", "--zoom", "4", "--legend", "--lang", "zh", "--size", "320x240", "-o",
+           str(tmp_path / "zh.png"), "--quiet")
+    zh = bd.render(collision=True, zoom=4, legend=True, lang="zh", size=(320, 240))
+    assert zh.data == (tmp_path / "zh.png").read_bytes()
+    assert zh.data != bd.render(collision=True, zoom=4, legend=True, size=(320, 240)).data
+    with pytest.raises(bd.InputError) as e:
+        bd.render(t=10, lang="fr")
+    assert e.value.field == "lang"
