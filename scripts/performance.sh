@@ -66,4 +66,12 @@ PSNR by ffmpeg's psnr filter, averaged over the frames). The defaults are libx26
 \`\`\`
 $(sh scripts/bench-video.sh "$dragon" "$tmp/video" 2>&1)
 \`\`\`
+
+## Python
+
+\`bash scripts/bench-python.sh\`: the package's frames against the C++ table it wraps, its import,
+a trivial call's overhead, and a 100-scenario min-pitch sweep on a \`ProcessPoolExecutor(2)\`
+against \`dragon sweep\` (medians; a table of its own).
+
+$(bash scripts/bench-python.sh 2>/dev/null || echo "(not measured: build/ has no Python package)")
 EOF2
