@@ -1,4 +1,5 @@
 #include "dragon/sweep_measures.hpp"
+#include "dragon/executor.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -168,6 +169,8 @@ MeasureResult run_measure(const MeasureInfo& m, const Scenario& scenario, const 
                                                     e.bench_a, e.bench_b, at, e.depth)};
     } catch (const InputError& e) {
         out = {State::refused, std::nullopt, fmt::format("refused ({}): {}", m.name, e.what())};
+    } catch (const Cancelled&) {
+        throw;  // the caller stopped the sweep: no row, not a failed one
     } catch (const std::exception& e) {
         // Not the scenario's fault: the row says so and the sweep goes on (the run fails at its end).
         out = {State::failed, std::nullopt, fmt::format("failed ({}): {}", m.name, e.what())};
