@@ -1,6 +1,17 @@
 #!/usr/bin/env bash
 # Configures and builds into build/ (Release). Extra arguments go to cmake's configure step.
+#   build.sh --tool-only   the dragon tool and the libraries it links, nothing else (scripts/run.sh)
+#   build.sh               everything: the tool, the tests, the benchmarks, the Python package
+# Each run says which parts it wants, so one build folder serves both in either order.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-cmake --build build -j"$(nproc)"
+if [[ "${1:-}" == "--tool-only" ]]; then
+  shift
+  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DDRAGON_BUILD_TESTS=OFF -DDRAGON_BUILD_BENCHMARKS=OFF \
+    -DDRAGON_WITH_PYTHON=OFF "$@" >/dev/null
+  cmake --build build --target dragon -j"$(nproc)"
+else
+  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DDRAGON_BUILD_TESTS=ON -DDRAGON_BUILD_BENCHMARKS=ON \
+    -DDRAGON_WITH_PYTHON=AUTO "$@" >/dev/null
+  cmake --build build -j"$(nproc)"
+fi

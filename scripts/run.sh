@@ -3,8 +3,8 @@
 # regenerate the figure gallery in renders/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh
-bash scripts/build.sh
+bash scripts/install-deps.sh run
+bash scripts/build.sh --tool-only
 mkdir -p out
 ./build/src/dragon solve -o out
 ./build/src/dragon figures -o renders --scale 0.8   # about 800 px each, 640 KB in all

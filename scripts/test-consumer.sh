@@ -49,6 +49,16 @@ if strings "$work/prefix/bin/dragon" | grep -F "$root"; then
 fi
 env -u DRAGON_ASSETS "$work/prefix/bin/dragon" render --time 10 --theme dark --size 64x64 -q -o "$work/dark.png"
 test -s "$work/dark.png" || { echo "test-consumer: the installed dragon drew nothing" >&2; exit 1; }
+# The installed Python package, imported from the prefix (not the build tree) with its own assets.
+if [[ -d build/python/benchdragon ]]; then
+  site=$(find "$work/prefix" -type d -name benchdragon -path '*-packages/*' | head -1)
+  [[ -n $site ]] || { echo "test-consumer: cmake --install put no Python package in the prefix" >&2; exit 1; }
+  (cd "$work" && PYTHONPATH=$(dirname "$site") /usr/bin/python3 -c '
+import benchdragon as bd, sys
+assert bd.__file__.startswith(sys.argv[1]), bd.__file__
+assert bd.render(t=10, theme="dark", size=(64, 64)).data[:4] == b"\x89PNG"
+print(f"test-consumer: the installed Python package answers Q2 at t = {bd.collide().time:.9f} s")' "$work")
+fi
 echo "test-consumer: the installed package builds the examples; the core one links no Cairo, FFmpeg or libxlsxwriter;"
 echo "test-consumer: without FFmpeg, Cairo or libxlsxwriter the core component is still found;"
 echo "test-consumer: the installed dragon finds its assets beside it and holds no source path"

@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 start=$SECONDS
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g1" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1" \
-  -DDRAGON_SANITIZE=ON -DBUILD_SHARED_LIBS=ON -DDRAGON_BUILD_BENCHMARKS=OFF >/dev/null
+  -DDRAGON_SANITIZE=ON -DBUILD_SHARED_LIBS=ON -DDRAGON_BUILD_BENCHMARKS=OFF -DDRAGON_WITH_PYTHON=OFF >/dev/null
 cmake --build build-asan -j"$(nproc)"
 
 # halt on the first report of any kind; leaks in system libraries' own caches are suppressed
@@ -34,7 +34,7 @@ echo "test-sanitized: ASan/UBSan build and tests took $((SECONDS - start)) s"
 start=$SECONDS
 cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g1" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1" \
-  -DDRAGON_SANITIZE_THREAD=ON -DDRAGON_BUILD_BENCHMARKS=OFF >/dev/null
+  -DDRAGON_SANITIZE_THREAD=ON -DDRAGON_BUILD_BENCHMARKS=OFF -DDRAGON_WITH_PYTHON=OFF >/dev/null
 cmake --build build-tsan -j"$(nproc)"
 export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/tests/sanitizers/tsan.supp
 ctest --test-dir build-tsan --output-on-failure -j"$(nproc)" \

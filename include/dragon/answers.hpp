@@ -15,12 +15,6 @@
 
 namespace dragon {
 
-// v with as many decimals as `resolution` (how closely v is known) supports, at most 9: 9 for 1e-10.
-std::string format_resolved(double v, double resolution);
-// "the dragon can follow its path only until t = 432.917924228 s, where handle 1 can no longer
-// follow handle 0: ..." (from instead of until for a jam behind t = 0). Every command words a
-// jam with this one sentence.
-std::string jam_sentence(const Jam& j);
 // One sentence: the grid, how each change is narrowed and what each run proves, and what a
 // window narrower than the grid means.
 std::string min_pitch_guarantee(const MinPitch& m);

@@ -145,6 +145,12 @@ private:
 
 // One line for a message: what happens to which handle at the jam.
 std::string describe(const Jam& j);
+// v with as many decimals as `resolution` (how closely v is known) supports, at most 9: 9 for 1e-10.
+std::string format_resolved(double v, double resolution);
+// "the dragon can follow its path only until t = 432.917924228 s, where handle 1 can no longer
+// follow handle 0: ..." (from instead of until for a jam behind t = 0). Every command words a
+// jam with this one sentence.
+std::string jam_sentence(const Jam& j);
 
 // A moment past the end of the valid motion (Simulation::require_valid): the field and time,
 // and the jam, for an application to word (allowed() words it in the library's terms).

@@ -16,8 +16,6 @@ class AtomicFile;
 
 // The contest's row label of a handle (0..N): 龙头, 第k节龙身, 龙尾, 龙尾（后）.
 std::string handle_label(int handle, int handle_count);
-// A time without binary noise: "300", "-100", "0.1", "412.4738".
-std::string format_time(double t);
 // A time to at most `digits` decimals (0..17) as a table with that many decimals prints it:
 // rounded as format_fixed rounds, trailing zeros dropped ("300", "0.1", "12.821187").
 std::string format_time(double t, int digits);
@@ -25,7 +23,8 @@ std::string format_time(double t, int digits);
 std::string time_header(double t);
 
 // Decimals of the CSV and JSON tables: 6 by default (the contest's), at most 17 (every bit of a
-// double, for a reader who wants the value itself).
+// double of 0.1 or more, for a reader who wants the value itself; smaller values keep 17
+// decimals, fewer significant digits).
 inline constexpr int kDefaultDigits = 6;
 inline constexpr int kMaxDigits = 17;
 // v with `digits` decimals (0..17) as the tables print it, never "-0.000": by round6's rule

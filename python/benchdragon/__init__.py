@@ -39,7 +39,7 @@ __version__ = "0.1.0"
 __all__ = [
     "Scenario", "Simulation", "Frame", "Frames", "ValidRange", "Result", "CollideResult", "MinPitchResult",
     "TurnaroundResult", "MaxSpeedResult", "SolveResult", "collide", "min_pitch", "turnaround", "max_speed",
-    "solve", "sweep", "InputError", "FileError", "SolverError", "ASSETS",
+    "solve", "sweep", "Picture", "render", "video", "film", "InputError", "FileError", "SolverError", "ASSETS",
 ]
 
 #: The package's own assets (colour themes, scenario presets, storyboards).
@@ -85,6 +85,8 @@ class Scenario:
         return dict(self._values)
 
     def __getattr__(self, name: str) -> Any:
+        if name == "_values":  # not made (its __init__ raised): no values to look in
+            raise AttributeError(name)
         try:
             return self._values[name]
         except KeyError:
@@ -401,6 +403,131 @@ def solve(scenario: Optional[Scenario] = None, out: Union[None, str, os.PathLike
     text = _core._solve(_values(scenario), None if out is None else os.fspath(out), questions, lo, hi, float(grid),
                         float(limit), from_, to)
     return SolveResult(json.loads(text))
+
+
+# ---- Pictures and films ----------------------------------------------------------------------
+
+
+class Picture:
+    """A moment drawn as ``dragon render`` draws it: the file's bytes in ``data`` (``format`` is
+    "png", "svg" or "pdf"), shown inline by Jupyter, written by :meth:`save` all-or-nothing.
+    ``time`` is the moment drawn (s)."""
+
+    def __init__(self, data: bytes, format: str, time: float, size: tuple, pixels: Callable[[], Any]) -> None:
+        self.data = data
+        self.format = format
+        self.time = time
+        self.size = size
+        self._pixels = pixels
+
+    def _repr_png_(self) -> Optional[bytes]:
+        return self.data if self.format == "png" else None
+
+    def _repr_svg_(self) -> Optional[str]:
+        return self.data.decode("utf-8") if self.format == "svg" else None
+
+    def to_numpy(self):
+        """The picture's pixels as a (height, width, 4) uint8 RGBA array (opaque: alpha 255)."""
+        return self._pixels()
+
+    def save(self, path: Union[str, os.PathLike]) -> None:
+        """Writes the picture to `path` as the tool writes its files: all new or as it was."""
+        _core._save_bytes(self.data, os.fspath(path))
+
+    def __bytes__(self) -> bytes:
+        return self.data
+
+    def __repr__(self) -> str:
+        return f"Picture({self.format}, {self.size[0]}x{self.size[1]} px, t = {self.time:.6f} s, {len(self.data)} bytes)"
+
+
+def _picture_size(size: Sequence[int]) -> tuple:
+    if isinstance(size, str) or len(size) != 2:
+        raise InputError(f"size {size!r} is not allowed: give (width, height) in pixels")
+    return int(size[0]), int(size[1])
+
+
+def render(sim: Union[Simulation, Scenario, None] = None, t: Optional[float] = None, *, collision: bool = False,
+           size: Sequence[int] = (1600, 1600), format: str = "png", theme: str = "light",
+           speed_colours: bool = False, zoom: Optional[float] = None, centre: Optional[Sequence[float]] = None,
+           follow_head: bool = False, guides: bool = True, text: bool = True, annotation: Optional[str] = None,
+           legend: bool = False, inset: bool = False) -> Picture:
+    """One moment of the dragon drawn (``dragon render``): at time `t` (s), or at the motion's
+    first contact with ``collision=True`` (the touching benches marked, the one every command
+    reports).
+
+    `size` is (width, height) in pixels; `format` "png", "svg" or "pdf" (vector, fonts embedded).
+    `theme`: "light", "dark" or a .toml file. `speed_colours` colours each bench by its speed
+    (m/s) with a colour bar. `zoom` shows a square this many metres wide, about the head, the
+    contact, or `centre` (x, y in metres); `follow_head` centres on the head. `guides`, `text`,
+    `legend`, `inset` switch the path, all text, the key to the colours and the whole-dragon
+    inset; `annotation` replaces the top-left text ("" for none).
+    """
+    if not isinstance(sim, Simulation):
+        sim = Simulation(sim)
+    width, height = _picture_size(size)
+    look = {"theme": os.fspath(theme), "speed_colours": speed_colours, "zoom": zoom,
+            "centre": None if centre is None else tuple(float(c) for c in centre), "follow_head": follow_head,
+            "guides": guides, "text": text, "annotation": annotation, "legend": legend, "inset": inset}
+    when = None if t is None else float(t)
+    data, time = _core._render(sim._sim, when, bool(collision), width, height, format, look, ASSETS)
+    return Picture(data, format, time, (width, height),
+                   lambda: _core._render_rgba(sim._sim, when, bool(collision), width, height, look, ASSETS))
+
+
+def video(scenario: Optional[Scenario] = None, out: Union[str, os.PathLike] = "dragon.mp4", *, path: str = "spiral",
+          from_: Moment = None, to: Moment = None, speedup: float = 10.0, hold: Optional[float] = None,
+          fps: float = 30.0, size: Sequence[int] = (1280, 720), crf: Optional[int] = None, preset: str = "faster",
+          tune: str = "animation", threads: int = 0, colours: Optional[int] = None, follow_head: bool = False,
+          zoom: Optional[float] = None, theme: str = "light", speed_colours: bool = False, guides: bool = True,
+          text: bool = True, legend: bool = True, inset: bool = True,
+          progress: Union[bool, Callable[[int, int], None], None] = True) -> dict:
+    """A film of the motion (``dragon video``) written to `out` (.mp4 H.264, .webm VP9 or .gif),
+    all-or-nothing; returns what was written (frames, seconds, size, fps, encode_seconds).
+
+    `from_` and `to` are moments: seconds, head travel as "-100m", and for `to` also
+    "collision" (the first contact, marked; the default on the spiral), "boundary" (the head at
+    the turning space) or "end" (the end of the valid motion). Defaults: 0 .. collision on the
+    spiral, -100m .. 100m on the turnaround path. `speedup` is simulated seconds per second of
+    film; `hold` seconds the last moment stays (1 at a collision). `crf`, `preset`, `tune`,
+    `threads`, `colours` are the encoder's, as the tool's flags. Ctrl-C stops it within a frame,
+    leaving no file.
+    """
+    width, height = _picture_size(size)
+    encoder = {"width": width, "height": height, "fps": float(fps), "crf": crf, "preset": preset, "tune": tune,
+               "threads": int(threads),
+               "colours": colours if colours is not None else (256 if speed_colours else 64)}
+    look = {"theme": os.fspath(theme), "speed_colours": speed_colours, "zoom": zoom, "follow_head": follow_head,
+            "guides": guides, "text": text, "legend": legend, "inset": inset}
+    callback, close = _progress(progress, "frames", "video")
+    try:
+        return _core._video(_values(scenario), path, os.fspath(out), from_, to, float(speedup), hold, encoder, look,
+                            ASSETS, callback)
+    finally:
+        close()
+
+
+def film(storyboard: Union[str, os.PathLike], out: Union[str, os.PathLike], *, at: Optional[float] = None,
+         size: Optional[Sequence[int]] = None, fps: Optional[float] = None, crf: Optional[int] = None,
+         preset: Optional[str] = None, tune: Optional[str] = None, colours: Optional[int] = None,
+         progress: Union[bool, Callable[[int, int], None], None] = True) -> dict:
+    """A storyboard's shots assembled into one film (``dragon film``): `out` is .mp4, .webm or
+    .gif, or .png with `at` (s into the film) for one poster frame. `size` (width, height) and
+    `fps` override the storyboard's [film] settings; `crf`, `preset`, `tune`, `colours` are the
+    encoder's. Storyboards are TOML (see ``ASSETS/films/contest.toml``)."""
+    encoder = {"crf": crf}
+    if preset is not None:
+        encoder["preset"] = preset
+    if tune is not None:
+        encoder["tune"] = tune
+    if colours is not None:
+        encoder["colours"] = colours
+    dims = None if size is None else _picture_size(size)
+    callback, close = _progress(progress, "frames", "film")
+    try:
+        return _core._film(os.fspath(storyboard), os.fspath(out), dims, fps, at, encoder, ASSETS, callback)
+    finally:
+        close()
 
 
 # ---- Sweeps ----------------------------------------------------------------------------------

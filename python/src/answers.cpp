@@ -20,19 +20,6 @@ namespace dragon::python {
 
 py::dict frame_object(const Simulation& sim, const Frame& f);
 
-namespace {
-
-// A progress callback from Python (or None): called with (done, total) while the GIL is held.
-WorkProgress progress_from(const py::object& callback) {
-    if (callback.is_none()) return {};
-    auto fn = std::make_shared<py::object>(callback);
-    return [fn](std::int64_t done, std::int64_t total) {
-        py::gil_scoped_acquire acquire;
-        (*fn)(done, total);
-    };
-}
-
-}  // namespace
 
 void bind_answers(py::module_& m) {
     m.def("_collide",

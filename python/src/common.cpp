@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <memory>
 
 #include <fmt/format.h>
 
@@ -32,6 +33,7 @@ std::string python_name(const std::string& field) {
         {"palette colours", "colours"},     {"encoder threads", "threads"},
         {"measure", "measure"},             {"sweep axis", "vary"},
         {"path", "path"},                   {"head speed", "speed"},
+        {"video size", "size"},             {"zoom", "zoom"},
     };
     if (const auto it = names.find(field); it != names.end()) return it->second;
     std::string out = field;
@@ -91,16 +93,8 @@ void register_errors(py::module_& m) {
             a["field"] = python_name(e.field());
             a["value"] = e.value();
             a["allowed"] = e.allowed();
-            const Jam& j = e.jam;
-            py::dict jam;
-            jam["time"] = j.time;
-            jam["travel"] = j.travel;
-            jam["handle"] = j.handle;
-            jam["kind"] = to_string(j.kind);
-            jam["ahead"] = j.ahead;
-            jam["point"] = py::make_tuple(j.point.x(), j.point.y());
-            jam["tolerance"] = j.tolerance;
-            a["jam"] = jam;
+            // The package's Jam (a result: keys and attributes), as valid_range gives it.
+            a["jam"] = py::module_::import("benchdragon").attr("Jam")(jam_object(e.jam));
             raise_with(input_error, e.what(), a);
         } catch (const ScenarioError& e) {
             std::string field, value, allowed;
@@ -195,6 +189,19 @@ RunWindow window_from(const RunWindow& defaults, const py::object& from, const p
     if (const auto a = along_from(from, "from_")) w.from = *a;
     if (const auto a = along_from(to, "to")) w.to = *a;
     return w;
+}
+
+WorkProgress progress_from(const py::object& callback) {
+    if (callback.is_none()) return {};
+    // The last copy may be dropped on a worker thread: the object is released holding the GIL.
+    std::shared_ptr<py::object> fn(new py::object(callback), [](py::object* o) {
+        py::gil_scoped_acquire acquire;
+        delete o;
+    });
+    return [fn](std::int64_t done, std::int64_t total) {
+        py::gil_scoped_acquire acquire;
+        (*fn)(done, total);
+    };
 }
 
 }  // namespace dragon::python

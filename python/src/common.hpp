@@ -13,7 +13,9 @@
 
 #include <pybind11/pybind11.h>
 
+#include "dragon/chain.hpp"
 #include "dragon/executor.hpp"
+#include "dragon/progress.hpp"
 #include "dragon/scenario.hpp"
 #include "dragon/window.hpp"
 
@@ -36,6 +38,12 @@ PathKind path_kind(const std::string& name);
 std::optional<Along> along_from(const py::object& v, const char* field);
 // The window over a default: `from_` and `to` as given.
 RunWindow window_from(const RunWindow& defaults, const py::object& from, const py::object& to);
+
+// The end of the valid motion as a dict (the answers' "jam" keys), None when unset.
+py::object jam_object(const std::optional<Jam>& j);
+
+// A progress callback from Python (or None): called with (done, total), the GIL taken for it.
+WorkProgress progress_from(const py::object& callback);
 
 // Runs work(executor) on a thread of its own with the GIL released, while this thread checks
 // Python's signals every 50 ms: a KeyboardInterrupt (Ctrl-C, or a notebook's interrupt) asks the

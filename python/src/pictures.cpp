@@ -1,8 +1,255 @@
-// Pictures and films (filled in with the renderer's in-memory output).
+// Pictures and films: a moment drawn as `dragon render` draws it (into memory: PNG, SVG or PDF
+// bytes, or pixels for numpy), a clip as `dragon video` plans it, a storyboard's film.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <cstring>
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
+
 #include "common.hpp"
+#include "dragon/atomic_file.hpp"
+#include "dragon/clip_plan.hpp"
+#include "dragon/decimals.hpp"
+#include "dragon/film.hpp"
+#include "dragon/picture_bytes.hpp"
+#include "dragon/picture_size.hpp"
+#include "dragon/still.hpp"
+#include "dragon/video.hpp"
 
 namespace dragon::python {
 
-void bind_pictures(py::module_&) {}
+namespace {
+
+template <class T>
+T get(const py::dict& d, const char* key, T fallback) {
+    return d.contains(key) && !d[key].is_none() ? d[key].cast<T>() : fallback;
+}
+
+void check_zoom(double zoom) {
+    if (!(zoom >= kMinViewExtent && zoom <= kMaxViewExtent))
+        throw InputError("zoom", fmt::format("{}", zoom),
+                         fmt::format("give the view's width in metres, {:g}..{:g}", kMinViewExtent, kMaxViewExtent));
+}
+
+// The look of a picture from the render call's keywords (the render command's look flags).
+SceneOptions scene_look(const py::dict& look, const std::string& assets) {
+    SceneOptions so;
+    so.theme = load_theme(get<std::string>(look, "theme", "light"), assets);
+    so.colour_by_speed = get(look, "speed_colours", false);
+    so.show_guides = so.show_turning_space = get(look, "guides", true);
+    so.show_text = get(look, "text", true);
+    if (look.contains("annotation") && !look["annotation"].is_none())
+        so.annotation = look["annotation"].cast<std::string>();
+    so.show_legend = get(look, "legend", false);
+    so.show_inset = get(look, "inset", false);
+    const std::optional<double> zoom =
+        look.contains("zoom") && !look["zoom"].is_none() ? std::optional(look["zoom"].cast<double>()) : std::nullopt;
+    if (zoom) check_zoom(*zoom);
+    if (look.contains("centre") && !look["centre"].is_none()) {
+        const auto c = look["centre"].cast<std::pair<double, double>>();
+        if (!zoom) throw InputError("centre needs zoom (the width of the view in metres)");
+        if (!(std::abs(c.first) <= kMaxViewCentre && std::abs(c.second) <= kMaxViewCentre))
+            throw InputError("centre", fmt::format("({}, {})", c.first, c.second),
+                             fmt::format("give x, y in metres, each within \u00b1{:g}", kMaxViewCentre));
+        so.camera = Camera::at({c.first, c.second}, *zoom);
+    } else if (zoom) {
+        so.camera = Camera::follow(*zoom);
+    }
+    if (get(look, "follow_head", false) && !zoom) so.camera = Camera::follow(20.0);
+    return so;
+}
+
+// The moment to draw: a time, or the first contact (its view `zoom` wide about the contact).
+Still make_still(const Simulation& sim, const py::object& time, bool collision, const py::dict& look,
+                 const std::string& assets) {
+    if (collision == !time.is_none())
+        throw InputError("render needs a time t (s) or collision=True, one of them");
+    const SceneOptions so = scene_look(look, assets);
+    if (!collision) {
+        const double t = time.cast<double>();
+        py::gil_scoped_release release;
+        return still_at(sim, t, so);
+    }
+    const std::optional<double> zoom =
+        look.contains("zoom") && !look["zoom"].is_none() ? std::optional(look["zoom"].cast<double>()) : std::nullopt;
+    CollideAnswer searched;
+    std::optional<Still> still;
+    {
+        py::gil_scoped_release release;
+        still = still_at_first_contact(sim, so, zoom, &searched);
+    }
+    if (!still)
+        throw InputError("collision", "True",
+                         fmt::format("no two benches touch between t = {} s and {} s on this scenario{}; give a time",
+                                     format_time(searched.window.from), format_time(searched.window.to),
+                                     searched.jam ? " (" + jam_sentence(*searched.jam) + ")" : ""));
+    return std::move(*still);
+}
+
+py::dict stats_dict(const EncodeStats& s, const VideoOptions& vo) {
+    py::dict d;
+    d["frames"] = s.frames;
+    d["seconds"] = s.frames / vo.fps;
+    d["width"] = vo.width;
+    d["height"] = vo.height;
+    d["fps"] = vo.fps;
+    d["encode_seconds"] = s.seconds;
+    return d;
+}
+
+// The encoder's settings from the call's keywords, checked for this format.
+VideoOptions encoder_options(const py::dict& enc, VideoFormat format) {
+    VideoOptions vo;
+    vo.width = get(enc, "width", vo.width);
+    vo.height = get(enc, "height", vo.height);
+    vo.fps = get(enc, "fps", vo.fps);
+    if (enc.contains("crf") && !enc["crf"].is_none()) vo.crf = enc["crf"].cast<int>();
+    vo.preset = get(enc, "preset", vo.preset);
+    vo.tune = get(enc, "tune", vo.tune);
+    vo.threads = get(enc, "threads", vo.threads);
+    vo.colours = get(enc, "colours", vo.colours);
+    validate(vo, format);
+    return vo;
+}
+
+ProgressFn frame_progress(const WorkProgress& report) {
+    if (!report) return {};
+    return [report](const Progress& p) { report(p.done, p.total); };
+}
+
+}  // namespace
+
+void bind_pictures(py::module_& m) {
+    m.def("_render",
+          [](const Simulation& sim, const py::object& time, bool collision, int width, int height,
+             const std::string& format, const py::dict& look, const std::string& assets) {
+              const PictureType type = picture_type(format);
+              const Still still = make_still(sim, time, collision, look, assets);
+              std::string bytes;
+              {
+                  py::gil_scoped_release release;
+                  bytes = render_bytes(still.scene, width, height, type);
+              }
+              return py::make_tuple(py::bytes(bytes), still.frame.time);
+          },
+          py::arg("sim"), py::arg("time"), py::arg("collision"), py::arg("width"), py::arg("height"),
+          py::arg("format"), py::arg("look"), py::arg("assets"));
+
+    m.def("_render_rgba",
+          [](const Simulation& sim, const py::object& time, bool collision, int width, int height,
+             const py::dict& look, const std::string& assets) {
+              const Still still = make_still(sim, time, collision, look, assets);
+              std::vector<std::uint8_t> pixels;
+              {
+                  py::gil_scoped_release release;
+                  pixels = render_rgba(still.scene, width, height);
+              }
+              py::array_t<std::uint8_t> out({py::ssize_t{height}, py::ssize_t{width}, py::ssize_t{4}});
+              std::memcpy(out.mutable_data(), pixels.data(), pixels.size());
+              return out;
+          },
+          py::arg("sim"), py::arg("time"), py::arg("collision"), py::arg("width"), py::arg("height"),
+          py::arg("look"), py::arg("assets"));
+
+    m.def("_save_bytes",
+          [](const py::bytes& data, const std::string& path) {
+              std::string text = data;
+              py::gil_scoped_release release;
+              AtomicFile file(path);
+              write_text_file(file, text);
+              file.commit();
+          },
+          "Writes the bytes all-or-nothing, as the tool writes its files.", py::arg("data"), py::arg("path"));
+
+    m.def("_video",
+          [](const py::dict& scenario, const std::string& path, const std::string& out, const py::object& from,
+             const py::object& to, double speedup, const py::object& hold, const py::dict& enc, const py::dict& look,
+             const std::string& assets, const py::object& progress) {
+              Scenario s = scenario_from(scenario);
+              s.path.kind = path_kind(path);
+              const VideoFormat format = video_format_for(out);
+              VideoOptions vo = encoder_options(enc, format);
+              SceneOptions scene;
+              scene.theme = load_theme(get<std::string>(look, "theme", "light"), assets);
+              scene.colour_by_speed = get(look, "speed_colours", false);
+              scene.show_guides = scene.show_turning_space = get(look, "guides", true);
+              scene.show_text = get(look, "text", true);
+              const std::optional<double> zoom = look.contains("zoom") && !look["zoom"].is_none()
+                                                     ? std::optional(look["zoom"].cast<double>())
+                                                     : std::nullopt;
+              if (zoom) check_zoom(*zoom);
+              if (get(look, "follow_head", false)) scene.camera = Camera::follow(zoom.value_or(12.0));
+              else if (zoom) scene.camera = Camera::at({0.0, 0.0}, *zoom);
+              ClipRequest request;
+              if (!from.is_none()) request.from = py::str(from).cast<std::string>();
+              if (!to.is_none()) request.to = py::str(to).cast<std::string>();
+              request.speedup = speedup;
+              if (!hold.is_none()) request.hold = hold.cast<double>();
+              FilmLook film_look;
+              film_look.legend = get(look, "legend", true);
+              film_look.inset = get(look, "inset", true);
+              const WorkProgress report = progress_from(progress);
+              { AtomicFile probe(out); }  // an unwritable path fails here, before any work
+              const Simulation sim(s);
+              const EncodeStats stats = interruptible([&](Executor& ex) {
+                  const ClipPlan plan = plan_clip(sim, request, {"from_", "to"});
+                  film_look.events = plan.events;
+                  const Animation anim(sim, plan.clip, vo.fps, scene, plan.end_mark, film_look);
+                  VideoOptions o = vo;
+                  o.executor = &ex;
+                  return write_video(anim, out, o, frame_progress(report));
+              });
+              return stats_dict(stats, vo);
+          },
+          py::arg("scenario"), py::arg("path"), py::arg("out"), py::arg("from_"), py::arg("to"), py::arg("speedup"),
+          py::arg("hold"), py::arg("encoder"), py::arg("look"), py::arg("assets"), py::arg("progress"));
+
+    m.def("_film",
+          [](const std::string& storyboard, const std::string& out, const py::object& size, const py::object& fps,
+             const py::object& at, const py::dict& enc, const std::string& assets, const py::object& progress) {
+              const bool poster = !at.is_none();
+              Storyboard board = load_storyboard(storyboard, assets);
+              if (!size.is_none()) {
+                  const auto [w, h] = size.cast<std::pair<int, int>>();
+                  const PictureSize checked = parse_picture_size(fmt::format("{}x{}", w, h), kMaxVideoSide);
+                  board.film.width = checked.width;
+                  board.film.height = checked.height;
+              }
+              if (!fps.is_none()) board.film.fps = fps.cast<double>();
+              py::dict settings = enc;
+              settings["width"] = board.film.width;
+              settings["height"] = board.film.height;
+              settings["fps"] = board.film.fps;
+              const VideoOptions vo =
+                  poster ? VideoOptions{board.film.width, board.film.height, board.film.fps}
+                         : encoder_options(settings, video_format_for(out));
+              const WorkProgress report = progress_from(progress);
+              const std::optional<double> moment = poster ? std::optional(at.cast<double>()) : std::nullopt;
+              { AtomicFile probe(out); }
+              struct Made {
+                  EncodeStats stats;
+                  std::size_t shots = 0;
+              };
+              const Made made = interruptible([&](Executor& ex) {
+                  const Film film(board);
+                  if (moment) {
+                      write_film_frame(film, *moment, out);
+                      return Made{{1, 0.0}, film.spans().size()};
+                  }
+                  VideoOptions o = vo;
+                  o.executor = &ex;
+                  return Made{write_film(film, out, o, frame_progress(report)), film.spans().size()};
+              });
+              py::dict d = stats_dict(made.stats, vo);
+              d["shots"] = made.shots;
+              return d;
+          },
+          py::arg("storyboard"), py::arg("out"), py::arg("size"), py::arg("fps"), py::arg("at"), py::arg("encoder"),
+          py::arg("assets"), py::arg("progress"));
+}
 
 }  // namespace dragon::python

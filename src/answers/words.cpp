@@ -1,5 +1,5 @@
-// The library's sentences about its answers: a time to the digits it is known to, the end of
-// the valid motion, the minimum pitch's guarantee, Q4's conclusion (dragon/answers.hpp).
+// The library's sentences about its answers: the minimum pitch's guarantee, Q4's conclusion
+// (dragon/answers.hpp).
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -10,21 +10,6 @@
 #include "dragon/answers.hpp"
 
 namespace dragon {
-
-std::string format_resolved(double v, double resolution) {
-    int decimals = 9;
-    if (resolution > 0.0 && std::isfinite(resolution))
-        // A resolution a hair over a power of ten (1.0000001e-10 from a bracket's rounding) counts
-        // as it. Nine decimals at most (1e-9 s, the contest's precision): the searches resolve
-        // 1e-11 m of head travel, which is finer than that for any head speed over 1 cm/s.
-        decimals = std::clamp(static_cast<int>(std::floor(-std::log10(resolution) + 0.01)) - 1, 0, 9);
-    return fmt::format("{:.{}f}", v, decimals);
-}
-
-std::string jam_sentence(const Jam& j) {
-    return fmt::format("the dragon can follow its path only {} t = {} s, where {}", j.ahead ? "until" : "from",
-                       format_resolved(j.time, j.tolerance), describe(j));
-}
 
 std::string min_pitch_guarantee(const MinPitch& m) {
     return fmt::format(

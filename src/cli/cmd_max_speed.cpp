@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "report.hpp"
 #include "scenario_flags.hpp"
+#include "status.hpp"
 #include "window_flags.hpp"
 #include "wording.hpp"
 #include "dragon/tables.hpp"
@@ -23,6 +24,7 @@ struct MaxSpeedOptions {
     double limit = 2.0;
     WindowFlags window;
     bool json = false;
+    bool quiet = false;  // it prints no status; taken as every command takes it
 };
 }  // namespace
 
@@ -35,6 +37,7 @@ void register_max_speed(CLI::App& app, Registry& reg) {
     opt->window.add_to(sub, "Search the Q4 run from here (default -100m: 100 s before the turn at 1 m/s)",
                        "Search up to here (default 100m)");
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
+    add_quiet_flag(sub, opt->quiet);
     reg["max-speed"] = [opt]() {
         Scenario s = opt->scenario.resolve();
         s.path.kind = PathKind::turnaround;

@@ -11,6 +11,7 @@
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/render.hpp"
+#include "dragon/still.hpp"
 #include "dragon/tables.hpp"
 
 namespace dragon::cli {
@@ -27,13 +28,12 @@ struct RenderOptions {
 
 // The motion's first contact (the plain spiral from t = 0 as far as the dragon can follow it, the
 // turnaround 100 m of head travel either side of the turn): the one every command reports.
-Contact find_contact(const Simulation& sim) {
-    const CollideAnswer a = first_contact_of_motion(sim);
-    if (!a.contact)
-        throw InputError(fmt::format("--collision: no two benches touch between t = {} s and {} s on this scenario{}; "
-                                     "use --time instead", format_time(a.window.from), format_time(a.window.to),
-                                     a.jam ? " (" + jam_sentence(*a.jam) + ")" : ""));
-    return *a.contact;
+Still contact_still(const Simulation& sim, const SceneOptions& so, std::optional<double> zoom) {
+    CollideAnswer a;
+    if (std::optional<Still> still = still_at_first_contact(sim, so, zoom, &a)) return std::move(*still);
+    throw InputError(fmt::format("--collision: no two benches touch between t = {} s and {} s on this scenario{}; "
+                                 "use --time instead", format_time(a.window.from), format_time(a.window.to),
+                                 a.jam ? " (" + jam_sentence(*a.jam) + ")" : ""));
 }
 }  // namespace
 
@@ -58,29 +58,10 @@ void register_render(CLI::App& app, Registry& reg) {
         AtomicFile probe(opt->out);  // fail on an unwritable path before any work
         const Scenario s = opt->scenario.resolve();
         const Simulation sim(s);
-        SceneOptions so = opt->look.scene_options();
-        Frame frame;
-        if (opt->collision) {
-            const Contact c = find_contact(sim);
-            frame = c.frame;
-            // Marked where the boards meet: the corner of one nearest the other.
-            const Vec2 at = contact_point(frame.benches[c.bench_a - 1], frame.benches[c.bench_b - 1]);
-            so.collision = CollisionMark{c.bench_a, c.bench_b, at};
-            if (!so.annotation)
-                so.annotation = fmt::format("first contact t = {:.6f} s: benches {} and {}", c.time,
-                                            c.bench_a, c.bench_b);
-            if (opt->look.zoom()) so.camera = Camera::at(at, *opt->look.zoom());
-        } else {
-            sim.require_valid(*opt->time, "time");
-            frame = sim.frame(*opt->time);
-            // Past the first contact the benches overlap (drawn marked): the annotation says so.
-            const std::optional<Contact> c = first_contact_covering(sim, *opt->time, *opt->time).contact;
-            if (!so.annotation && c && c->time < *opt->time)
-                so.annotation = fmt::format("t = {:.3f} s   pitch = {:.3g} m   past the first contact (benches {} and "
-                                            "{}, t = {:.3f} s)", frame.time, s.coil_pitch(), c->bench_a, c->bench_b,
-                                            c->time);
-        }
-        const Scene scene = make_scene(sim, frame, so);
+        const SceneOptions so = opt->look.scene_options();
+        const Still still = opt->collision ? contact_still(sim, so, opt->look.zoom()) : still_at(sim, *opt->time, so);
+        const Scene& scene = still.scene;
+        const Frame& frame = still.frame;
         const auto [w, h] = opt->look.size();
         if (opt->look.zoom()) require_zoom_resolves(scene, w, h, *opt->look.zoom());
         if (ext == ".png") render_png(scene, w, h, opt->out);

@@ -16,8 +16,8 @@
 #include "status.hpp"
 #include "window_flags.hpp"
 #include "wording.hpp"
-#include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
+#include "dragon/clip_plan.hpp"
 #include "dragon/path.hpp"
 #include "dragon/picture_size.hpp"
 #include "dragon/render.hpp"
@@ -49,59 +49,6 @@ struct VideoCliOptions {
     bool no_guides = false, no_text = false, no_legend = false, no_inset = false;
     bool quiet = false;
 };
-
-struct End {
-    double time;
-    std::optional<CollisionMark> mark;
-};
-
-End resolve_to(const std::string& to, const Simulation& sim, double from) {
-    const bool turn = sim.scenario().path.kind == PathKind::turnaround;
-    const std::string what = to.empty() ? (turn ? "100m" : "collision") : to;
-    if (what == "collision") {
-        // The motion's first contact: the one every command reports (collide, turnaround, render
-        // --collision), searched over the path's default window.
-        sim.require_valid(from, "time range start");
-        const CollideAnswer a = first_contact_of_motion(sim);
-        if (!a.contact)
-            throw InputError(fmt::format("--to collision: no two benches touch between t = {} s and {} s{}",
-                                         format_time(a.window.from), format_time(a.window.to),
-                                         a.jam ? " (" + jam_sentence(*a.jam) + ")" : ""));
-        const Contact& c = *a.contact;
-        if (!(c.time > from))
-            throw InputError(fmt::format("--to collision is not allowed with --from {}: the first contact, bench {} "
-                                         "touching bench {}, is at t = {} s, before it", from, c.bench_a, c.bench_b,
-                                         format_resolved(c.time, c.tolerance)));
-        return {c.time, CollisionMark{c.bench_a, c.bench_b, c.point}};
-    }
-    if (what == "boundary") {
-        const double t = boundary_time(sim);
-        if (t <= from) {
-            const double r = norm(sim.path().at_arc(sim.head_arc(from)).pos);
-            throw InputError(fmt::format("--to boundary is not allowed: the head is already inside the turning "
-                                         "space at --from {} s (radius {:.6f} m, turning space {} m) and never "
-                                         "reaches its boundary after that", from, r, sim.scenario().path.turn_radius));
-        }
-        return {t, std::nullopt};
-    }
-    if (what == "end") {
-        // The end of the dragon's valid motion: the spiral's centre, or where a handle would jump.
-        const double end = sim.valid_end();
-        if (!std::isfinite(end))
-            throw InputError("--to end is not allowed here: the dragon follows this path for ever; give a time");
-        return {end, std::nullopt};
-    }
-    try {
-        const Along a = parse_along("--to", what);
-        require_valid_at(sim, a, "time range end");
-        return {a.time(sim.scenario().head_speed), std::nullopt};
-    } catch (const PastTheValidMotion&) {
-        throw;
-    } catch (const InputError&) {
-        throw InputError(fmt::format("--to {} is not allowed: give a time in seconds (12.5), head travel in metres "
-                                     "(100m), collision, boundary or end", to));
-    }
-}
 
 }  // namespace
 
@@ -180,21 +127,13 @@ void register_video(CLI::App& app, Registry& reg) {
         else if (opt->zoom) scene.camera = Camera::at({0.0, 0.0}, *opt->zoom);
 
         const Simulation sim(s);
-        const bool turn = s.path.kind == PathKind::turnaround;
-        const Along start = opt->from ? parse_along("--from", *opt->from) : Along::metres(turn ? -100.0 : 0.0);
-        require_valid_at(sim, start, "time range start");
-        const double from = start.time(s.head_speed);
-        const End end = resolve_to(opt->to, sim, from);
-        // An empty range named by both flags (the library names it "time range").
-        if (std::isfinite(from) && std::isfinite(end.time) && !(end.time > from))
-            throw InputError(fmt::format("time range --from {} --to {} is empty: --to must be after --from", from,
-                                         end.time));
-        Clip clip{from, end.time, opt->speedup, opt->hold.value_or(end.mark ? 1.0 : 0.0)};
+        const ClipPlan plan = plan_clip(sim, {opt->from, opt->to, opt->speedup, opt->hold}, {"--from", "--to"});
+        const Clip& clip = plan.clip;
         FilmLook look;
         look.legend = !opt->no_legend;
         look.inset = !opt->no_inset;
-        look.events = clip_events(sim, clip.from, clip.to, end.mark);
-        const Animation anim(sim, clip, vo.fps, scene, end.mark, look);
+        look.events = plan.events;
+        const Animation anim(sim, clip, vo.fps, scene, plan.end_mark, look);
         // A followed head is furthest from the origin at an end of the clip.
         if (opt->zoom)
             for (int index : {0, anim.distinct_frames() - 1})
@@ -207,8 +146,9 @@ void register_video(CLI::App& app, Registry& reg) {
         }();
         status(opt->quiet, "wrote {}: {}, {}x{}, {:.2f} s of video for t = {:.6f} .. {:.6f} s ({:.1f} frames/s)",
                opt->out, count_of(stats.frames, "frame"), vo.width, vo.height, stats.frames / vo.fps, clip.from, clip.to, stats.fps());
-        if (end.mark)
-            fmt::print("benches {} and {} touch at t = {:.6f} s\n", end.mark->bench_a, end.mark->bench_b, clip.to);
+        if (plan.end_mark)
+            fmt::print("benches {} and {} touch at t = {:.6f} s\n", plan.end_mark->bench_a, plan.end_mark->bench_b,
+                       clip.to);
         return 0;
     };
 }

@@ -8,6 +8,8 @@
 
 #include "render/vector_out.hpp"
 
+#include "picture_checks.hpp"
+
 #include "dragon/atomic_file.hpp"
 #include "render/cairo_handles.hpp"
 #include "dragon/render.hpp"
@@ -15,25 +17,14 @@
 
 namespace dragon {
 
+using render::check_picture_size;
+
 namespace {
-
-void check_size(int w, int h) {
-    // 16K on a side is far beyond any screen and keeps an ARGB32 surface under 1 GiB.
-    constexpr int max_side = 16384;
-    if (w < 16 || h < 16 || w > max_side || h > max_side)
-        throw InputError(fmt::format("image size {} x {} px is not allowed: each side must be 16..{}",
-                                     w, h, max_side));
-}
-
-void check(cairo_status_t st, const char* what) {
-    if (st != CAIRO_STATUS_SUCCESS)
-        throw SolverError(fmt::format("{}: {}", what, cairo_status_to_string(st)));
-}
-
+void check(cairo_status_t st, const char* what) { render::check_cairo(st, what); }
 }  // namespace
 
 void render_png(const Scene& scene, int w, int h, const std::string& path) {
-    check_size(w, h);
+    check_picture_size(w, h);
     require_drawable(scene, w, h);
     AtomicFile out(path);
     // Opaque pictures: RGB24 writes a PNG without an alpha channel (a quarter smaller).
@@ -88,13 +79,13 @@ void write_vector(const std::string& path, PictureFormat format, int w, int h,
 }  // namespace render
 
 void render_svg(const Scene& scene, int w, int h, const std::string& path) {
-    check_size(w, h);
+    check_picture_size(w, h);
     require_drawable(scene, w, h);
     render::write_vector(path, render::PictureFormat::svg, w, h, [&](cairo_t* cr) { draw(cr, scene, w, h); });
 }
 
 void render_pdf(const Scene& scene, int w, int h, const std::string& path) {
-    check_size(w, h);
+    check_picture_size(w, h);
     require_drawable(scene, w, h);
     render::write_vector(path, render::PictureFormat::pdf, w, h, [&](cairo_t* cr) { draw(cr, scene, w, h); });
 }

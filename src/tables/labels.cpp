@@ -14,13 +14,6 @@ std::string handle_label(int handle, int handle_count) {
     return fmt::format("第{}节龙身", handle);
 }
 
-std::string format_time(double t) {
-    // Times come from t0 + k dt; print them without the binary noise (0.30000000000000004).
-    const double r = std::round(t * 1e9) / 1e9;
-    if (r == std::round(r) && std::abs(r) < 1e15) return fmt::format("{}", static_cast<long long>(r));
-    return fmt::format("{}", r == 0.0 ? 0.0 : r);
-}
-
 std::string format_time(double t, int digits) {
     std::string out = format_fixed(t, digits);
     if (out.find('.') != std::string::npos) {

@@ -170,7 +170,10 @@ EncodeStats encode_frames(const std::string& path, const VideoOptions& opt, int 
     }
 
     // Called by one worker at a time, in frame order (the encoder role passes under the ring's lock).
+    // A caller that asks the executor to stop (Ctrl-C in Python) stops the film within a frame:
+    // Cancelled stops every worker, and the unfinished file is never put in place.
     const FrameRing::EncodeFn encode = [&](int index, cairo_surface_t* surface) {
+        check_stop(executor);
         writer.write(surface);
         if (progress) progress({index + 1, frame_count, elapsed()});
     };
@@ -180,6 +183,7 @@ EncodeStats encode_frames(const std::string& path, const VideoOptions& opt, int 
     // The held frames: nothing draws over the last painted frame's slot now; the writer sends
     // its converted picture again.
     for (int index = painted; index < frame_count; ++index) {
+        check_stop(executor);
         writer.repeat();
         if (progress) progress({index + 1, frame_count, elapsed()});
     }

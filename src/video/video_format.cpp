@@ -47,8 +47,8 @@ void validate(const VideoOptions& opt, VideoFormat format) {
     if (opt.width < 2 || opt.height < 2 || opt.width > kMaxVideoSide || opt.height > kMaxVideoSide)
         throw InputError("video size", size, fmt::format("each side must be 2 to {} pixels", kMaxVideoSide));
     if (format != VideoFormat::gif && (opt.width % 2 != 0 || opt.height % 2 != 0))
-        throw InputError(fmt::format("video size {} is not allowed for {}: yuv420p needs an even width and height",
-                                     size, to_string(format)));
+        throw InputError("video size", size,
+                         fmt::format("{} frames are yuv420p, which needs an even width and height", to_string(format)));
     if (!(opt.fps >= kMinVideoFps) || !(opt.fps <= kMaxVideoFps))
         throw InputError("frame rate", error_value(opt.fps),
                          fmt::format("use a rate from {} to {} frames per second", kMinVideoFps, kMaxVideoFps));

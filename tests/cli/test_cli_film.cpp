@@ -91,7 +91,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"at_for_a_film", "", "--at 1", "f.mp4", "--at 1 is not allowed for a film"},
         BadCase{"poster_not_png", "", "--at 1", "p.svg", "p.svg has extension '.svg': the frame --at 1 picks is written as a .png"},
         BadCase{"tune_for_webm", "", "--tune film", "f.webm", "--tune is not allowed for .webm"},
-        BadCase{"odd_size", "", "--size 97x64", "f.mp4", "yuv420p needs an even width"},
+        BadCase{"odd_size", "", "--size 97x64", "f.mp4", "yuv420p, which needs an even width"},
         BadCase{"bad_extension", "", "", "f.avi", "videos are .mp4"},
         BadCase{"missing_storyboard", "MISSING", "", "f.mp4", "nowhere.toml' does not exist"}),
     [](const auto& info) { return std::string(info.param.name); });

@@ -172,4 +172,24 @@ TEST(EncodeExecutor, PaintErrorOnAnyWorkerLeavesNothing) {
     }
 }
 
+TEST(EncodeExecutor, AStopRequestEndsTheFilmWithinAFrameAndLeavesNothing) {
+    // As Python's Ctrl-C does: the caller asks the executor to stop while the film is encoded.
+    InlineExecutor one;
+    CountingPool pool(3);
+    for (Executor* inner : {static_cast<Executor*>(&one), static_cast<Executor*>(&pool)}) {
+        StoppableExecutor stoppable(*inner);
+        const VideoOptions opt = small(&stoppable);
+        const std::string path = scratch("stopped.mp4");
+        int encoded = 0;
+        const auto paint = [&](int i, cairo_t* cr) { test::paint_synthetic(i, cr, opt.width, opt.height); };
+        const auto progress = [&](const Progress& p) {
+            encoded = p.done;
+            if (p.done == 7) stoppable.request_stop();
+        };
+        EXPECT_THROW(encode_frames(path, opt, 400, paint, progress), Cancelled);
+        EXPECT_EQ(encoded, 7);
+        EXPECT_FALSE(fs::exists(path));
+    }
+}
+
 }  // namespace
