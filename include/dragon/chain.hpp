@@ -142,6 +142,7 @@ private:
     // The jam on one side of t = 0 (forward: ahead), after its walk has reached head arc s (or
     // the side's end when `whole`); nullopt if none found there.
     std::optional<Jam> side_jam(double s, bool forward, bool whole) const;
+    bool arc_on_path(double s) const;  // require_arc_on_path would pass
     void require_arc_on_path(double s, const char* what, const std::string& value) const;
 
     Scenario scenario_;

@@ -24,10 +24,11 @@ struct Place {
 
 // What a spiral's chord solver learned placing this point, kept for the next link: the angle
 // the chord spanned, the cos and sin of its half (which must belong to that angle: the solver
-// builds on them), and the predicted change of the angle for the next link of the same length.
-// Only a first guess: the next solve uses it only at the place it was made (theta) and for the
-// same chord, and reaches the same root from any consistent guess (Chain.TheChordMemoIsOnlyAGuess).
-// Empty (chord 0) everywhere else.
+// builds on them), the predicted change of the angle for the next link of the same length, and
+// the rate the angle changed at along the spiral (d angle / d theta, when `sloped`), from which
+// the link after next predicts to second order. Only a first guess: the next solve uses it only
+// at the place it was made (theta) and for the same chord, and reaches the same root from any
+// consistent guess (Chain.TheChordMemoIsOnlyAGuess). Empty (chord 0) everywhere else.
 struct ChordMemo {
     double theta = 0.0;     // rad: the place it was made at
     double chord = 0.0;     // m: the chord it solved (0: empty)
@@ -35,6 +36,8 @@ struct ChordMemo {
     double cos_half = 1.0;  // cos(angle / 2)
     double sin_half = 0.0;  // sin(angle / 2)
     double drift = 0.0;     // rad: the predicted change of `angle` for the next link
+    double slope = 0.0;     // d angle / d theta where the last step began (valid when `sloped`)
+    bool sloped = false;    // `slope` was measured (the second-order prediction may use it)
 };
 
 // A place with its point and unit tangent (pointing in the direction of travel).

@@ -11,6 +11,7 @@
 #include "chain_front.hpp"
 #include "jam_walk.hpp"
 #include "make_path.hpp"
+#include "spiral_chord.hpp"
 
 namespace dragon {
 
@@ -26,24 +27,56 @@ void solve_chain_front(const Path& path, const BenchSpec& spec, double head_arc,
     out.handles.resize(static_cast<size_t>(n));
     out.benches.resize(static_cast<size_t>(n - 1));
 
-    Located cur = path.at_arc(head_arc);
-    out.handles[0] = {cur.pos, cur.tangent, head_speed, cur.place};
+    Located head = path.at_arc(head_arc);
+    out.handles[0] = {head.pos, head.tangent, head_speed, head.place};
+    // The handle in front of the next link: where it is and its tangent.
+    Vec2 front = head.pos, front_tangent = head.tangent;
+    // Handle i + 1 placed behind handle i at link d: its speed and the bench between them.
+    const auto link = [&](int i, double d, const Vec2& pos, const Vec2& tangent, const Place& place) {
+        // Rigid link: equal velocity components along u; both tangents point along the travel.
+        const Vec2 u = (front - pos) / d;
+        const double along_front = dot(front_tangent, u);
+        const double along_rear = dot(tangent, u);
+        const double v = out.handles[static_cast<size_t>(i)].speed * along_front / along_rear;
+        out.handles[static_cast<size_t>(i + 1)] = {pos, tangent, v, place};
+        out.benches[static_cast<size_t>(i)] = {0.5 * (front + pos), u, 0.5 * spec.board_length(i + 1),
+                                               0.5 * spec.width};
+        front = pos;
+        front_tangent = tangent;
+    };
+    const auto off_the_path = [](int i, double d) {
+        return SolverError(fmt::format("handle {} does not fit on the path behind handle {} "
+                                       "(link {} m): the chain runs off the path's end",
+                                       i + 1, i, d));
+    };
+    if (const auto* spiral = dynamic_cast<const Spiral*>(&path)) {
+        // The plain spiral's common case inline (the same solve as Spiral::behind), so that one
+        // link's state stays in registers for the next (spiral_chord.hpp).
+        const double b = spiral->b();
+        spiral_chord::Link l{head.place.u, head.pos.x(), head.pos.y(), head.memo};
+        for (int i = 0; i + 1 < n; ++i) {
+            const double d = spec.link_after(i);
+            double tx = 0.0, ty = 0.0, th2 = 0.0;
+            if (spiral_chord::within_half_turn(b, l.theta, d) && spiral_chord::next_link(b, d, l, tx, ty, th2)) {
+                link(i, d, {l.x, l.y}, {tx, ty}, {0, l.theta});
+                continue;
+            }
+            const Located here{{0, l.theta}, {l.x, l.y}, front_tangent, l.memo};
+            const std::optional<Located> next = spiral_chord::within_half_turn(b, l.theta, d)
+                                                    ? std::optional<Located>(spiral->at({0, th2}))
+                                                    : spiral->behind(here, d);
+            if (!next) throw off_the_path(i, d);
+            l = {next->place.u, next->pos.x(), next->pos.y(), next->memo};
+            link(i, d, next->pos, next->tangent, next->place);
+        }
+        return;
+    }
+    Located cur = head;
     for (int i = 0; i + 1 < n; ++i) {
         const double d = spec.link_after(i);
         const std::optional<Located> next = path.behind(cur, d);
-        if (!next) {
-            throw SolverError(fmt::format("handle {} does not fit on the path behind handle {} "
-                                         "(link {} m): the chain runs off the path's end",
-                                         i + 1, i, d));
-        }
-        // Rigid link: equal velocity components along u; both tangents point along the travel.
-        const Vec2 u = (cur.pos - next->pos) / d;
-        const double along_front = dot(cur.tangent, u);
-        const double along_rear = dot(next->tangent, u);
-        const double v = out.handles[static_cast<size_t>(i)].speed * along_front / along_rear;
-        out.handles[static_cast<size_t>(i + 1)] = {next->pos, next->tangent, v, next->place};
-        out.benches[static_cast<size_t>(i)] = {0.5 * (cur.pos + next->pos), u,
-                                               0.5 * spec.board_length(i + 1), 0.5 * spec.width};
+        if (!next) throw off_the_path(i, d);
+        link(i, d, next->pos, next->tangent, next->place);
         cur = *next;
     }
 }
@@ -88,7 +121,14 @@ double Simulation::end_time() const {
 
 void Simulation::require_on_path(double t, const char* what) const {
     if (!std::isfinite(t)) throw InputError(what, error_value(t), "it must be a finite time in seconds");
-    require_arc_on_path(head_arc(t), what, error_value(t));
+    if (!arc_on_path(head_arc(t))) require_arc_on_path(head_arc(t), what, error_value(t));
+}
+
+// The checks of require_arc_on_path without a message: every frame passes them, and making the
+// message's value (a formatted number) cost more than a tenth of a frame.
+bool Simulation::arc_on_path(double s) const {
+    return s <= path_->s_max() && s >= path_->s_min() &&
+           entry_length_ + std::abs(s) + scenario_.bench.chain_length() <= kMaxReach;
 }
 
 void Simulation::require_arc_on_path(double s, const char* what, const std::string& value) const {
@@ -174,7 +214,7 @@ void Simulation::require_valid_travel(double x, const char* what) const {
     if (!std::isfinite(x)) throw InputError(what, error_value(x), "it must be a finite head travel in metres");
     const double on_path = std::min(x, path_->s_max() - start_arc_);
     if (const std::optional<Jam> j = jam_before_travel(on_path)) throw PastTheValidMotion(what, time_of(x), *j);
-    require_arc_on_path(start_arc_ + x, what, fmt::format("{} m of head travel", x));
+    if (!arc_on_path(start_arc_ + x)) require_arc_on_path(start_arc_ + x, what, fmt::format("{} m of head travel", x));
 }
 
 Simulation::Span Simulation::clip_to_valid(double t0, double t1, const char* from_what, const char* to_what) const {

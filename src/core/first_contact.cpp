@@ -22,6 +22,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <vector>
 
 #include "contact_step.hpp"
@@ -134,12 +135,30 @@ std::optional<Contact> search_stretch(const Simulation& sim, const Simulation& w
     return std::nullopt;
 }
 
-// The benches a search over [x0, x1] of `unit` (the motion at 1 m/s) must watch: on the plain
+// The whole chain at each edge of the stretches, made once for the two stretches that share it
+// (by whichever worker asks first) instead of once for each.
+class EdgeFrames {
+public:
+    EdgeFrames(const Simulation& unit, const std::vector<double>& edge)
+        : unit_(unit), edge_(edge), frames_(edge.size()), made_(edge.size()) {}
+    const Frame& at(size_t k) {
+        std::call_once(made_[k], [&] { frames_[k] = unit_.frame(edge_[k]); });
+        return frames_[k];
+    }
+
+private:
+    const Simulation& unit_;
+    const std::vector<double>& edge_;
+    std::vector<Frame> frames_;
+    std::vector<std::once_flag> made_;
+};
+
+// The benches a search over stretch k of `unit` (the motion at 1 m/s) must watch: on the plain
 // spiral only the leading ones that may touch (core/untouched_tail.hpp), elsewhere all of them.
-Simulation watched_over(const Simulation& unit, double x0, double x1, bool skip_untouched_tail) {
+Simulation watched_over(const Simulation& unit, EdgeFrames& edges, size_t k, bool skip_untouched_tail) {
     const auto* spiral = dynamic_cast<const Spiral*>(&unit.path());
     if (!spiral || !skip_untouched_tail) return unit;
-    return unit.leading(benches_that_may_touch(*spiral, unit.scenario().bench, unit.frame(x0), unit.frame(x1)));
+    return unit.leading(benches_that_may_touch(*spiral, unit.scenario().bench, edges.at(k), edges.at(k + 1)));
 }
 
 // The range of travel [x_from, x_to] in stretches: cut at every multiple of kStretchTravel, so
@@ -177,11 +196,12 @@ std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from
     std::vector<int> steps(chunks, 0);
     std::vector<Workspace> ws(static_cast<size_t>(ex.workers()));
     std::atomic<size_t> winner{chunks};
+    EdgeFrames edge_frames(unit, edge);
     const bool serial = ex.workers() == 1;
     auto search = [&](size_t k, int worker) {
         if (winner.load() < k) return;
         check_stop(ex);
-        const Simulation watched = watched_over(unit, edge[k], edge[k + 1], options.skip_untouched_tail);
+        const Simulation watched = watched_over(unit, edge_frames, k, options.skip_untouched_tail);
         try {
             found[k] = search_stretch(sim, watched, edge[k], edge[k + 1], options.on_step,
                                       [&] { return winner.load(std::memory_order_relaxed) < k; }, steps[k],

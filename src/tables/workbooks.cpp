@@ -9,6 +9,7 @@
 #include <memory>
 #include <mutex>
 #include <stdexcept>
+#include <thread>
 
 #include <fmt/format.h>
 #include <xlsxwriter.h>
@@ -66,19 +67,38 @@ private:
 };
 
 // libxlsxwriter's closing (it packs the sheets into the zip) stamps the document with gmtime(),
-// whose one static result every thread shares: two workbooks closing at once race on it
-// (ThreadSanitizer saw it in Workbooks.SeveralAtOnceOnThreads). One close at a time; the cells,
-// formatted as they are written, still go in parallel.
+// whose one static result every thread shares in the C library: two workbooks closing at once
+// race on it (ThreadSanitizer saw it in Workbooks.SeveralAtOnceOnThreads). That is its only
+// state shared between workbooks, so an application that gives the process a gmtime() with a
+// result of each thread's own (the tool does: cli/gmtime_per_thread.cpp) has its workbooks
+// closed in parallel; otherwise one close at a time, the cells still going in parallel. Which
+// gmtime() the process has is seen from what it does: one result for two threads, or two.
+bool gmtime_is_per_thread() {
+    static const bool per_thread = [] {
+        const std::time_t epoch = 0;
+        const std::tm* here = std::gmtime(&epoch);
+        const std::tm* there = nullptr;
+        std::thread([&] { there = std::gmtime(&epoch); }).join();
+        return here != nullptr && there != nullptr && here != there;
+    }();
+    return per_thread;
+}
+
 std::mutex& close_lock() {
     static std::mutex m;
     return m;
+}
+
+std::unique_lock<std::mutex> one_close_at_a_time() {
+    if (gmtime_is_per_thread()) return {};
+    return std::unique_lock<std::mutex>(close_lock());
 }
 
 // Closing writes the file; also when an exception unwinds past an unfinished workbook.
 struct WorkbookCloser {
     bool mute = false;
     void operator()(lxw_workbook* wb) const {
-        const std::lock_guard<std::mutex> one_at_a_time(close_lock());
+        const std::unique_lock<std::mutex> turn = one_close_at_a_time();
         const StderrMuted quiet(mute);
         workbook_close(wb);
     }
@@ -120,7 +140,7 @@ void close_workbook(WorkbookPtr wb, const AtomicFile& out) {
     const bool mute = wb.get_deleter().mute;
     lxw_error err;
     {
-        const std::lock_guard<std::mutex> one_at_a_time(close_lock());
+        const std::unique_lock<std::mutex> turn = one_close_at_a_time();
         const StderrMuted quiet(mute);
         err = workbook_close(wb.release());
     }
