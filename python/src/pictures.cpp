@@ -36,21 +36,33 @@ void check_zoom(double zoom) {
                          fmt::format("give the view's width in metres, {:g}..{:g}", kMinViewExtent, kMaxViewExtent));
 }
 
-// The look of a picture from the render call's keywords (the render command's look flags).
-SceneOptions scene_look(const py::dict& look, const std::string& assets) {
+// `zoom` from the call's keywords, checked; unset when not given.
+std::optional<double> zoom_of(const py::dict& look) {
+    if (!look.contains("zoom") || look["zoom"].is_none()) return std::nullopt;
+    const double zoom = look["zoom"].cast<double>();
+    check_zoom(zoom);
+    return zoom;
+}
+
+// What pictures and films share: theme, language, speed colours, guides and text.
+SceneOptions common_look(const py::dict& look, const std::string& assets) {
     SceneOptions so;
     so.theme = load_theme(get<std::string>(look, "theme", "light"), assets);
     so.language = parse_language(get<std::string>(look, "lang", "en"));
     so.colour_by_speed = get(look, "speed_colours", false);
     so.show_guides = so.show_turning_space = get(look, "guides", true);
     so.show_text = get(look, "text", true);
+    return so;
+}
+
+// The look of a picture from the render call's keywords (the render command's look flags).
+SceneOptions scene_look(const py::dict& look, const std::string& assets) {
+    SceneOptions so = common_look(look, assets);
     if (look.contains("annotation") && !look["annotation"].is_none())
         so.annotation = look["annotation"].cast<std::string>();
     so.show_legend = get(look, "legend", false);
     so.show_inset = get(look, "inset", false);
-    const std::optional<double> zoom =
-        look.contains("zoom") && !look["zoom"].is_none() ? std::optional(look["zoom"].cast<double>()) : std::nullopt;
-    if (zoom) check_zoom(*zoom);
+    const std::optional<double> zoom = zoom_of(look);
     if (look.contains("centre") && !look["centre"].is_none()) {
         const auto c = look["centre"].cast<std::pair<double, double>>();
         if (!zoom) throw InputError("centre needs zoom (the width of the view in metres)");
@@ -76,8 +88,7 @@ Still make_still(const Simulation& sim, const py::object& time, bool collision, 
         py::gil_scoped_release release;
         return still_at(sim, t, so);
     }
-    const std::optional<double> zoom =
-        look.contains("zoom") && !look["zoom"].is_none() ? std::optional(look["zoom"].cast<double>()) : std::nullopt;
+    const std::optional<double> zoom = zoom_of(look);
     CollideAnswer searched;
     std::optional<Still> still;
     {
@@ -175,16 +186,8 @@ void bind_pictures(py::module_& m) {
               s.path.kind = path_kind(path);
               const VideoFormat format = video_format_for(out);
               VideoOptions vo = encoder_options(enc, format);
-              SceneOptions scene;
-              scene.theme = load_theme(get<std::string>(look, "theme", "light"), assets);
-              scene.language = parse_language(get<std::string>(look, "lang", "en"));
-              scene.colour_by_speed = get(look, "speed_colours", false);
-              scene.show_guides = scene.show_turning_space = get(look, "guides", true);
-              scene.show_text = get(look, "text", true);
-              const std::optional<double> zoom = look.contains("zoom") && !look["zoom"].is_none()
-                                                     ? std::optional(look["zoom"].cast<double>())
-                                                     : std::nullopt;
-              if (zoom) check_zoom(*zoom);
+              SceneOptions scene = common_look(look, assets);
+              const std::optional<double> zoom = zoom_of(look);
               if (get(look, "follow_head", false)) scene.camera = Camera::follow(zoom.value_or(12.0));
               else if (zoom) scene.camera = Camera::at({0.0, 0.0}, *zoom);
               ClipRequest request;
