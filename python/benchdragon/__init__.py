@@ -451,7 +451,9 @@ def render(sim: Union[Simulation, Scenario, None] = None, t: Optional[float] = N
            size: Sequence[int] = (1600, 1600), format: str = "png", theme: str = "light",
            speed_colours: bool = False, zoom: Optional[float] = None, centre: Optional[Sequence[float]] = None,
            follow_head: bool = False, guides: bool = True, text: bool = True, annotation: Optional[str] = None,
-           legend: bool = False, inset: bool = False, lang: str = "en") -> Picture:
+           legend: bool = False, inset: bool = False, lang: str = "en", print_size: Optional[str] = None,
+           width_in: Optional[float] = None, width_cm: Optional[float] = None, font_pt: Optional[float] = None,
+           dpi: Optional[float] = None) -> Picture:
     """One moment of the dragon drawn (``dragon render``): at time `t` (s), or at the motion's
     first contact with ``collision=True`` (the touching benches marked, the one every command
     reports).
@@ -463,6 +465,11 @@ def render(sim: Union[Simulation, Scenario, None] = None, t: Optional[float] = N
     `legend`, `inset` switch the path, all text, the key to the colours and the whole-dragon
     inset; `annotation` replaces the top-left text ("" for none). `lang` is the language of the
     picture's own words: "en" or "zh" (the contest's terms: 龙头, 龙身, 龙尾, 把手).
+
+    For a paper, a print size instead of pixels (the tool's --print flags): `print_size`
+    "column", "page" or "a4", or `width_in` / `width_cm` on the page, `font_pt` for the body
+    text and `dpi` for a PNG (default a 3.5 in column, 8 pt, 300 dpi); `size` then gives only
+    the shape. SVG and PDF are pages of exactly that width; a PNG states its dpi.
     """
     if not isinstance(sim, Simulation):
         sim = Simulation(sim)
@@ -471,9 +478,11 @@ def render(sim: Union[Simulation, Scenario, None] = None, t: Optional[float] = N
             "centre": None if centre is None else tuple(float(c) for c in centre), "follow_head": follow_head,
             "guides": guides, "text": text, "annotation": annotation, "legend": legend, "inset": inset, "lang": lang}
     when = None if t is None else float(t)
-    data, time = _core._render(sim._sim, when, bool(collision), width, height, format, look, ASSETS)
-    return Picture(data, format, time, (width, height),
-                   lambda: _core._render_rgba(sim._sim, when, bool(collision), width, height, look, ASSETS))
+    printed = {"print_size": print_size, "width_in": width_in, "width_cm": width_cm, "font_pt": font_pt, "dpi": dpi}
+    data, time, drawn_w, drawn_h = _core._render(sim._sim, when, bool(collision), width, height, format, look,
+                                                 printed, ASSETS)
+    return Picture(data, format, time, (drawn_w, drawn_h),
+                   lambda: _core._render_rgba(sim._sim, when, bool(collision), width, height, look, printed, ASSETS))
 
 
 def video(scenario: Optional[Scenario] = None, out: Union[str, os.PathLike] = "dragon.mp4", *, path: str = "spiral",

@@ -34,7 +34,9 @@ std::string python_name(const std::string& field) {
         {"measure", "measure"},             {"sweep axis", "vary"},
         {"path", "path"},                   {"head speed", "speed"},
         {"video size", "size"},             {"zoom", "zoom"},
-        {"language", "lang"},
+        {"language", "lang"},              {"print width", "width_in"},
+        {"font size", "font_pt"},           {"dpi", "dpi"},
+        {"print size", "print_size"},
     };
     if (const auto it = names.find(field); it != names.end()) return it->second;
     std::string out = field;

@@ -44,6 +44,45 @@ std::optional<double> zoom_of(const py::dict& look) {
     return zoom;
 }
 
+// A print size from the render call's keywords (print_size, width_in, width_cm, font_pt, dpi),
+// as the tool's --print flags; unset when none is given (sizes in pixels).
+std::optional<PrintSize> print_size_of(const py::dict& p) {
+    const auto given = [&](const char* k) { return p.contains(k) && !p[k].is_none(); };
+    if (!given("print_size") && !given("width_in") && !given("width_cm") && !given("font_pt") && !given("dpi"))
+        return std::nullopt;
+    PrintSize size = given("print_size") ? print_preset(p["print_size"].cast<std::string>()) : PrintSize{};
+    if (given("width_in")) size.width_in = p["width_in"].cast<double>();
+    if (given("width_cm")) {
+        const double cm = p["width_cm"].cast<double>();
+        if (!(cm >= kMinPrintWidthIn * kCmPerInch && cm <= kMaxPrintWidthIn * kCmPerInch))
+            throw InputError("width_cm", error_value(cm), fmt::format("give centimetres, {:g}..{:g}",
+                                                                      kMinPrintWidthIn * kCmPerInch,
+                                                                      kMaxPrintWidthIn * kCmPerInch));
+        size.width_in = cm / kCmPerInch;
+    }
+    if (given("font_pt")) size.font_pt = p["font_pt"].cast<double>();
+    if (given("dpi")) size.dpi = p["dpi"].cast<double>();
+    check_print_size(size);
+    return size;
+}
+
+// A picture's pixels, page and look once a print size (if any) has laid it out: the size in
+// pixels gives the shape; the print size, the pixels and the text.
+struct Sized {
+    int width, height;
+    Page page;
+    py::dict look;
+};
+Sized sized_for(const py::dict& print, int width, int height, bool raster, const py::dict& look) {
+    Sized out{width, height, {}, py::dict(look)};
+    if (const std::optional<PrintSize> size = print_size_of(print)) {
+        const PrintLayout layout = print_layout(*size, static_cast<double>(height) / width, raster);
+        out.look["text_px"] = layout.text_px;
+        out.width = layout.width_px, out.height = layout.height_px, out.page = layout.page;
+    }
+    return out;
+}
+
 // What pictures and films share: theme, language, speed colours, guides and text.
 SceneOptions common_look(const py::dict& look, const std::string& assets) {
     SceneOptions so;
@@ -61,6 +100,7 @@ SceneOptions scene_look(const py::dict& look, const std::string& assets) {
     if (look.contains("annotation") && !look["annotation"].is_none())
         so.annotation = look["annotation"].cast<std::string>();
     so.show_legend = get(look, "legend", false);
+    so.text_px = get(look, "text_px", 0.0);
     so.show_inset = get(look, "inset", false);
     const std::optional<double> zoom = zoom_of(look);
     if (look.contains("centre") && !look["centre"].is_none()) {
@@ -139,34 +179,39 @@ ProgressFn frame_progress(const WorkProgress& report) {
 void bind_pictures(py::module_& m) {
     m.def("_render",
           [](const Simulation& sim, const py::object& time, bool collision, int width, int height,
-             const std::string& format, const py::dict& look, const std::string& assets) {
+             const std::string& format, const py::dict& look, const py::dict& print, const std::string& assets) {
               const PictureType type = picture_type(format);
-              const Still still = make_still(sim, time, collision, look, assets);
+              const Sized sized = sized_for(print, width, height, type == PictureType::png, look);
+              width = sized.width, height = sized.height;
+              const Page& page = sized.page;
+              const py::dict& looks = sized.look;
+              const Still still = make_still(sim, time, collision, looks, assets);
               std::string bytes;
               {
                   py::gil_scoped_release release;
-                  bytes = render_bytes(still.scene, width, height, type);
+                  bytes = render_bytes(still.scene, width, height, type, page);
               }
-              return py::make_tuple(py::bytes(bytes), still.frame.time);
+              return py::make_tuple(py::bytes(bytes), still.frame.time, width, height);
           },
           py::arg("sim"), py::arg("time"), py::arg("collision"), py::arg("width"), py::arg("height"),
-          py::arg("format"), py::arg("look"), py::arg("assets"));
+          py::arg("format"), py::arg("look"), py::arg("print"), py::arg("assets"));
 
     m.def("_render_rgba",
           [](const Simulation& sim, const py::object& time, bool collision, int width, int height,
-             const py::dict& look, const std::string& assets) {
-              const Still still = make_still(sim, time, collision, look, assets);
+             const py::dict& look, const py::dict& print, const std::string& assets) {
+              const Sized sized = sized_for(print, width, height, true, look);
+              const Still still = make_still(sim, time, collision, sized.look, assets);
               std::vector<std::uint8_t> pixels;
               {
                   py::gil_scoped_release release;
-                  pixels = render_rgba(still.scene, width, height);
+                  pixels = render_rgba(still.scene, sized.width, sized.height);
               }
-              py::array_t<std::uint8_t> out({py::ssize_t{height}, py::ssize_t{width}, py::ssize_t{4}});
+              py::array_t<std::uint8_t> out({py::ssize_t{sized.height}, py::ssize_t{sized.width}, py::ssize_t{4}});
               std::memcpy(out.mutable_data(), pixels.data(), pixels.size());
               return out;
           },
           py::arg("sim"), py::arg("time"), py::arg("collision"), py::arg("width"), py::arg("height"),
-          py::arg("look"), py::arg("assets"));
+          py::arg("look"), py::arg("print"), py::arg("assets"));
 
     m.def("_save_bytes",
           [](const py::bytes& data, const std::string& path) {

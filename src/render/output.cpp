@@ -1,49 +1,30 @@
-// Whole-file outputs: the same draw() onto an image surface (PNG) or a vector surface (SVG, PDF).
-#include <cerrno>
-#include <cstring>
-
-#include <cairo-pdf.h>
-#include <cairo-svg.h>
+// Whole-file outputs: the in-memory pictures (picture_bytes.cpp) written all-or-nothing.
 #include <fmt/format.h>
 
-#include "render/png8.hpp"
 #include "render/vector_out.hpp"
 
-#include "picture_checks.hpp"
-
 #include "dragon/atomic_file.hpp"
-#include "render/cairo_handles.hpp"
+#include "dragon/picture_bytes.hpp"
 #include "dragon/render.hpp"
 #include "dragon/scenario.hpp"
 
 namespace dragon {
 
-using render::check_picture_size;
-
 namespace {
-void check(cairo_status_t st, const char* what) { render::check_cairo(st, what); }
+
+void write_picture(const Scene& scene, int w, int h, const std::string& path, PictureType type, const Page& page) {
+    // Checked before the file is touched: a bad size or view leaves nothing behind.
+    const std::string bytes = render_bytes(scene, w, h, type, page);
+    AtomicFile out(path);
+    write_text_file(out, bytes);
+    out.commit();
+}
+
 }  // namespace
 
+// Each file is the in-memory picture's bytes (dragon/picture_bytes.hpp), written all-or-nothing.
 void render_png(const Scene& scene, int w, int h, const std::string& path, const Page& page) {
-    check_picture_size(w, h);
-    require_drawable(scene, w, h);
-    AtomicFile out(path);
-    // Opaque pictures: RGB24 writes a PNG without an alpha channel (a quarter smaller).
-    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
-    check(cairo_surface_status(surface.get()), "creating the image surface");
-    {
-        cairo::Context cr = cairo::make_context(surface.get());
-        draw(cr.get(), scene, w, h);
-        check(cairo_status(cr.get()), "drawing");
-    }
-    if (page.dpi > 0) {  // libpng states the resolution; Cairo's writer cannot
-        render::write_png(surface.get(), out, page.dpi);
-    } else {
-        errno = 0;
-        if (const cairo_status_t st = cairo_surface_write_to_png(surface.get(), out.temp_path().c_str()))
-            throw out.write_error(errno != 0 ? std::strerror(errno) : cairo_status_to_string(st));
-    }
-    out.commit();
+    write_picture(scene, w, h, path, PictureType::png, page);
 }
 
 namespace render {
@@ -59,43 +40,18 @@ PictureFormat picture_format(const std::string& path) {
 void write_vector(const std::string& path, PictureFormat format, int w, int h,
                   const std::function<void(cairo_t*)>& paint, const Page& page) {
     AtomicFile out(path);
-    {
-        // CSS pixels: 96 to the inch, 72 points to the inch; or the page a print size asks.
-        constexpr double pt_per_px = 72.0 / 96.0;
-        const bool printed = page.width_pt > 0 && page.height_pt > 0;
-        const double page_w = printed ? page.width_pt : w * pt_per_px, page_h = printed ? page.height_pt : h * pt_per_px;
-        cairo::Surface surface(format == PictureFormat::pdf ? cairo_pdf_surface_create(out.temp_path().c_str(), page_w, page_h)
-                               : printed ? cairo_svg_surface_create(out.temp_path().c_str(), page_w, page_h)
-                                         : cairo_svg_surface_create(out.temp_path().c_str(), w, h));
-        check(cairo_surface_status(surface.get()), "creating the vector surface");
-        if (format == PictureFormat::svg)
-            cairo_svg_surface_set_document_unit(surface.get(), printed ? CAIRO_SVG_UNIT_PT : CAIRO_SVG_UNIT_PX);
-        else cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "benchdragon");
-        cairo::Context cr = cairo::make_context(surface.get());
-        if (format == PictureFormat::pdf || printed) cairo_scale(cr.get(), page_w / w, page_h / h);
-        paint(cr.get());
-        check(cairo_status(cr.get()), "drawing");
-        cr.reset();
-        errno = 0;
-        cairo_surface_finish(surface.get());  // writes the file
-        if (const cairo_status_t st = cairo_surface_status(surface.get()))
-            throw out.write_error(errno != 0 ? std::strerror(errno) : cairo_status_to_string(st));
-    }
+    write_text_file(out, vector_bytes(format, w, h, paint, page));
     out.commit();
 }
 
 }  // namespace render
 
 void render_svg(const Scene& scene, int w, int h, const std::string& path, const Page& page) {
-    check_picture_size(w, h);
-    require_drawable(scene, w, h);
-    render::write_vector(path, render::PictureFormat::svg, w, h, [&](cairo_t* cr) { draw(cr, scene, w, h); }, page);
+    write_picture(scene, w, h, path, PictureType::svg, page);
 }
 
 void render_pdf(const Scene& scene, int w, int h, const std::string& path, const Page& page) {
-    check_picture_size(w, h);
-    require_drawable(scene, w, h);
-    render::write_vector(path, render::PictureFormat::pdf, w, h, [&](cairo_t* cr) { draw(cr, scene, w, h); }, page);
+    write_picture(scene, w, h, path, PictureType::pdf, page);
 }
 
 void render_print(Scene scene, const PrintSize& size, double aspect, const std::string& path) {

@@ -1,5 +1,6 @@
-// Pictures in memory (dragon/picture_bytes.hpp): Cairo's stream writers into a string, and the
-// image surface's pixels unpacked.
+// Pictures in memory (dragon/picture_bytes.hpp): Cairo's stream writers into a string, libpng
+// where a PNG states its resolution, and the image surface's pixels unpacked. The files
+// (output.cpp) are these bytes.
 #include "dragon/picture_bytes.hpp"
 
 #include <cairo-pdf.h>
@@ -7,6 +8,8 @@
 
 #include "picture_checks.hpp"
 #include "render/cairo_handles.hpp"
+#include "render/png8.hpp"
+#include "render/vector_out.hpp"
 
 namespace dragon {
 
@@ -17,7 +20,8 @@ cairo_status_t append(void* closure, const unsigned char* data, unsigned int len
     return CAIRO_STATUS_SUCCESS;
 }
 
-// Drawn onto an opaque image surface, as render_png draws.
+// Drawn onto an opaque image surface: RGB24 writes a PNG without an alpha channel (a quarter
+// smaller).
 cairo::Surface paint_image(const Scene& scene, int w, int h) {
     render::check_picture_size(w, h);
     require_drawable(scene, w, h);
@@ -32,6 +36,35 @@ cairo::Surface paint_image(const Scene& scene, int w, int h) {
 
 }  // namespace
 
+namespace render {
+
+std::string vector_bytes(PictureFormat format, int w, int h, const std::function<void(cairo_t*)>& paint,
+                         const Page& page) {
+    std::string bytes;
+    // CSS pixels: 96 to the inch, 72 points to the inch; or the page a print size asks.
+    constexpr double pt_per_px = 72.0 / 96.0;
+    const bool printed = page.width_pt > 0 && page.height_pt > 0;
+    const double page_w = printed ? page.width_pt : w * pt_per_px, page_h = printed ? page.height_pt : h * pt_per_px;
+    cairo::Surface surface(format == PictureFormat::pdf ? cairo_pdf_surface_create_for_stream(append, &bytes, page_w, page_h)
+                           : printed ? cairo_svg_surface_create_for_stream(append, &bytes, page_w, page_h)
+                                     : cairo_svg_surface_create_for_stream(append, &bytes, w, h));
+    check_cairo(cairo_surface_status(surface.get()), "creating the vector surface");
+    if (format == PictureFormat::svg)
+        cairo_svg_surface_set_document_unit(surface.get(), printed ? CAIRO_SVG_UNIT_PT : CAIRO_SVG_UNIT_PX);
+    else cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "benchdragon");
+    {
+        cairo::Context cr = cairo::make_context(surface.get());
+        if (format == PictureFormat::pdf || printed) cairo_scale(cr.get(), page_w / w, page_h / h);
+        paint(cr.get());
+        check_cairo(cairo_status(cr.get()), "drawing");
+    }
+    cairo_surface_finish(surface.get());  // writes the rest into `bytes`
+    check_cairo(cairo_surface_status(surface.get()), "writing the picture");
+    return bytes;
+}
+
+}  // namespace render
+
 PictureType picture_type(const std::string& name) {
     if (name == "png") return PictureType::png;
     if (name == "svg") return PictureType::svg;
@@ -39,32 +72,17 @@ PictureType picture_type(const std::string& name) {
     throw InputError("format", "'" + name + "'", "pictures are png, svg or pdf");
 }
 
-std::string render_bytes(const Scene& scene, int w, int h, PictureType type) {
-    std::string bytes;
+std::string render_bytes(const Scene& scene, int w, int h, PictureType type, const Page& page) {
     if (type == PictureType::png) {
         const cairo::Surface surface = paint_image(scene, w, h);
+        if (page.dpi > 0) return render::png_bytes(surface.get(), page.dpi);  // libpng states the resolution
+        std::string bytes;
         render::check_cairo(cairo_surface_write_to_png_stream(surface.get(), append, &bytes), "writing the PNG");
         return bytes;
     }
     render::check_picture_size(w, h);
     require_drawable(scene, w, h);
-    // As the files: SVG in px; a PDF page in points at 96 px to the inch, its fonts embedded.
-    constexpr double pt_per_px = 72.0 / 96.0;
-    cairo::Surface surface(type == PictureType::pdf
-                               ? cairo_pdf_surface_create_for_stream(append, &bytes, w * pt_per_px, h * pt_per_px)
-                               : cairo_svg_surface_create_for_stream(append, &bytes, w, h));
-    render::check_cairo(cairo_surface_status(surface.get()), "creating the vector surface");
-    if (type == PictureType::svg) cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
-    else cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "benchdragon");
-    {
-        cairo::Context cr = cairo::make_context(surface.get());
-        if (type == PictureType::pdf) cairo_scale(cr.get(), pt_per_px, pt_per_px);
-        draw(cr.get(), scene, w, h);
-        render::check_cairo(cairo_status(cr.get()), "drawing");
-    }
-    cairo_surface_finish(surface.get());
-    render::check_cairo(cairo_surface_status(surface.get()), "writing the picture");
-    return bytes;
+    return render::vector_bytes(type, w, h, [&](cairo_t* cr) { draw(cr, scene, w, h); }, page);
 }
 
 std::vector<std::uint8_t> render_rgba(const Scene& scene, int w, int h) {

@@ -15,6 +15,7 @@
 #include <png.h>
 
 #include "dragon/atomic_file.hpp"
+#include "dragon/errors.hpp"
 #include "render/median_cut.hpp"
 
 namespace dragon::render {
@@ -119,7 +120,7 @@ void write_png8(cairo_surface_t* surface, const std::string& path, int max_colou
     out.commit();
 }
 
-void write_png(cairo_surface_t* surface, AtomicFile& out, double dpi) {
+std::string png_bytes(cairo_surface_t* surface, double dpi) {
     cairo_surface_flush(surface);
     const int w = cairo_image_surface_get_width(surface), h = cairo_image_surface_get_height(surface);
     const int stride = cairo_image_surface_get_stride(surface);
@@ -133,26 +134,28 @@ void write_png(cairo_surface_t* surface, AtomicFile& out, double dpi) {
         }
     std::vector<png_bytep> row_ptrs(h);
     for (int y = 0; y < h; ++y) row_ptrs[y] = rows.data() + static_cast<std::size_t>(y) * w * 3;
-    std::unique_ptr<FILE, FileCloser> file(std::fopen(out.temp_path().c_str(), "wb"));
-    if (!file) throw out.write_error(std::strerror(errno));
+    std::string bytes;
     PngWrite pw;
     const auto fail = [](png_structp png, png_const_charp) { png_longjmp(png, 1); };
     const auto ignore = [](png_structp, png_const_charp) {};
     pw.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, fail, ignore);
     if (pw.png) pw.info = png_create_info_struct(pw.png);
-    if (!pw.png || !pw.info) throw std::runtime_error("libpng: out of memory");
+    if (!pw.png || !pw.info) throw SolverError("libpng: out of memory");
     // libpng reports errors by longjmp: nothing with a destructor may be created below.
-    errno = 0;
-    if (setjmp(png_jmpbuf(pw.png))) throw out.write_error(errno != 0 ? std::strerror(errno) : "libpng failed");
-    png_init_io(pw.png, file.get());
+    if (setjmp(png_jmpbuf(pw.png))) throw SolverError("libpng could not encode the picture");
+    const auto append = [](png_structp png, png_bytep chunk, png_size_t length) {
+        static_cast<std::string*>(png_get_io_ptr(png))->append(reinterpret_cast<const char*>(chunk), length);
+    };
+    png_set_write_fn(pw.png, &bytes, append, nullptr);
     png_set_IHDR(pw.png, pw.info, w, h, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                  PNG_FILTER_TYPE_DEFAULT);
     if (dpi > 0) png_set_pHYs(pw.png, pw.info, per_metre(dpi), per_metre(dpi), PNG_RESOLUTION_METER);
     png_write_info(pw.png, pw.info);
     png_write_image(pw.png, row_ptrs.data());
     png_write_end(pw.png, nullptr);
-    if (std::fflush(file.get()) != 0 || std::ferror(file.get()) != 0) throw out.write_error(std::strerror(errno));
-    if (std::fclose(file.release()) != 0) throw out.write_error(std::strerror(errno));
+    return bytes;
 }
+
+void write_png(cairo_surface_t* surface, AtomicFile& out, double dpi) { write_text_file(out, png_bytes(surface, dpi)); }
 
 }  // namespace dragon::render

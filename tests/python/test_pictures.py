@@ -122,3 +122,29 @@ def test_chinese_words_as_the_tool_draws_them(dragon, tmp_path):
     with pytest.raises(bd.InputError) as e:
         bd.render(t=10, lang="fr")
     assert e.value.field == "lang"
+
+
+@pytest.mark.parametrize("flags,kwargs", [
+    (["--print", "column"], {"print_size": "column"}),
+    (["--width-cm", "12", "--font-pt", "9", "--dpi", "150"], {"width_cm": 12, "font_pt": 9, "dpi": 150}),
+])
+def test_print_sizes_as_the_tool_draws_them(dragon, tmp_path, flags, kwargs):
+    import re
+
+    for ext in ("png", "svg"):
+        out = tmp_path / f"tool.{ext}"
+        dragon("render", "--time", "300", "--size", "1600x1200", *flags, "-o", str(out), "--quiet")
+        mine = bd.render(t=300, size=(1600, 1200), format=ext, **kwargs)
+        if ext == "png":
+            assert mine.data == out.read_bytes()
+            assert b"pHYs" in mine.data
+            assert mine.to_numpy().shape[:2] == (mine.size[1], mine.size[0])
+        else:  # Cairo numbers its surfaces process-wide
+            same = lambda b: re.sub(rb"surface[0-9]+", b"surface", b)  # noqa: E731
+            assert same(mine.data) == same(out.read_bytes())
+    with pytest.raises(bd.InputError) as e:
+        bd.render(t=300, print_size="poster")
+    assert e.value.field == "print_size"
+    with pytest.raises(bd.InputError) as e:
+        bd.render(t=300, font_pt=0.5)
+    assert e.value.field == "font_pt"

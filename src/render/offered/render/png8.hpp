@@ -15,8 +15,10 @@ namespace dragon::render {
 // `dpi` > 0: the resolution stated in the file (its pHYs chunk), for a picture at a print size.
 void write_png8(cairo_surface_t* surface, const std::string& path, int max_colours = 256, double dpi = 0);
 
-// Writes an image surface (RGB24 or opaque ARGB32) as a 24-bit PNG into `out`'s temporary
-// file, stating `dpi` (> 0) as its resolution. The caller commits `out`.
+// An image surface (RGB24 or opaque ARGB32) as a 24-bit PNG's bytes, stating `dpi` (> 0) as
+// its resolution. Throws SolverError if libpng fails.
+std::string png_bytes(cairo_surface_t* surface, double dpi);
+// The same PNG into `out`'s temporary file. The caller commits `out`.
 void write_png(cairo_surface_t* surface, AtomicFile& out, double dpi);
 
 }  // namespace dragon::render

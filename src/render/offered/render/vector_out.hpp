@@ -6,11 +6,12 @@
 
 #include <cairo.h>
 
+#include "dragon/picture_bytes.hpp"
 #include "dragon/picture_size.hpp"
 
 namespace dragon::render {
 
-enum class PictureFormat { png, svg, pdf };
+using PictureFormat = PictureType;
 // By the path's extension (.png, .svg, .pdf); InputError for any other.
 PictureFormat picture_format(const std::string& path);
 
@@ -21,5 +22,8 @@ PictureFormat picture_format(const std::string& path);
 // are exactly that many points, the w x h px drawing scaled onto them.
 void write_vector(const std::string& path, PictureFormat format, int w, int h,
                   const std::function<void(cairo_t*)>& paint, const Page& page = {});
+// The same picture's bytes (what write_vector writes). Throws SolverError if Cairo fails.
+std::string vector_bytes(PictureFormat format, int w, int h, const std::function<void(cairo_t*)>& paint,
+                         const Page& page = {});
 
 }  // namespace dragon::render
