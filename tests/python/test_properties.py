@@ -18,8 +18,10 @@ scenarios = st.builds(
     head_length=st.floats(2.6, 3.6),
     start_turn=st.floats(6.0, 16.0),
 )
-# No example database: runs leave nothing in the source tree, and each CI run draws afresh.
-SETTINGS = settings(max_examples=20, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+# No example database (runs leave nothing in the source tree) and the same draw every run, so a
+# CI run is reproducible; raise max_examples locally to search further.
+SETTINGS = settings(max_examples=20, deadline=None, database=None, derandomize=True,
+                    suppress_health_check=[HealthCheck.too_slow])
 
 
 def window(sim: bd.Simulation, span: float):
