@@ -2,6 +2,8 @@
 #include "dragon/contest.hpp"
 
 #include <algorithm>
+#include <array>
+#include <exception>
 #include <cmath>
 #include <limits>
 
@@ -87,44 +89,54 @@ ContestAnswers solve_contest(const Scenario& scenario, const ContestOptions& opt
     enum Job { q3, q1_q2, q4, q5, count };
     Executor& ex = executor_or_default(options.executor);
     InlineExecutor inside(&ex);
+    // A run that fails in several jobs (a full disk under two workbooks closing at once) reports
+    // the first question's failure, whichever worker met its own first.
+    std::array<std::exception_ptr, count> failed;
     ex.parallel_for(count, [&](std::size_t job, int) {
-        switch (static_cast<Job>(job)) {
-            case q3:
-                if (options.asks(Question::q3)) {
-                    MinPitchOptions o;
-                    o.grid = options.pitch_grid;
-                    o.executor = &inside;
-                    out.q3 = min_pitch(coil, out.q3_range->lo, out.q3_range->hi, o);
-                }
-                break;
-            case q1_q2:
-                if (options.asks(Question::q1) || options.asks(Question::q2)) out.q2 = first_contact_of_motion(*coil_sim, &inside);
-                if (options.asks(Question::q1)) {
-                    out.q1 = table_over(*coil_sim, options.q1_window, &inside);
-                    mark_past_contact(*out.q1, out.q2->contact);
-                    if (options.on_q1_table) options.on_q1_table(out.q1->frames);
-                }
-                if (!options.asks(Question::q2)) out.q2.reset();
-                break;
-            case q4:
-                if (options.asks(Question::q4)) {
-                    out.q4_design = design_s_curve(turn);
-                    out.q4_jam = turnaround_jam(*turn_sim);
-                    out.q4 = table_over(*turn_sim, options.turn_window, &inside);
-                    ContactSearchOptions o;
-                    o.executor = &inside;
-                    mark_past_contact(*out.q4, first_contact_travel(*turn_sim, out.q4->window.from_travel,
-                                                                    out.q4->window.to_travel, o));
-                    if (options.on_q4_table) options.on_q4_table(out.q4->frames);
-                }
-                break;
-            case q5:
-                if (options.asks(Question::q5))
-                    out.q5 = max_head_speed(turn, options.speed_limit, options.turn_window, &inside);
-                break;
-            case count: break;
+        try {
+            switch (static_cast<Job>(job)) {
+                case q3:
+                    if (options.asks(Question::q3)) {
+                        MinPitchOptions o;
+                        o.grid = options.pitch_grid;
+                        o.executor = &inside;
+                        out.q3 = min_pitch(coil, out.q3_range->lo, out.q3_range->hi, o);
+                    }
+                    break;
+                case q1_q2:
+                    if (options.asks(Question::q1) || options.asks(Question::q2))
+                        out.q2 = first_contact_of_motion(*coil_sim, &inside);
+                    if (options.asks(Question::q1)) {
+                        out.q1 = table_over(*coil_sim, options.q1_window, &inside);
+                        mark_past_contact(*out.q1, out.q2->contact);
+                        if (options.on_q1_table) options.on_q1_table(out.q1->frames);
+                    }
+                    if (!options.asks(Question::q2)) out.q2.reset();
+                    break;
+                case q4:
+                    if (options.asks(Question::q4)) {
+                        out.q4_design = design_s_curve(turn);
+                        out.q4_jam = turnaround_jam(*turn_sim);
+                        out.q4 = table_over(*turn_sim, options.turn_window, &inside);
+                        ContactSearchOptions o;
+                        o.executor = &inside;
+                        mark_past_contact(*out.q4, first_contact_travel(*turn_sim, out.q4->window.from_travel,
+                                                                        out.q4->window.to_travel, o));
+                        if (options.on_q4_table) options.on_q4_table(out.q4->frames);
+                    }
+                    break;
+                case q5:
+                    if (options.asks(Question::q5))
+                        out.q5 = max_head_speed(turn, options.speed_limit, options.turn_window, &inside);
+                    break;
+                case count: break;
+            }
+        } catch (...) {
+            failed[job] = std::current_exception();
         }
     });
+    for (const Job job : {q1_q2, q3, q4, q5})
+        if (failed[job]) std::rethrow_exception(failed[job]);
     return out;
 }
 
