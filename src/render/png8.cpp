@@ -2,12 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
-#include <memory>
 #include <stdexcept>
 #include <unordered_map>
 #include <vector>
@@ -44,12 +40,37 @@ struct PngWrite {
     ~PngWrite() { png_destroy_write_struct(&png, &info); }
 };
 
-struct FileCloser {
-    void operator()(FILE* f) const noexcept { std::fclose(f); }
-};
-
 // pHYs holds pixels per metre.
 png_uint_32 per_metre(double dpi) { return static_cast<png_uint_32>(std::lround(dpi / 0.0254)); }
+
+// An 8-bit PNG's bytes from its rows: RGB (no palette) or palette indices (with `palette`),
+// stating `dpi` (> 0). `tune` sets the encoder's options before the header is written.
+// libpng's default handlers print on stderr; its errors come back as one SolverError instead.
+std::string encode_png(int w, int h, const std::vector<png_bytep>& rows, const std::vector<png_color>& palette,
+                       double dpi, void (*tune)(png_structp)) {
+    std::string bytes;
+    PngWrite pw;
+    const auto fail = [](png_structp png, png_const_charp) { png_longjmp(png, 1); };
+    const auto ignore = [](png_structp, png_const_charp) {};
+    pw.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, fail, ignore);
+    if (pw.png) pw.info = png_create_info_struct(pw.png);
+    if (!pw.png || !pw.info) throw SolverError("libpng: out of memory");
+    // libpng reports errors by longjmp: nothing with a destructor may be created below.
+    if (setjmp(png_jmpbuf(pw.png))) throw SolverError("libpng could not encode the picture");
+    const auto append = [](png_structp png, png_bytep chunk, png_size_t length) {
+        static_cast<std::string*>(png_get_io_ptr(png))->append(reinterpret_cast<const char*>(chunk), length);
+    };
+    png_set_write_fn(pw.png, &bytes, append, nullptr);
+    png_set_IHDR(pw.png, pw.info, w, h, 8, palette.empty() ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_PALETTE,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    if (!palette.empty()) png_set_PLTE(pw.png, pw.info, palette.data(), static_cast<int>(palette.size()));
+    if (dpi > 0) png_set_pHYs(pw.png, pw.info, per_metre(dpi), per_metre(dpi), PNG_RESOLUTION_METER);
+    if (tune) tune(pw.png);
+    png_write_info(pw.png, pw.info);
+    png_write_image(pw.png, const_cast<png_bytepp>(rows.data()));
+    png_write_end(pw.png, nullptr);
+    return bytes;
+}
 
 }  // namespace
 
@@ -83,16 +104,6 @@ void write_png8(cairo_surface_t* surface, const std::string& path, int max_colou
         index[rgb] = static_cast<std::uint8_t>(best);
     }
 
-    AtomicFile out(path);
-    std::unique_ptr<FILE, FileCloser> file(std::fopen(out.temp_path().c_str(), "wb"));
-    if (!file) throw out.write_error(std::strerror(errno));
-    PngWrite pw;
-    // libpng's default handlers print on stderr; the error comes back as one exception instead.
-    const auto fail = [](png_structp png, png_const_charp) { png_longjmp(png, 1); };
-    const auto ignore = [](png_structp, png_const_charp) {};
-    pw.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, fail, ignore);
-    if (pw.png) pw.info = png_create_info_struct(pw.png);
-    if (!pw.png || !pw.info) throw SolverError("libpng: out of memory");
     std::vector<png_color> pal;
     for (std::uint32_t rgb : palette)
         pal.push_back({static_cast<png_byte>(channel(rgb, 0)), static_cast<png_byte>(channel(rgb, 1)),
@@ -102,21 +113,12 @@ void write_png8(cairo_surface_t* surface, const std::string& path, int max_colou
         for (int x = 0; x < w; ++x) rows[static_cast<std::size_t>(y) * w + x] = index[pixel(x, y)];
     std::vector<png_bytep> row_ptrs(h);
     for (int y = 0; y < h; ++y) row_ptrs[y] = rows.data() + static_cast<std::size_t>(y) * w;
-    // libpng reports errors by longjmp: nothing with a destructor may be created below.
-    errno = 0;
-    if (setjmp(png_jmpbuf(pw.png))) throw out.write_error(errno != 0 ? std::strerror(errno) : "libpng failed");
-    png_init_io(pw.png, file.get());
-    png_set_IHDR(pw.png, pw.info, w, h, 8, PNG_COLOR_TYPE_PALETTE, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-                 PNG_FILTER_TYPE_DEFAULT);
-    png_set_PLTE(pw.png, pw.info, pal.data(), static_cast<int>(pal.size()));
-    if (dpi > 0) png_set_pHYs(pw.png, pw.info, per_metre(dpi), per_metre(dpi), PNG_RESOLUTION_METER);
-    png_set_compression_level(pw.png, 9);
-    png_set_filter(pw.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);  // palette images: no filter compresses best
-    png_write_info(pw.png, pw.info);
-    png_write_image(pw.png, row_ptrs.data());
-    png_write_end(pw.png, nullptr);
-    if (std::fflush(file.get()) != 0 || std::ferror(file.get()) != 0) throw out.write_error(std::strerror(errno));
-    if (std::fclose(file.release()) != 0) throw out.write_error(std::strerror(errno));
+    const std::string bytes = encode_png(w, h, row_ptrs, pal, dpi, [](png_structp png) {
+        png_set_compression_level(png, 9);
+        png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);  // palette images: no filter compresses best
+    });
+    AtomicFile out(path);
+    write_text_file(out, bytes);
     out.commit();
 }
 
@@ -134,26 +136,7 @@ std::string png_bytes(cairo_surface_t* surface, double dpi) {
         }
     std::vector<png_bytep> row_ptrs(h);
     for (int y = 0; y < h; ++y) row_ptrs[y] = rows.data() + static_cast<std::size_t>(y) * w * 3;
-    std::string bytes;
-    PngWrite pw;
-    const auto fail = [](png_structp png, png_const_charp) { png_longjmp(png, 1); };
-    const auto ignore = [](png_structp, png_const_charp) {};
-    pw.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, fail, ignore);
-    if (pw.png) pw.info = png_create_info_struct(pw.png);
-    if (!pw.png || !pw.info) throw SolverError("libpng: out of memory");
-    // libpng reports errors by longjmp: nothing with a destructor may be created below.
-    if (setjmp(png_jmpbuf(pw.png))) throw SolverError("libpng could not encode the picture");
-    const auto append = [](png_structp png, png_bytep chunk, png_size_t length) {
-        static_cast<std::string*>(png_get_io_ptr(png))->append(reinterpret_cast<const char*>(chunk), length);
-    };
-    png_set_write_fn(pw.png, &bytes, append, nullptr);
-    png_set_IHDR(pw.png, pw.info, w, h, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-                 PNG_FILTER_TYPE_DEFAULT);
-    if (dpi > 0) png_set_pHYs(pw.png, pw.info, per_metre(dpi), per_metre(dpi), PNG_RESOLUTION_METER);
-    png_write_info(pw.png, pw.info);
-    png_write_image(pw.png, row_ptrs.data());
-    png_write_end(pw.png, nullptr);
-    return bytes;
+    return encode_png(w, h, row_ptrs, {}, dpi, nullptr);
 }
 
 void write_png(cairo_surface_t* surface, AtomicFile& out, double dpi) { write_text_file(out, png_bytes(surface, dpi)); }
