@@ -45,14 +45,6 @@ std::string copy_beside(const std::string& from, const std::string& place, const
     return copy;
 }
 
-void sync_folder_of(const std::string& path) {
-    fs::path dir = fs::path(path).parent_path();
-    if (dir.empty()) dir = ".";
-    const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (fd < 0) return;  // a folder that cannot be opened for reading: the rename still stands
-    ::fsync(fd);
-    ::close(fd);
-}
 
 }  // namespace
 
@@ -185,6 +177,15 @@ void place_all(const std::vector<Placement>& files) {
     }
     for (Step& s : steps) s.copied = false;
     cleanup();
+}
+
+void sync_folder_of(const std::string& path) {
+    fs::path dir = fs::path(path).parent_path();
+    if (dir.empty()) dir = ".";
+    const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return;  // a folder that cannot be opened for reading: the rename still stands
+    ::fsync(fd);
+    ::close(fd);
 }
 
 }  // namespace dragon::placement

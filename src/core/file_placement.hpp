@@ -41,4 +41,8 @@ void place_all(const std::vector<Placement>& files);
 // ".result1.tmp1234-0.xlsx" for kind "tmp".
 std::string hidden_name(const std::string& path, const char* kind);
 
+// Makes the entry of `path` in its folder durable (fsync of the folder): after a file is made or
+// renamed there. A folder that cannot be opened for reading is left as it is.
+void sync_folder_of(const std::string& path);
+
 }  // namespace dragon::placement

@@ -159,16 +159,6 @@ void write_durably(int fd, const std::string& text, const std::string& path) {
     if (::fdatasync(fd) != 0) throw failure(path, std::strerror(errno));
 }
 
-// The folder's entry for a file made or renamed in it, made durable too.
-void sync_folder(const std::string& path) {
-    std::filesystem::path dir = std::filesystem::path(path).parent_path();
-    if (dir.empty()) dir = ".";
-    const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (fd < 0) return;  // a folder that cannot be opened for reading: the rename still stands
-    ::fsync(fd);
-    ::close(fd);
-}
-
 }  // namespace
 
 std::unique_ptr<RowLog> RowLog::create(const std::string& path, const std::vector<std::string>& preamble,
@@ -181,7 +171,7 @@ std::unique_ptr<RowLog> RowLog::create(const std::string& path, const std::vecto
     std::string text;
     for (const std::string& line : preamble) text += line + "\n";
     write_durably(fd, text, path);
-    sync_folder(path);
+    placement::sync_folder_of(path);
     return log;
 }
 
