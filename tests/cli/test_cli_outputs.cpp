@@ -18,17 +18,11 @@
 namespace fs = std::filesystem;
 using dragon_test::contains;
 using dragon_test::count_lines;
+using dragon_test::fresh_dir;
 using dragon_test::run_dragon;
 using dragon_test::slurp;
 
 namespace {
-
-fs::path fresh_dir(const std::string& name) {
-    const fs::path d = dragon_test::scratch_dir() / name;
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
 
 std::vector<std::string> names_in(const fs::path& dir) {
     std::vector<std::string> out;

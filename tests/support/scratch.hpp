@@ -20,4 +20,12 @@ inline std::filesystem::path scratch_dir() {
     return dir;
 }
 
+// A folder `name` inside the test's scratch folder, made empty.
+inline std::filesystem::path fresh_dir(const std::string& name) {
+    const std::filesystem::path d = scratch_dir() / name;
+    std::filesystem::remove_all(d);
+    std::filesystem::create_directories(d);
+    return d;
+}
+
 }  // namespace dragon_test
