@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <cairo.h>
@@ -151,8 +152,17 @@ struct SceneOptions {
     // Name the touching benches of `collision` on the picture ("bench 1 (head)", "bench 9"), so
     // a reader knows which is the head without the legend.
     bool name_touching = false;
+    // The stretch of the path drawn as the guide, arc length from .. to, m, drawn whole. Unset:
+    // guide_arcs_of(frame), less the parts lying under the benches (which would only cost time).
+    // A film with a still camera sets one stretch for the whole clip: the path stays put while
+    // the dragon moves along it, and is drawn once (the frames after the first copy it).
+    std::optional<std::pair<double, double>> guide_arcs;
 };
 inline constexpr double kTouchingDepth = 1e-6;  // m
+
+// The stretch of the path a frame's guide covers, arc length from .. to, m: from a turn beyond
+// the tail to a dragon's length ahead of the head (to the centre on the plain spiral).
+std::pair<double, double> guide_arcs_of(const Simulation& sim, const Frame& frame);
 
 // Overlays figures add on top of the dragon (world coordinates; sizes in pixels at 800 px,
 // scaled with the image).

@@ -17,6 +17,10 @@
 
 namespace dragon {
 
+namespace render {
+class BackdropCache;  // render/backdrop.hpp, the library's own
+}
+
 // The container and codec, chosen by the output file's extension.
 enum class VideoFormat {
     mp4,   // .mp4: H.264 (libx264), yuv420p
@@ -264,6 +268,9 @@ private:
     FilmLook look_;
     int moving_frames_ = 0;
     int frame_count_ = 0;
+    // The backdrop (background, turning space, path) drawn once for a still camera, shared by
+    // the threads that paint frames (render/backdrop.hpp).
+    std::shared_ptr<render::BackdropCache> backdrop_;
 };
 
 // Renders and encodes the animation at its frame rate (opt.fps is replaced by anim.fps()).

@@ -12,6 +12,7 @@
 
 #include "dragon/render.hpp"
 #include "furniture.hpp"
+#include "backdrop_key.hpp"
 #include "guide.hpp"
 #include "labels.hpp"
 #include "view.hpp"
@@ -226,25 +227,31 @@ void draw_handles(cairo_t* cr, const Scene& s, const View& v, double u) {
     cairo_fill(cr);
 }
 
-
-}  // namespace
-
-void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
+// The scene, its backdrop (background, turning space, guides) copied from `cache` where it
+// holds this one (nullptr: always drawn).
+void draw_scene(cairo_t* cr, const Scene& s, int width_px, int height_px, render::BackdropCache* cache) {
     const render::Units un = render::Units::of(width_px, height_px, s.text_px);
     const double w = un.w, h = un.h, u = un.u;
     cairo_save(cr);
     cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
-    set_colour(cr, {s.theme.background.r, s.theme.background.g, s.theme.background.b, 1.0});
-    cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
-    cairo_paint(cr);
-    cairo_set_operator(cr, CAIRO_OPERATOR_OVER);
     cairo_new_path(cr);
 
+    // Measured only (nothing is drawn before the background).
     const bool vector_surface = cairo_surface_get_type(cairo_get_target(cr)) != CAIRO_SURFACE_TYPE_IMAGE;
     const double right = render::colour_bar_room(s, un);
     const double top = s.title_band ? render::annotation_height(cr, s, un, w) : 0.0;
     const double left = render::left_furniture(cr, s, un, s.title_band ? w : w - right);
     const View v = make_view(s, w, h, right, top, left, u);
+
+    std::optional<render::BackdropKey> key;
+    if (cache) key = render::backdrop_key(cr, s, v, u, top, right, width_px, height_px);
+    const bool copied = key && render::copy_backdrop(cr, *cache, *key);
+    if (!copied) {
+        set_colour(cr, {s.theme.background.r, s.theme.background.g, s.theme.background.b, 1.0});
+        cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
+        cairo_paint(cr);
+        cairo_set_operator(cr, CAIRO_OPERATOR_OVER);
+    }
 
     // The world runs under the furniture in the corners (no hard edge there); a title band and
     // the colour bar's strip are kept clear, the view fitting beside them: under the strip's
@@ -254,8 +261,11 @@ void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
         cairo_rectangle(cr, 0, top, w - right, h - top);
         cairo_clip(cr);
     }
-    draw_turning_space(cr, s, v, u);
-    draw_guides(cr, s, v, u, w - right, h);
+    if (!copied) {
+        draw_turning_space(cr, s, v, u);
+        draw_guides(cr, s, v, u, w - right, h);
+        if (key) render::keep_backdrop(cr, *cache, std::move(*key));
+    }
     draw_benches(cr, s, v, u, vector_surface, w - right, h);
     draw_handles(cr, s, v, u);
     draw_collision(cr, s, v, u);
@@ -277,6 +287,14 @@ void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) {
     const double scale_top = s.show_scale_bar ? h - 48 * un.ut : h;
     render::draw_captions(cr, s, un, bar.hi.x(), inset.lo.x(), std::min(scale_top, inset.lo.y()));
     cairo_restore(cr);
+}
+
+}  // namespace
+
+void draw(cairo_t* cr, const Scene& s, int width_px, int height_px) { draw_scene(cr, s, width_px, height_px, nullptr); }
+
+void render::draw_reusing_backdrop(cairo_t* cr, const Scene& s, int width_px, int height_px, BackdropCache& cache) {
+    draw_scene(cr, s, width_px, height_px, &cache);
 }
 
 }  // namespace dragon

@@ -88,19 +88,18 @@ std::vector<std::pair<double, double>> visible_ranges(const Path& path, const Be
     return out;
 }
 
-void add_guides(Scene& scene, const Simulation& sim, const Frame& frame) {
+void add_guides(Scene& scene, const Simulation& sim, const Frame& frame, const SceneOptions& opt) {
     const Path& path = sim.path();
-    const BenchSpec& spec = sim.scenario().bench;
-    double chain_length = 0;
-    for (int k = 1; k <= spec.bench_count; ++k) chain_length += spec.link_length(k);
-    const Vec2 tail = frame.handles.empty() ? Vec2::Zero() : frame.handles.back().pos;
-    const double tail_arc = frame.handles.empty() ? frame.head_arc : path.arc(frame.handles.back().place);
-    // Out past the tail by one more turn, and on ahead of the head by a dragon's length (to the
-    // centre on the plain spiral), so the guide frames the dragon.
-    const double s0 = tail_arc - 2 * std::numbers::pi * norm(tail) - 1.0;
-    const double s1 = std::isinf(path.s_max()) ? frame.head_arc + chain_length : path.s_max();
     const PathKind kind = sim.scenario().path.kind;
-    for (auto [a, b] : visible_ranges(path, spec, frame, s0, s1)) {
+    std::vector<std::pair<double, double>> ranges;
+    if (opt.guide_arcs) {
+        const auto [s0, s1] = *opt.guide_arcs;
+        if (s1 > s0) ranges.push_back({s0, std::min(s1, path.s_max())});
+    } else {
+        const auto [s0, s1] = guide_arcs_of(sim, frame);
+        ranges = visible_ranges(path, sim.scenario().bench, frame, s0, s1);
+    }
+    for (auto [a, b] : ranges) {
         for (auto [p, q] : render::split_by_piece(path, a, b)) {
             const int piece = path.at_arc(0.5 * (p + q)).place.piece;
             Scene::Guide g;
@@ -175,6 +174,20 @@ std::shared_ptr<const Scene> make_inset(const Simulation& sim, const Frame& fram
 
 }  // namespace
 
+std::pair<double, double> guide_arcs_of(const Simulation& sim, const Frame& frame) {
+    const Path& path = sim.path();
+    const BenchSpec& spec = sim.scenario().bench;
+    double chain_length = 0;
+    for (int k = 1; k <= spec.bench_count; ++k) chain_length += spec.link_length(k);
+    const Vec2 tail = frame.handles.empty() ? Vec2::Zero() : frame.handles.back().pos;
+    const double tail_arc = frame.handles.empty() ? frame.head_arc : path.arc(frame.handles.back().place);
+    // Out past the tail by one more turn, and on ahead of the head by a dragon's length (to the
+    // centre on the plain spiral), so the guide frames the dragon.
+    const double s0 = tail_arc - 2 * std::numbers::pi * norm(tail) - 1.0;
+    const double s1 = std::isinf(path.s_max()) ? frame.head_arc + chain_length : path.s_max();
+    return {s0, s1};
+}
+
 Scene make_scene(const Simulation& sim, const Frame& frame, const SceneOptions& opt) {
     Scene scene;
     scene.theme = opt.theme;
@@ -205,7 +218,7 @@ Scene make_scene(const Simulation& sim, const Frame& frame, const SceneOptions& 
     // The hole radius of the board, m: the handle is a pin through it.
     scene.handle_radius = 0.5 * 0.055;
 
-    if (opt.show_guides && !frame.handles.empty()) add_guides(scene, sim, frame);
+    if (opt.show_guides && !frame.handles.empty()) add_guides(scene, sim, frame, opt);
     if (opt.show_turning_space) scene.turning_radius = sc.path.turn_radius;
 
     scene.colour_by_speed = opt.colour_by_speed;

@@ -7,6 +7,7 @@
 
 #include "dragon/scenario.hpp"
 #include "dragon/video.hpp"
+#include "render/backdrop.hpp"
 #include "render/words.hpp"
 
 namespace dragon {
@@ -110,6 +111,17 @@ Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions 
         if (!scene_.speed_min) scene_.speed_min = r.lo;
         if (!scene_.speed_max) scene_.speed_max = r.hi;
     }
+    // A still camera shows one stretch of path for the whole clip, drawn once: from a turn
+    // beyond the tail at its outermost to a dragon's length ahead of the head at its furthest.
+    if (scene_.show_guides && scene_.camera.mode != Camera::Mode::follow_head && !scene_.guide_arcs) {
+        std::pair<double, double> arcs = guide_arcs_of(sim, sim.frame(clip.from));
+        for (int i = 1; i < camera_samples; ++i) {
+            const auto [s0, s1] = guide_arcs_of(sim, sim.frame(sample_time(clip.from, clip.to, i)));
+            arcs = {std::min(arcs.first, s0), std::max(arcs.second, s1)};
+        }
+        scene_.guide_arcs = arcs;
+    }
+    backdrop_ = std::make_shared<render::BackdropCache>();
     scene_.show_legend = scene_.show_legend || look_.legend;
     // The clock tells the time: the annotation names what is shown instead.
     if (look_.clock && !scene_.annotation) scene_.annotation = scenario_line(sim.scenario(), scene_.language);
@@ -152,7 +164,7 @@ Scene Animation::scene_at(int index) const {
 }
 
 void Animation::paint(int index, cairo_t* cr, int width, int height) const {
-    draw(cr, scene_at(index), width, height);
+    render::draw_reusing_backdrop(cr, scene_at(index), width, height, *backdrop_);
 }
 
 EncodeStats write_video(const Animation& anim, const std::string& path, VideoOptions opt,

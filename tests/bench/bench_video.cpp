@@ -14,6 +14,7 @@ extern "C" {
 
 #include "video/av_handles.hpp"
 #include "render/cairo_handles.hpp"
+#include "dragon/clip_plan.hpp"
 #include "dragon/video.hpp"
 #include "video/yuv_convert.hpp"
 
@@ -57,6 +58,47 @@ void BM_VideoArgbToYuv420p(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_VideoArgbToYuv420p)->Args({1280, 720})->Args({1920, 1080})->Unit(benchmark::kMillisecond);
+
+// The README's coil-in film as `dragon video --to collision --speedup 20` draws it (legend,
+// clock, captions, the contact marked at the end): drawing and colour conversion per frame,
+// every frame of the clip in turn on one thread, without the encoder.
+void BM_FilmDrawAndConvert(benchmark::State& state) {
+    const int w = static_cast<int>(state.range(0)), h = static_cast<int>(state.range(1));
+    static const Simulation sim{Scenario{}};
+    SceneOptions scene;
+    scene.theme = load_theme("light", DRAGON_SOURCE_DIR "/assets");
+    const int variant = static_cast<int>(state.range(2));
+    if (variant == 1) scene.show_guides = false;
+    if (variant == 2) scene.show_handles = false;
+    if (variant == 3) scene.show_text = false;
+    if (variant == 4) scene.show_turning_space = false;
+    ClipRequest request;
+    request.to = "collision";
+    request.speedup = 20.0;
+    const ClipPlan plan = plan_clip(sim, request);
+    FilmLook look;
+    look.events = plan.events;
+    const Animation anim(sim, plan.clip, 30.0, scene, plan.end_mark, look);
+    cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h));
+    av::Frame yuv(av_frame_alloc());
+    yuv->format = AV_PIX_FMT_YUV420P;
+    yuv->width = w;
+    yuv->height = h;
+    av_frame_get_buffer(yuv.get(), 0);
+    int i = 0;
+    for (auto _ : state) {
+        {
+            cairo::Context cr = cairo::make_context(surface.get());
+            anim.paint(i++ % anim.distinct_frames(), cr.get(), w, h);
+        }
+        cairo_surface_flush(surface.get());
+        video::argb32_to_yuv420p(cairo_image_surface_get_data(surface.get()), cairo_image_surface_get_stride(surface.get()),
+                                 w, h, {yuv->data[0], yuv->linesize[0], yuv->data[1], yuv->linesize[1], yuv->data[2],
+                                        yuv->linesize[2]});
+        benchmark::DoNotOptimize(yuv->data[0][0]);
+    }
+}
+BENCHMARK(BM_FilmDrawAndConvert)->Args({1280, 720, 0})->Args({1280, 720, 1})->Args({1280, 720, 2})->Args({1280, 720, 3})->Args({1280, 720, 4})->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 // Conversion + H.264 encoding of already drawn frames, 300 per run.
 void encode(benchmark::State& state, const char* preset) {

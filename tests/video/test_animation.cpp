@@ -136,6 +136,40 @@ TEST(Animation, ViewStaysFixedWhileTheDragonCoils) {
     EXPECT_EQ(first.view_width, last.view_width);
 }
 
+// A still camera shows one stretch of path for the whole clip (drawn once, then copied): it
+// covers every frame's own guide, and each painted frame is draw()'s picture of its scene.
+TEST(Animation, AStillCameraKeepsOnePathForTheClipAndPaintsEachFrameAsDrawDoes) {
+    const Simulation sim(Scenario{});
+    const Animation anim(sim, Clip{0.0, 400.0, 80.0}, 1, SceneOptions{});
+    const Scene first = anim.scene_at(0);
+    ASSERT_FALSE(first.guides.empty());
+    const double from = first.guides.front().s0, to = first.guides.back().s1;
+    for (int i = 0; i < anim.frame_count(); ++i) {
+        const Scene s = anim.scene_at(i);
+        ASSERT_EQ(s.guides.size(), first.guides.size());
+        for (std::size_t g = 0; g < s.guides.size(); ++g)
+            EXPECT_TRUE(s.guides[g].s0 == first.guides[g].s0 && s.guides[g].s1 == first.guides[g].s1) << "frame " << i;
+        const auto [own_from, own_to] = guide_arcs_of(sim, sim.frame(anim.time_at(i)));
+        EXPECT_LE(from, own_from) << "frame " << i;
+        EXPECT_GE(to, own_to) << "frame " << i;
+        // Painted (the backdrop copied after the first frame) and drawn afresh.
+        cairo::Surface drawn(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 320, 240));
+        {
+            cairo::Context cr(cairo_create(drawn.get()));
+            draw(cr.get(), s, 320, 240);
+        }
+        cairo_surface_flush(drawn.get());
+        const test::Rgb want = test::rgb_from_argb32(cairo_image_surface_get_data(drawn.get()), 320, 240,
+                                                     cairo_image_surface_get_stride(drawn.get()));
+        EXPECT_EQ(rendered(anim, i, 320, 240).pixels, want.pixels) << "frame " << i;
+    }
+    // A followed head keeps each frame's own guide.
+    SceneOptions follow;
+    follow.camera = Camera::follow(12.0);
+    const Animation followed(sim, Clip{0.0, 400.0, 80.0}, 1, follow);
+    EXPECT_NE(followed.scene_at(0).guides.front().s0, followed.scene_at(5).guides.front().s0);
+}
+
 TEST(Animation, SpeedColoursKeepOneRangeForTheClip) {
     Scenario s;
     s.path.kind = PathKind::turnaround;
