@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "support/scratch.hpp"
@@ -93,6 +94,48 @@ INSTANTIATE_TEST_SUITE_P(Formats, RoundTrip,
                          ::testing::Values(Case{"round.mp4", "h264", 30.0}, Case{"round.webm", "vp9", 30.0},
                                            Case{"round.gif", "gif", 25.0}),
                          [](const auto& info) { return std::string(fs::path(info.param.file).extension()).substr(1); });
+
+// x264 writes the settings it encoded with into the stream (its SEI text): "ref=8 ... ".
+std::string x264_setting(const std::string& path, const std::string& key) {
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) return "";
+    std::string bytes;
+    char buf[65536];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) bytes.append(buf, n);
+    std::fclose(f);
+    const std::size_t at = bytes.find(" " + key + "=", bytes.find("x264 - core"));
+    if (at == std::string::npos) return "";
+    const std::size_t from = at + key.size() + 2;
+    return bytes.substr(from, bytes.find(' ', from) - from);
+}
+
+std::string encoded_with(const VideoOptions& opt, const std::string& name) {
+    const std::string path = scratch(name);
+    encode_frames(path, opt, 3, [&](int i, cairo_t* cr) { test::paint_synthetic(i, cr, opt.width, opt.height); });
+    return path;
+}
+
+// The defaults are "faster" with tune animation and the dragon's settings over them (8 reference
+// frames, 3 B-frames, sub-pixel level 2) at crf 22; with any other preset or tune, x264's own.
+TEST(VideoWriter, TheDragonsSettingsGoWithTheDefaultPresetOnly) {
+    VideoOptions opt;
+    opt.width = 160;
+    opt.height = 120;
+    const std::string dflt = encoded_with(opt, "defaults.mp4");
+    EXPECT_EQ(x264_setting(dflt, "ref"), "8");
+    EXPECT_EQ(x264_setting(dflt, "bframes"), "3");
+    EXPECT_EQ(x264_setting(dflt, "subme"), "2");
+    EXPECT_EQ(x264_setting(dflt, "crf"), fmt::format("{}.0", kDefaultCrf.h264));
+    EXPECT_EQ(x264_setting(dflt, "psy_rd"), "0.40:0.00");  // tune animation's
+    VideoOptions medium = opt;
+    medium.preset = "medium";
+    const std::string m = encoded_with(medium, "medium.mp4");
+    EXPECT_EQ(x264_setting(m, "subme"), "7");  // medium's own
+    EXPECT_EQ(x264_setting(m, "ref"), "6");    // medium's 3, doubled by tune animation
+    VideoOptions film = opt;
+    film.tune = "film";
+    EXPECT_EQ(x264_setting(encoded_with(film, "film.mp4"), "subme"), "4");  // faster's own
+}
 
 TEST(VideoWriter, DestroyedWithoutFinishLeavesNothing) {
     const std::string path = scratch("unfinished.mp4");
