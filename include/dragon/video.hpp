@@ -220,6 +220,10 @@ std::string scenario_line(const Scenario& s, Language language = Language::en);
 // the dragon at nine moments spread over [from, to] (it coils in or out monotonically, so a
 // few spread samples bound it; `margin`, a fraction of the box on every side, covers the rest).
 Camera fit_over(const Simulation& sim, double from, double to, double margin = Camera{}.margin);
+
+// The stretch of path a still camera shows over [from, to] (SceneOptions::guide_arcs): every
+// frame's own guide_arcs_of at the same nine moments, joined (arc length from .. to, m).
+std::pair<double, double> guide_arcs_over(const Simulation& sim, double from, double to);
 // One speed range for a stretch, from 257 moments spread over it (speeds peak briefly), so a
 // colour means one speed all through.
 struct SpeedRange {

@@ -8,6 +8,7 @@
 
 #include "render/cairo_handles.hpp"
 #include "film_plan.hpp"
+#include "render/backdrop.hpp"
 #include "render/paint.hpp"
 #include "render/words.hpp"
 
@@ -110,6 +111,7 @@ Scene Film::scene_at(int shot, int local, int view) const {
     so.show_text = sh.text;
     so.text_px = impl_->settings.text_px;
     so.inset_camera = v.fit;
+    so.guide_arcs = v.guide_arcs;
     if (v.ends_on_contact && t == v.to) so.collision = v.contact;
     Scene s = make_scene(*v.sim, f, so);
     s.legend_touching = v.ends_on_contact;
@@ -131,13 +133,13 @@ Scene Film::scene_at(int shot, int local, int view) const {
 namespace {
 
 void paint_shot(const Film& film, const film::ShotPlan& p, int shot, int local, cairo_t* cr, const Theme& th, int w,
-                int h) {
+                int h, render::BackdropCache& backdrop) {
     if (p.shot.kind == Shot::Kind::title) {
         draw_title_card(cr, th, p.shot, w, h, film.settings().text_px);
         return;
     }
     if (p.views.size() == 1) {
-        draw(cr, film.scene_at(shot, local, 0), w, h);
+        render::draw_reusing_backdrop(cr, film.scene_at(shot, local, 0), w, h, backdrop);
         return;
     }
     // Two scenes side by side, each in its own half, a gap of the theme's grid colour between.
@@ -164,16 +166,16 @@ void Film::paint(int index, cairo_t* cr) const {
     const ShotPlan& p = m.shots[static_cast<std::size_t>(k)];
     const int local = index - p.first;
     if (k == 0 || local >= p.fade) {
-        paint_shot(*this, p, k, local, cr, m.theme, w, h);
+        paint_shot(*this, p, k, local, cr, m.theme, w, h, *m.backdrop);
         return;
     }
     // A crossfade: the shot before, then this one over it, more opaque frame by frame.
     const ShotPlan& before = m.shots[static_cast<std::size_t>(k - 1)];
-    paint_shot(*this, before, k - 1, index - before.first, cr, m.theme, w, h);
+    paint_shot(*this, before, k - 1, index - before.first, cr, m.theme, w, h, *m.backdrop);
     cairo::Surface next(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
     {
         cairo::Context nc(cairo_create(next.get()));
-        paint_shot(*this, p, k, local, nc.get(), m.theme, w, h);
+        paint_shot(*this, p, k, local, nc.get(), m.theme, w, h, *m.backdrop);
     }
     cairo_surface_flush(next.get());
     cairo_save(cr);

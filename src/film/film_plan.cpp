@@ -85,6 +85,12 @@ void plan_view(const Resolver& r, const Shot& shot, ViewPlan& v, const std::stri
     if (shot.freeze.zoom) r.find_contact(v, "freeze.zoom");
     v.ends_on_contact = v.contact && v.to == v.contact_time;
     v.fit = fit_over(*v.sim, v.from, v.to);
+    const CameraMove& cam = v.spec.camera;
+    const auto same = [](const Window& a, const Window& b) {
+        return a.kind == b.kind && a.centre == b.centre && a.extent == b.extent;
+    };
+    if (cam.from.kind != Window::Kind::head && (!cam.to || same(cam.from, *cam.to)))
+        v.guide_arcs = guide_arcs_over(*v.sim, v.from, v.to);
     if (v.spec.speed_colours) v.speeds = speed_range_over(*v.sim, v.from, v.to);
 
     std::optional<film::Slow> slow;

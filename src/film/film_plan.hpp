@@ -1,5 +1,6 @@
 // A storyboard resolved: per shot, its runs with every moment found, its frames and its timing.
-// Built once by Film's constructor; read by every render thread (nothing in it changes after).
+// Built once by Film's constructor; read by every render thread (nothing in it changes after but
+// the backdrop cache, which locks for itself).
 #pragma once
 
 #include <memory>
@@ -9,6 +10,7 @@
 
 #include "dragon/analyses.hpp"
 #include "dragon/film.hpp"
+#include "render/backdrop.hpp"
 #include "time_map.hpp"
 
 namespace dragon::film {
@@ -29,6 +31,9 @@ struct ViewPlan {
     double contact_time = 0;               // s, when there is one
     bool ends_on_contact = false;          // `to` is that contact
     Camera fit;                            // the run's whole dragon over [from, to]
+    // A still camera's one stretch of path for the shot (drawn once: render/backdrop.hpp);
+    // unset for a camera that moves or follows the head.
+    std::optional<std::pair<double, double>> guide_arcs;
     std::optional<SpeedRange> speeds;      // speed colours: one range for the shot
     TimeMap map{0, 1, 1};
     int moving = 1;                        // frames from `from` to `to` (the last shows `to`)
@@ -54,6 +59,8 @@ struct Film::Impl {
     std::vector<ShotSpan> spans;
     int frames = 0;
     std::string file;
+    // The still shots' backdrops, drawn once (render/backdrop.hpp); shared by the render threads.
+    std::shared_ptr<render::BackdropCache> backdrop = std::make_shared<render::BackdropCache>();
 };
 
 }  // namespace dragon

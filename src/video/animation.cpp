@@ -46,6 +46,15 @@ Camera fit_over(const Simulation& sim, double from, double to, double margin) {
     return Camera::at({0.5 * (box.lo_x + box.hi_x), 0.5 * (box.lo_y + box.hi_y)}, extent);
 }
 
+std::pair<double, double> guide_arcs_over(const Simulation& sim, double from, double to) {
+    std::pair<double, double> arcs = guide_arcs_of(sim, sim.frame(from));
+    for (int i = 1; i < camera_samples; ++i) {
+        const auto [s0, s1] = guide_arcs_of(sim, sim.frame(sample_time(from, to, i)));
+        arcs = {std::min(arcs.first, s0), std::max(arcs.second, s1)};
+    }
+    return arcs;
+}
+
 SpeedRange speed_range_over(const Simulation& sim, double from, double to) {
     // Speeds peak briefly (handles just behind the head as it leaves the S-curve): far more
     // moments than the view needs, each a chain solve of some 16 us.
@@ -113,14 +122,8 @@ Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions 
     }
     // A still camera shows one stretch of path for the whole clip, drawn once: from a turn
     // beyond the tail at its outermost to a dragon's length ahead of the head at its furthest.
-    if (scene_.show_guides && scene_.camera.mode != Camera::Mode::follow_head && !scene_.guide_arcs) {
-        std::pair<double, double> arcs = guide_arcs_of(sim, sim.frame(clip.from));
-        for (int i = 1; i < camera_samples; ++i) {
-            const auto [s0, s1] = guide_arcs_of(sim, sim.frame(sample_time(clip.from, clip.to, i)));
-            arcs = {std::min(arcs.first, s0), std::max(arcs.second, s1)};
-        }
-        scene_.guide_arcs = arcs;
-    }
+    if (scene_.show_guides && scene_.camera.mode != Camera::Mode::follow_head && !scene_.guide_arcs)
+        scene_.guide_arcs = guide_arcs_over(sim, clip.from, clip.to);
     backdrop_ = std::make_shared<render::BackdropCache>();
     scene_.show_legend = scene_.show_legend || look_.legend;
     // The clock tells the time: the annotation names what is shown instead.
