@@ -143,6 +143,7 @@ struct Workspace {
     };
     std::vector<Candidate> tight;
     std::vector<std::pair<std::uint64_t, double>> pair_steps;
+    Frame frame;  // a whole chain, solved for what the search keeps of it (the stretches' edges)
 };
 
 // `last` is what the last accepted evaluation promised; this one's goes to `next` (cleared

@@ -135,30 +135,37 @@ std::optional<Contact> search_stretch(const Simulation& sim, const Simulation& w
     return std::nullopt;
 }
 
-// The whole chain at each edge of the stretches, made once for the two stretches that share it
-// (by whichever worker asks first) instead of once for each.
-class EdgeFrames {
+// What the proof of the untouched tail reads of the whole chain at each edge of the stretches
+// (its handles' angles), made once for the two stretches that share it (by whichever worker asks
+// first) instead of once for each; the whole frame is solved into the worker's own scratch and
+// only the angles kept (a few KB a search, where the frames took about 1 MB).
+class EdgeAngles {
 public:
-    EdgeFrames(const Simulation& unit, const std::vector<double>& edge)
-        : unit_(unit), edge_(edge), frames_(edge.size()), made_(edge.size()) {}
-    const Frame& at(size_t k) {
-        std::call_once(made_[k], [&] { frames_[k] = unit_.frame(edge_[k]); });
-        return frames_[k];
+    EdgeAngles(const Simulation& unit, const std::vector<double>& edge)
+        : unit_(unit), edge_(edge), angles_(edge.size()), made_(edge.size()) {}
+    const ChainAngles& at(size_t k, Frame& scratch) {
+        std::call_once(made_[k], [&] {
+            unit_.frame_into(edge_[k], scratch);
+            angles_[k] = chain_angles(scratch);
+        });
+        return angles_[k];
     }
 
 private:
     const Simulation& unit_;
     const std::vector<double>& edge_;
-    std::vector<Frame> frames_;
+    std::vector<ChainAngles> angles_;
     std::vector<std::once_flag> made_;
 };
 
 // The benches a search over stretch k of `unit` (the motion at 1 m/s) must watch: on the plain
 // spiral only the leading ones that may touch (core/untouched_tail.hpp), elsewhere all of them.
-Simulation watched_over(const Simulation& unit, EdgeFrames& edges, size_t k, bool skip_untouched_tail) {
+Simulation watched_over(const Simulation& unit, EdgeAngles& edges, size_t k, bool skip_untouched_tail, Frame& scratch) {
     const auto* spiral = dynamic_cast<const Spiral*>(&unit.path());
     if (!spiral || !skip_untouched_tail) return unit;
-    return unit.leading(benches_that_may_touch(*spiral, unit.scenario().bench, edges.at(k), edges.at(k + 1)));
+    const ChainAngles& first = edges.at(k, scratch);
+    const ChainAngles& last = edges.at(k + 1, scratch);
+    return unit.leading(benches_that_may_touch(*spiral, unit.scenario().bench, first, last));
 }
 
 // The range of travel [x_from, x_to] in stretches: cut at every multiple of kStretchTravel, so
@@ -196,16 +203,16 @@ std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from
     std::vector<int> steps(chunks, 0);
     std::vector<Workspace> ws(static_cast<size_t>(ex.workers()));
     std::atomic<size_t> winner{chunks};
-    EdgeFrames edge_frames(unit, edge);
+    EdgeAngles edge_angles(unit, edge);
     const bool serial = ex.workers() == 1;
     auto search = [&](size_t k, int worker) {
         if (winner.load() < k) return;
         check_stop(ex);
-        const Simulation watched = watched_over(unit, edge_frames, k, options.skip_untouched_tail);
+        Workspace& mine = ws[static_cast<size_t>(worker)];
+        const Simulation watched = watched_over(unit, edge_angles, k, options.skip_untouched_tail, mine.frame);
         try {
             found[k] = search_stretch(sim, watched, edge[k], edge[k + 1], options.on_step,
-                                      [&] { return winner.load(std::memory_order_relaxed) < k; }, steps[k],
-                                      ws[static_cast<size_t>(worker)]);
+                                      [&] { return winner.load(std::memory_order_relaxed) < k; }, steps[k], mine);
         } catch (...) {
             winner = 0;  // stop the others at their next step; the executor rethrows this
             throw;
