@@ -52,12 +52,13 @@ constexpr double kStretchTravel = 10.0;  // m
 double head_radius(const Frame& f) { return norm(f.handles.front().pos); }
 
 // The contact at head travel x, reported for `sim` (at its own head speed).
-Contact make_contact(const Simulation& sim, double x, int steps, BroadPhase& broad) {
+// Its evaluations are counted by the caller, over the stretches up to the contact's.
+Contact make_contact(const Simulation& sim, double x, BroadPhase& broad) {
     Frame f = sim.frame_at_travel(x);
     const Clearance c = clearance(f, kMargin, broad);
     const double t = f.time;
     const double rounding = 2.0 * (std::nextafter(std::abs(t), INFINITY) - std::abs(t));
-    Contact out{t, c.bench_a, c.bench_b, head_radius(f), c.point, std::move(f), steps,
+    Contact out{t, c.bench_a, c.bench_b, head_radius(f), c.point, std::move(f), 0,
                 std::max(tol::travel / sim.scenario().head_speed, rounding)};
     out.travel = x;
     out.travel_tolerance = std::max(tol::travel, 2.0 * (std::nextafter(std::abs(x), INFINITY) - std::abs(x)));
@@ -65,12 +66,14 @@ Contact make_contact(const Simulation& sim, double x, int steps, BroadPhase& bro
 }
 
 // The search over one stretch of travel, stepping `watched` (the benches that may touch, on the
-// motion at 1 m/s, so that its times are head travel) and reporting the contact with the whole
-// chain of `sim`; `steps` grows by the evaluations it makes. A step covers at most kMaxTravel of
-// head travel, and the contact is found to tol::travel.
+// motion at 1 m/s, so that its times are head travel) and reporting the head travel of the
+// contact; `steps` grows by the evaluations it makes. A step covers at most kMaxTravel of head
+// travel, and the contact is found to tol::travel. The contact itself (the whole chain of `sim`
+// there, and its closest pair) is made only for the stretch that wins (make_contact): a stretch
+// after the first contact, which starts overlapping, costs one evaluation.
 template <class Stop>
-std::optional<Contact> search_stretch(const Simulation& sim, const Simulation& watched, double t_from, double t_to,
-                                      const StepObserver& on_step, const Stop& stop, int& steps, Workspace& ws) {
+std::optional<double> search_stretch(const Simulation& sim, const Simulation& watched, double t_from, double t_to,
+                                     const StepObserver& on_step, const Stop& stop, int& steps, Workspace& ws) {
     const double max_step = kMaxTravel;
     const double time_tol = tol::travel;
     Frame f;
@@ -80,14 +83,14 @@ std::optional<Contact> search_stretch(const Simulation& sim, const Simulation& w
     Approach a = approach(f, t, max_step, memory, seen, false, ws);
     memory.swap(seen);
     ++steps;
-    if (a.clear.distance <= 0.0) return make_contact(sim, t, steps, ws.broad);
+    if (a.clear.distance <= 0.0) return t;
     double retry_cap = INFINITY;  // after a broken curvature bound, retry shorter from t
 
     while (t < t_to) {
         if (stop()) return std::nullopt;
         // A pair grazing within rounding of touching, closing too slowly to bound: contact now
         // (also when the step is below the resolution of t itself, late in a slow run).
-        if (a.safe_step < time_tol || t + a.safe_step == t) return make_contact(sim, t, steps, ws.broad);
+        if (a.safe_step < time_tol || t + a.safe_step == t) return t;
         // Bracket: a Newton probe on the closest pair once it is nearly touching, no farther
         // than any other pair could touch (the bisection below sees only the clearance's sign,
         // and would pass over another pair's contact that opens and closes inside its bracket).
@@ -130,7 +133,7 @@ std::optional<Contact> search_stretch(const Simulation& sim, const Simulation& w
             ++steps;
             if (clearance(f, kMargin, ws.broad).distance > 0.0) lo = mid; else hi = mid;
         }
-        return make_contact(sim, hi, steps, ws.broad);
+        return hi;
     }
     return std::nullopt;
 }
@@ -199,7 +202,7 @@ std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from
     Executor& ex = options.on_step ? in_order : executor_or_default(options.executor);
     const std::vector<double> edge = x_to > x_from ? stretch_edges(x_from, x_to) : std::vector<double>{x_from, x_from};
     const size_t chunks = edge.size() - 1;
-    std::vector<std::optional<Contact>> found(chunks);
+    std::vector<std::optional<double>> found(chunks);  // the travel of each stretch's contact
     std::vector<int> steps(chunks, 0);
     std::vector<Workspace> ws(static_cast<size_t>(ex.workers()));
     std::atomic<size_t> winner{chunks};
@@ -230,7 +233,7 @@ std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from
     }
     const size_t w = winner.load();
     if (w == chunks) return std::nullopt;
-    Contact c = std::move(*found[w]);
+    Contact c = make_contact(sim, *found[w], ws.front().broad);
     c.steps = 0;
     for (size_t k = 0; k <= w; ++k) c.steps += steps[k];
     return c;
