@@ -25,6 +25,7 @@
 #include <mutex>
 #include <vector>
 
+#include "chain_front.hpp"
 #include "contact_step.hpp"
 #include "untouched_tail.hpp"
 #include "dragon/analyses.hpp"
@@ -140,16 +141,22 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
 
 // What the proof of the untouched tail reads of the whole chain at each edge of the stretches
 // (its handles' angles), made once for the two stretches that share it (by whichever worker asks
-// first) instead of once for each; the whole frame is solved into the worker's own scratch and
-// only the angles kept (a few KB a search, where the frames took about 1 MB).
+// first) instead of once for each. On the spiral only the angles are solved (solve_spiral_chain_angles:
+// no points, speeds or benches), and kept: a few KB a search, where whole frames took about 1 MB.
 class EdgeAngles {
 public:
     EdgeAngles(const Simulation& unit, const std::vector<double>& edge)
         : unit_(unit), edge_(edge), angles_(edge.size()), made_(edge.size()) {}
     const ChainAngles& at(size_t k, Frame& scratch) {
         std::call_once(made_[k], [&] {
-            unit_.frame_into(edge_[k], scratch);
-            angles_[k] = chain_angles(scratch);
+            const double t = edge_[k];
+            unit_.require_valid(t, "time");  // as a frame there would
+            ChainAngles& a = angles_[k];
+            a.time = t;
+            if (!solve_spiral_chain_angles(unit_.path(), unit_.scenario().bench, unit_.head_arc(t), a.theta)) {
+                unit_.frame_into(t, scratch);
+                a = chain_angles(scratch);
+            }
         });
         return angles_[k];
     }
