@@ -163,6 +163,18 @@ void closest_pair(const Frame& f, const std::vector<std::pair<int, int>>& pairs,
 
 }  // namespace
 
+// The broad phase at margin 0 holds every pair that overlaps or touches, and a pair's projected
+// gap is <= 0 exactly when its separation is (separation() returns that same gap, computed the
+// same way, whenever it is not positive). approach() takes its clearance from the exact
+// separations of a superset of those pairs (its margin is wider, and the pairs it passes over
+// are kept apart by their radii), so it finds one <= 0 exactly when this does.
+bool overlapping(const Frame& f, Workspace& ws) {
+    if (f.benches.size() < 3) return false;
+    for (const auto& [a, b] : ws.broad.candidate_pairs(f, 0.0))
+        if (projected_gap(f.benches[static_cast<size_t>(a - 1)], f.benches[static_cast<size_t>(b - 1)]) <= 0.0) return true;
+    return false;
+}
+
 Approach approach(const Frame& f, double t, double max_step, const StepRecord& last, StepRecord& next, bool check,
                   Workspace& ws) {
     Approach a{{INFINITY, 0, 0, Vec2::Zero(), Vec2::Zero()}, INFINITY, 0.0, false, INFINITY};

@@ -146,6 +146,11 @@ struct Workspace {
     Frame frame;  // a whole chain, solved for what the search keeps of it (the stretches' edges)
 };
 
+// Whether two non-adjacent benches of `f` overlap or touch: exactly when approach() would find
+// a clearance <= 0 (see contact_step.cpp), at a fraction of its cost. A search past the first
+// contact starts so, and needs no more.
+bool overlapping(const Frame& f, Workspace& ws);
+
 // `last` is what the last accepted evaluation promised; this one's goes to `next` (cleared
 // first), for the caller to keep if it accepts the step; `check` holds this evaluation, the end
 // of the step from `last`, to those promises.

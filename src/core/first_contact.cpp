@@ -81,9 +81,12 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
     double t = t_from;
     StepRecord memory, seen;
     watched.frame_into(t, f);
+    ++steps;
+    // Starting with benches overlapping (a stretch after the first contact, which the workers
+    // take first): its start, found without a whole evaluation's bounds.
+    if (overlapping(f, ws)) return t;
     Approach a = approach(f, t, max_step, memory, seen, false, ws);
     memory.swap(seen);
-    ++steps;
     if (a.clear.distance <= 0.0) return t;
     double retry_cap = INFINITY;  // after a broken curvature bound, retry shorter from t
 

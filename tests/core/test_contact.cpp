@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "core/contact_step.hpp"
 #include "dragon/analyses.hpp"
+#include "dragon/collision.hpp"
 #include "dragon/constants.hpp"
 #include "dragon/executor.hpp"
 
@@ -315,4 +317,40 @@ TEST(Q2, AProbeBracketNeverPassesOverAnotherPairsContact) {
     EXPECT_GT(clearance(sim.frame(late->time - 1e-8)).distance, 0.0);
     // A scan of the bracket agrees: nothing touches before it.
     for (double t = 159.06; t < late->time - 1e-3; t += 0.01) ASSERT_GT(clearance(sim.frame(t)).distance, 0.0) << t;
+}
+
+// The quick test a stretch starts with (contact::overlapping) says "overlapping or touching"
+// exactly when the clearance over every pair is <= 0: before, at and past the first contact
+// (where more and more benches lie across each other), on the whole chain and on its leading
+// benches, at several pitches; and in a scan through the contest's contact, on both sides of it.
+TEST(Q2, TheOverlapTestAgreesWithTheClearanceOfEveryPair) {
+    contact::Workspace ws;
+    int overlapping = 0, apart = 0;
+    Frame f;
+    for (const double pitch : {0.45, 0.55, 0.7}) {
+        Scenario s;
+        s.path.pitch = pitch;
+        const Simulation sim(s);
+        const double end = sim.valid_end();
+        for (const int lead : {5, 30, 223}) {
+            const Simulation part = sim.leading(lead);
+            for (double t = std::max(0.0, end - 120.0); t <= end; t += 0.37) {
+                part.frame_into(t, f);
+                const bool quick = contact::overlapping(f, ws);
+                ASSERT_EQ(quick, clearance_all_pairs(f).distance <= 0.0) << "pitch " << pitch << ", t = " << t;
+                ++(quick ? overlapping : apart);
+            }
+        }
+    }
+    const Simulation contest{Scenario{}};
+    const auto hit = first_contact(contest, 0.0, contest.valid_end());
+    ASSERT_TRUE(hit);
+    for (int k = -200; k <= 200; ++k) {
+        contest.frame_into(hit->time + k * 1e-9, f);
+        const bool quick = contact::overlapping(f, ws);
+        ASSERT_EQ(quick, clearance_all_pairs(f).distance <= 0.0) << "t = contact + " << k << " ns";
+        ++(quick ? overlapping : apart);
+    }
+    EXPECT_GT(overlapping, 200);
+    EXPECT_GT(apart, 200);
 }
