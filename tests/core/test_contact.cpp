@@ -354,3 +354,37 @@ TEST(Q2, TheOverlapTestAgreesWithTheClearanceOfEveryPair) {
     EXPECT_GT(overlapping, 200);
     EXPECT_GT(apart, 200);
 }
+
+// A contact is reported from the pairs within contact::kProbeGap when its nearest pair is nearer
+// than that: the same pair, distance, axis and point as from the pairs within the margin, and
+// as from every pair. Checked through the contact of runs at several pitches, within 2 mm of it.
+TEST(Q2, TheContactsPairIsTheSameFromTheNearPairsAlone) {
+    int near = 0;
+    BroadPhase broad;
+    for (const double pitch : {0.44, 0.45, 0.55, 0.7}) {
+        Scenario s;
+        s.path.pitch = pitch;
+        const Simulation sim(s);
+        const auto hit = first_contact(sim, 0.0, sim.valid_end());
+        if (!hit) continue;
+        for (int k = -60; k <= 60; ++k) {
+            const Frame f = sim.frame(hit->time + k * 2e-5);
+            const Clearance close = clearance(f, contact::kProbeGap, broad);
+            const Clearance wide = clearance(f, contact::kMargin, broad);
+            const Clearance every = clearance_all_pairs(f);
+            if (!(close.distance < contact::kProbeGap)) {
+                EXPECT_GE(every.distance, contact::kProbeGap);  // told apart only when truly that far
+                continue;
+            }
+            ++near;
+            for (const Clearance* c : {&wide, &every}) {
+                EXPECT_EQ(close.distance, c->distance) << "pitch " << pitch << ", k " << k;
+                EXPECT_EQ(close.bench_a, c->bench_a);
+                EXPECT_EQ(close.bench_b, c->bench_b);
+                EXPECT_EQ(close.axis, c->axis);
+                EXPECT_EQ(close.point, c->point);
+            }
+        }
+    }
+    EXPECT_GT(near, 200);
+}
