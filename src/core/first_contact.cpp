@@ -76,7 +76,8 @@ Contact make_contact(const Simulation& sim, double x, BroadPhase& broad) {
 // contact; `steps` grows by the evaluations it makes. A step covers at most kMaxTravel of head
 // travel, and the contact is found to tol::travel. The contact itself (the whole chain of `sim`
 // there, and its closest pair) is made only for the stretch that wins (make_contact): a stretch
-// after the first contact, which starts overlapping, costs one evaluation.
+// after the first contact, which starts overlapping, costs one frame of the benches it watches
+// and one overlap test.
 template <class Stop>
 std::optional<double> search_stretch(const Simulation& sim, const Simulation& watched, double t_from, double t_to,
                                      const StepObserver& on_step, const Stop& stop, int& steps, Workspace& ws) {
