@@ -163,16 +163,25 @@ void closest_pair(const Frame& f, const std::vector<std::pair<int, int>>& pairs,
 
 }  // namespace
 
-// The broad phase at margin 0 holds every pair that overlaps or touches, and a pair's projected
-// gap is <= 0 exactly when its separation is (separation() returns that same gap, computed the
-// same way, whenever it is not positive). approach() takes its clearance from the exact
-// separations of a superset of those pairs (its margin is wider, and the pairs it passes over
-// are kept apart by their radii), so it finds one <= 0 exactly when this does.
-bool overlapping(const Frame& f, Workspace& ws) {
-    if (f.benches.size() < 3) return false;
-    for (const auto& [a, b] : ws.broad.candidate_pairs(f, 0.0))
-        if (projected_gap(f.benches[static_cast<size_t>(a - 1)], f.benches[static_cast<size_t>(b - 1)]) <= 0.0) return true;
-    return false;
+// The clearances (approach()'s closest pair, clearance()) are the least exact separation over
+// the pairs they look at, each looked at unless its projected gap is already no smaller than
+// the least so far, and separation() returns the projected gap itself whenever that is <= 0.
+// So a pair with a projected gap <= 0 (the broad phase at any margin holds it) makes either
+// clearance <= 0: yes. When every pair of the broad phase at margin kSureGap has a projected gap
+// of at least kSureGap, every pair is truly at least that far apart (a pair beyond that margin
+// is farther, as the broad phase never misses one), and no separation computed for it can round
+// to 0: no. Between those, a separation can round to 0 where the projected gap is a rounding
+// above it (8e-17 m in one of the map's runs), and whether a clearance sees it depends on the
+// order it looks at its pairs in: unsure.
+Overlap overlap_of(const Frame& f, Workspace& ws) {
+    if (f.benches.size() < 3) return Overlap::no;
+    Overlap out = Overlap::no;
+    for (const auto& [a, b] : ws.broad.candidate_pairs(f, kSureGap)) {
+        const double g = projected_gap(f.benches[static_cast<size_t>(a - 1)], f.benches[static_cast<size_t>(b - 1)]);
+        if (g <= 0.0) return Overlap::yes;
+        if (g < kSureGap) out = Overlap::unsure;
+    }
+    return out;
 }
 
 Approach approach(const Frame& f, double t, double max_step, const StepRecord& last, StepRecord& next, bool check,

@@ -40,6 +40,8 @@ using contact::Approach;
 using contact::kMargin;
 using contact::kMaxTravel;
 using contact::kProbeGap;
+using contact::Overlap;
+using contact::overlap_of;
 using contact::PairMemory;
 using contact::StepRecord;
 using contact::Workspace;
@@ -56,12 +58,7 @@ double head_radius(const Frame& f) { return norm(f.handles.front().pos); }
 // Its evaluations are counted by the caller, over the stretches up to the contact's.
 Contact make_contact(const Simulation& sim, double x, BroadPhase& broad) {
     Frame f = sim.frame_at_travel(x);
-    // The closest pair is within rounding of touching here: looked for among the pairs within
-    // kProbeGap (far fewer than within the margin), which hold it whenever it is nearer than
-    // that, and then give the same nearest pair, distance and point as the margin's pairs would.
-    // Otherwise (never seen) among those within the margin.
-    Clearance c = clearance(f, kProbeGap, broad);
-    if (!(c.distance < kProbeGap)) c = clearance(f, kMargin, broad);
+    const Clearance c = clearance(f, kMargin, broad);
     const double t = f.time;
     const double rounding = 2.0 * (std::nextafter(std::abs(t), INFINITY) - std::abs(t));
     Contact out{t, c.bench_a, c.bench_b, head_radius(f), c.point, std::move(f), 0,
@@ -69,6 +66,17 @@ Contact make_contact(const Simulation& sim, double x, BroadPhase& broad) {
     out.travel = x;
     out.travel_tolerance = std::max(tol::travel, 2.0 * (std::nextafter(std::abs(x), INFINITY) - std::abs(x)));
     return out;
+}
+
+// Whether clearance(f, kMargin) <= 0, the sign a bracket and its bisection go by: told by
+// overlap_of() but within rounding of touching, where the clearance itself decides.
+bool touching(const Frame& f, Workspace& ws) {
+    switch (overlap_of(f, ws)) {
+        case Overlap::yes: return true;
+        case Overlap::no: return false;
+        case Overlap::unsure: break;
+    }
+    return clearance(f, kMargin, ws.broad).distance <= 0.0;
 }
 
 // The search over one stretch of travel, stepping `watched` (the benches that may touch, on the
@@ -89,8 +97,9 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
     watched.frame_into(t, f);
     ++steps;
     // Starting with benches overlapping (a stretch after the first contact, which the workers
-    // take first): its start, found without a whole evaluation's bounds.
-    if (overlapping(f, ws)) return t;
+    // take first): its start, found without a whole evaluation's bounds (when unsure, the
+    // evaluation decides).
+    if (overlap_of(f, ws) == Overlap::yes) return t;
     Approach a = approach(f, t, max_step, memory, seen, false, ws);
     memory.swap(seen);
     if (a.clear.distance <= 0.0) return t;
@@ -109,7 +118,7 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
             const double probe = std::min({t_to, t + 1.5 * a.clear.distance / -a.rate, t + a.others_step});
             watched.frame_into(probe, f);
             ++steps;
-            if (overlapping(f, ws)) t_hi = probe;
+            if (touching(f, ws)) t_hi = probe;
         }
         if (std::isnan(t_hi)) {
             const double next = std::min({t + a.safe_step, t + retry_cap, t_to});
@@ -134,14 +143,14 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
             }
             t_hi = next;
         }
-        // Bisection on [t, t_hi]: clearance > 0 at t, <= 0 at t_hi (only its sign: overlapping()).
+        // Bisection on [t, t_hi]: clearance > 0 at t, <= 0 at t_hi (only its sign: touching()).
         double lo = t, hi = t_hi;
         while (hi - lo > time_tol) {
             const double mid = 0.5 * (lo + hi);
             if (mid <= lo || mid >= hi) break;
             watched.frame_into(mid, f);
             ++steps;
-            if (!overlapping(f, ws)) lo = mid; else hi = mid;
+            if (!touching(f, ws)) lo = mid; else hi = mid;
         }
         return hi;
     }
