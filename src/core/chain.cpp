@@ -20,6 +20,42 @@ Rect bench_rect(const BenchSpec& spec, int bench, const Vec2& front, const Vec2&
     return {0.5 * (front + rear), axis, 0.5 * spec.board_length(bench), 0.5 * spec.width};
 }
 
+namespace {
+
+SolverError off_the_path(int i, double d) {
+    return SolverError(fmt::format("handle {} does not fit on the path behind handle {} "
+                                   "(link {} m): the chain runs off the path's end",
+                                   i + 1, i, d));
+}
+
+// The first n handles on the plain spiral, from the head's place: the common case inline (the
+// same solve as Spiral::behind), so that one link's state stays in registers for the next
+// (spiral_chord.hpp). Each handle i + 1 goes to on_link(i, d, pos, tangent, place); a caller
+// that ignores some of them lets the compiler leave them out.
+template <class OnLink>
+void walk_spiral_chain(const Spiral& spiral, const BenchSpec& spec, const Located& head, int n, OnLink&& on_link) {
+    const double b = spiral.b();
+    spiral_chord::Link l{head.place.u, head.pos.x(), head.pos.y(), head.memo};
+    for (int i = 0; i + 1 < n; ++i) {
+        const double d = spec.link_after(i);
+        double tx = 0.0, ty = 0.0, th2 = 0.0;
+        if (spiral_chord::within_half_turn(b, l.theta, d) && spiral_chord::next_link(b, d, l, tx, ty, th2)) {
+            on_link(i, d, Vec2{l.x, l.y}, Vec2{tx, ty}, Place{0, l.theta});
+            continue;
+        }
+        // Spiral::behind reads the place, the point and the memo; the tangent is no input.
+        const Located here{{0, l.theta}, {l.x, l.y}, Vec2::Zero(), l.memo};
+        const std::optional<Located> next = spiral_chord::within_half_turn(b, l.theta, d)
+                                                ? std::optional<Located>(spiral.at({0, th2}))
+                                                : spiral.behind(here, d);
+        if (!next) throw off_the_path(i, d);
+        l = {next->place.u, next->pos.x(), next->pos.y(), next->memo};
+        on_link(i, d, next->pos, next->tangent, next->place);
+    }
+}
+
+}  // namespace
+
 void solve_chain_front(const Path& path, const BenchSpec& spec, double head_arc, double head_speed, int count,
                        Frame& out) {
     const int n = std::min(count, spec.handle_count());
@@ -44,31 +80,8 @@ void solve_chain_front(const Path& path, const BenchSpec& spec, double head_arc,
         front = pos;
         front_tangent = tangent;
     };
-    const auto off_the_path = [](int i, double d) {
-        return SolverError(fmt::format("handle {} does not fit on the path behind handle {} "
-                                       "(link {} m): the chain runs off the path's end",
-                                       i + 1, i, d));
-    };
     if (const auto* spiral = dynamic_cast<const Spiral*>(&path)) {
-        // The plain spiral's common case inline (the same solve as Spiral::behind), so that one
-        // link's state stays in registers for the next (spiral_chord.hpp).
-        const double b = spiral->b();
-        spiral_chord::Link l{head.place.u, head.pos.x(), head.pos.y(), head.memo};
-        for (int i = 0; i + 1 < n; ++i) {
-            const double d = spec.link_after(i);
-            double tx = 0.0, ty = 0.0, th2 = 0.0;
-            if (spiral_chord::within_half_turn(b, l.theta, d) && spiral_chord::next_link(b, d, l, tx, ty, th2)) {
-                link(i, d, {l.x, l.y}, {tx, ty}, {0, l.theta});
-                continue;
-            }
-            const Located here{{0, l.theta}, {l.x, l.y}, front_tangent, l.memo};
-            const std::optional<Located> next = spiral_chord::within_half_turn(b, l.theta, d)
-                                                    ? std::optional<Located>(spiral->at({0, th2}))
-                                                    : spiral->behind(here, d);
-            if (!next) throw off_the_path(i, d);
-            l = {next->place.u, next->pos.x(), next->pos.y(), next->memo};
-            link(i, d, next->pos, next->tangent, next->place);
-        }
+        walk_spiral_chain(*spiral, spec, head, n, link);
         return;
     }
     Located cur = head;
@@ -84,6 +97,19 @@ void solve_chain_front(const Path& path, const BenchSpec& spec, double head_arc,
 void solve_chain(const Path& path, const BenchSpec& spec, double head_arc, double head_speed,
                  Frame& out) {
     solve_chain_front(path, spec, head_arc, head_speed, spec.handle_count(), out);
+}
+
+bool solve_spiral_chain_angles(const Path& path, const BenchSpec& spec, double head_arc, std::vector<double>& theta) {
+    const auto* spiral = dynamic_cast<const Spiral*>(&path);
+    if (!spiral) return false;
+    const int n = spec.handle_count();
+    theta.resize(static_cast<size_t>(n));
+    const Located head = path.at_arc(head_arc);
+    theta[0] = head.place.u;
+    walk_spiral_chain(*spiral, spec, head, n, [&](int i, double, const Vec2&, const Vec2&, const Place& place) {
+        theta[static_cast<size_t>(i + 1)] = place.u;
+    });
+    return true;
 }
 
 // What the jam searches have found: the motion is known continuous while the head's arc position

@@ -163,6 +163,27 @@ void closest_pair(const Frame& f, const std::vector<std::pair<int, int>>& pairs,
 
 }  // namespace
 
+// The clearances (approach()'s closest pair, clearance()) are the least exact separation over
+// the pairs they look at, each looked at unless its projected gap is already no smaller than
+// the least so far, and separation() returns the projected gap itself whenever that is <= 0.
+// So a pair with a projected gap <= 0 (the broad phase at any margin holds it) makes either
+// clearance <= 0: yes. When every pair of the broad phase at margin kSureGap has a projected gap
+// of at least kSureGap, every pair is truly at least that far apart (a pair beyond that margin
+// is farther, as the broad phase never misses one), and no separation computed for it can round
+// to 0: no. Between those, a separation can round to 0 where the projected gap is a rounding
+// above it (8e-17 m in one of the map's runs), and whether a clearance sees it depends on the
+// order it looks at its pairs in: unsure.
+Overlap overlap_of(const Frame& f, Workspace& ws) {
+    if (f.benches.size() < 3) return Overlap::no;
+    Overlap out = Overlap::no;
+    for (const auto& [a, b] : ws.broad.candidate_pairs(f, kSureGap)) {
+        const double g = projected_gap(f.benches[static_cast<size_t>(a - 1)], f.benches[static_cast<size_t>(b - 1)]);
+        if (g <= 0.0) return Overlap::yes;
+        if (g < kSureGap) out = Overlap::unsure;
+    }
+    return out;
+}
+
 Approach approach(const Frame& f, double t, double max_step, const StepRecord& last, StepRecord& next, bool check,
                   Workspace& ws) {
     Approach a{{INFINITY, 0, 0, Vec2::Zero(), Vec2::Zero()}, INFINITY, 0.0, false, INFINITY};

@@ -143,7 +143,17 @@ struct Workspace {
     };
     std::vector<Candidate> tight;
     std::vector<std::pair<std::uint64_t, double>> pair_steps;
+    Frame frame;  // a whole chain, solved for what the search keeps of it (the stretches' edges)
 };
+
+// Whether two non-adjacent benches of `f` overlap or touch, as the search's clearances (of
+// approach() and of clearance(f, kMargin)) would say by a value <= 0, at a fraction of their
+// cost (see contact_step.cpp): yes, no, or `unsure` when a pair is within kSureGap of touching
+// but no projected gap is <= 0; the caller then asks the clearance itself. A search past the
+// first contact starts overlapping and needs no more; a bisection needs only this sign.
+inline constexpr double kSureGap = 1e-9;  // m: far above the rounding of a clearance, about 1e-15 m
+enum class Overlap { yes, no, unsure };
+Overlap overlap_of(const Frame& f, Workspace& ws);
 
 // `last` is what the last accepted evaluation promised; this one's goes to `next` (cleared
 // first), for the caller to keep if it accepts the step; `check` holds this evaluation, the end

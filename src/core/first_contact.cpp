@@ -25,6 +25,7 @@
 #include <mutex>
 #include <vector>
 
+#include "chain_front.hpp"
 #include "contact_step.hpp"
 #include "untouched_tail.hpp"
 #include "dragon/analyses.hpp"
@@ -39,6 +40,8 @@ using contact::Approach;
 using contact::kMargin;
 using contact::kMaxTravel;
 using contact::kProbeGap;
+using contact::Overlap;
+using contact::overlap_of;
 using contact::PairMemory;
 using contact::StepRecord;
 using contact::Workspace;
@@ -52,42 +55,61 @@ constexpr double kStretchTravel = 10.0;  // m
 double head_radius(const Frame& f) { return norm(f.handles.front().pos); }
 
 // The contact at head travel x, reported for `sim` (at its own head speed).
-Contact make_contact(const Simulation& sim, double x, int steps, BroadPhase& broad) {
+// Its evaluations are counted by the caller, over the stretches up to the contact's.
+Contact make_contact(const Simulation& sim, double x, BroadPhase& broad) {
     Frame f = sim.frame_at_travel(x);
     const Clearance c = clearance(f, kMargin, broad);
     const double t = f.time;
     const double rounding = 2.0 * (std::nextafter(std::abs(t), INFINITY) - std::abs(t));
-    Contact out{t, c.bench_a, c.bench_b, head_radius(f), c.point, std::move(f), steps,
+    Contact out{t, c.bench_a, c.bench_b, head_radius(f), c.point, std::move(f), 0,
                 std::max(tol::travel / sim.scenario().head_speed, rounding)};
     out.travel = x;
     out.travel_tolerance = std::max(tol::travel, 2.0 * (std::nextafter(std::abs(x), INFINITY) - std::abs(x)));
     return out;
 }
 
+// Whether clearance(f, kMargin) <= 0, the sign a bracket and its bisection go by: told by
+// overlap_of() but within rounding of touching, where the clearance itself decides.
+bool touching(const Frame& f, Workspace& ws) {
+    switch (overlap_of(f, ws)) {
+        case Overlap::yes: return true;
+        case Overlap::no: return false;
+        case Overlap::unsure: break;
+    }
+    return clearance(f, kMargin, ws.broad).distance <= 0.0;
+}
+
 // The search over one stretch of travel, stepping `watched` (the benches that may touch, on the
-// motion at 1 m/s, so that its times are head travel) and reporting the contact with the whole
-// chain of `sim`; `steps` grows by the evaluations it makes. A step covers at most kMaxTravel of
-// head travel, and the contact is found to tol::travel.
+// motion at 1 m/s, so that its times are head travel) and reporting the head travel of the
+// contact; `steps` grows by the evaluations it makes. A step covers at most kMaxTravel of head
+// travel, and the contact is found to tol::travel. The contact itself (the whole chain of `sim`
+// there, and its closest pair) is made only for the stretch that wins (make_contact): a stretch
+// after the first contact, which starts overlapping, costs one frame of the benches it watches
+// and one overlap test.
 template <class Stop>
-std::optional<Contact> search_stretch(const Simulation& sim, const Simulation& watched, double t_from, double t_to,
-                                      const StepObserver& on_step, const Stop& stop, int& steps, Workspace& ws) {
+std::optional<double> search_stretch(const Simulation& sim, const Simulation& watched, double t_from, double t_to,
+                                     const StepObserver& on_step, const Stop& stop, int& steps, Workspace& ws) {
     const double max_step = kMaxTravel;
     const double time_tol = tol::travel;
     Frame f;
     double t = t_from;
     StepRecord memory, seen;
     watched.frame_into(t, f);
+    ++steps;
+    // Starting with benches overlapping (a stretch after the first contact, which the workers
+    // take first): its start, found without a whole evaluation's bounds (when unsure, the
+    // evaluation decides).
+    if (overlap_of(f, ws) == Overlap::yes) return t;
     Approach a = approach(f, t, max_step, memory, seen, false, ws);
     memory.swap(seen);
-    ++steps;
-    if (a.clear.distance <= 0.0) return make_contact(sim, t, steps, ws.broad);
+    if (a.clear.distance <= 0.0) return t;
     double retry_cap = INFINITY;  // after a broken curvature bound, retry shorter from t
 
     while (t < t_to) {
         if (stop()) return std::nullopt;
         // A pair grazing within rounding of touching, closing too slowly to bound: contact now
         // (also when the step is below the resolution of t itself, late in a slow run).
-        if (a.safe_step < time_tol || t + a.safe_step == t) return make_contact(sim, t, steps, ws.broad);
+        if (a.safe_step < time_tol || t + a.safe_step == t) return t;
         // Bracket: a Newton probe on the closest pair once it is nearly touching, no farther
         // than any other pair could touch (the bisection below sees only the clearance's sign,
         // and would pass over another pair's contact that opens and closes inside its bracket).
@@ -96,7 +118,7 @@ std::optional<Contact> search_stretch(const Simulation& sim, const Simulation& w
             const double probe = std::min({t_to, t + 1.5 * a.clear.distance / -a.rate, t + a.others_step});
             watched.frame_into(probe, f);
             ++steps;
-            if (clearance(f, kMargin, ws.broad).distance <= 0.0) t_hi = probe;
+            if (touching(f, ws)) t_hi = probe;
         }
         if (std::isnan(t_hi)) {
             const double next = std::min({t + a.safe_step, t + retry_cap, t_to});
@@ -121,44 +143,57 @@ std::optional<Contact> search_stretch(const Simulation& sim, const Simulation& w
             }
             t_hi = next;
         }
-        // Bisection on [t, t_hi]: clearance > 0 at t, <= 0 at t_hi.
+        // Bisection on [t, t_hi]: clearance > 0 at t, <= 0 at t_hi (only its sign: touching()).
         double lo = t, hi = t_hi;
         while (hi - lo > time_tol) {
             const double mid = 0.5 * (lo + hi);
             if (mid <= lo || mid >= hi) break;
             watched.frame_into(mid, f);
             ++steps;
-            if (clearance(f, kMargin, ws.broad).distance > 0.0) lo = mid; else hi = mid;
+            if (!touching(f, ws)) lo = mid; else hi = mid;
         }
-        return make_contact(sim, hi, steps, ws.broad);
+        return hi;
     }
     return std::nullopt;
 }
 
-// The whole chain at each edge of the stretches, made once for the two stretches that share it
-// (by whichever worker asks first) instead of once for each.
-class EdgeFrames {
+// What the proof of the untouched tail reads of the whole chain at each edge of the stretches
+// (its handles' angles), made once for the two stretches that share it (by whichever worker asks
+// first) instead of once for each. On the spiral only the angles are solved (solve_spiral_chain_angles:
+// no points, speeds or benches), and kept: a few KB a search, where whole frames took about 1 MB.
+class EdgeAngles {
 public:
-    EdgeFrames(const Simulation& unit, const std::vector<double>& edge)
-        : unit_(unit), edge_(edge), frames_(edge.size()), made_(edge.size()) {}
-    const Frame& at(size_t k) {
-        std::call_once(made_[k], [&] { frames_[k] = unit_.frame(edge_[k]); });
-        return frames_[k];
+    EdgeAngles(const Simulation& unit, const std::vector<double>& edge)
+        : unit_(unit), edge_(edge), angles_(edge.size()), made_(edge.size()) {}
+    const ChainAngles& at(size_t k, Frame& scratch) {
+        std::call_once(made_[k], [&] {
+            const double t = edge_[k];
+            unit_.require_valid(t, "time");  // as a frame there would
+            ChainAngles& a = angles_[k];
+            a.time = t;
+            if (!solve_spiral_chain_angles(unit_.path(), unit_.scenario().bench, unit_.head_arc(t), a.theta)) {
+                unit_.frame_into(t, scratch);
+                a = chain_angles(scratch);
+            }
+        });
+        return angles_[k];
     }
 
 private:
     const Simulation& unit_;
     const std::vector<double>& edge_;
-    std::vector<Frame> frames_;
+    std::vector<ChainAngles> angles_;
     std::vector<std::once_flag> made_;
 };
 
 // The benches a search over stretch k of `unit` (the motion at 1 m/s) must watch: on the plain
 // spiral only the leading ones that may touch (core/untouched_tail.hpp), elsewhere all of them.
-Simulation watched_over(const Simulation& unit, EdgeFrames& edges, size_t k, bool skip_untouched_tail) {
+Simulation watched_over(const Simulation& unit, EdgeAngles& edges, size_t k, bool skip_untouched_tail, Frame& scratch) {
     const auto* spiral = dynamic_cast<const Spiral*>(&unit.path());
     if (!spiral || !skip_untouched_tail) return unit;
-    return unit.leading(benches_that_may_touch(*spiral, unit.scenario().bench, edges.at(k), edges.at(k + 1)));
+    const ChainAngles& first = edges.at(k, scratch);
+    const ChainAngles& last = edges.at(k + 1, scratch);
+    return unit.leading(benches_that_may_touch(*spiral, unit.scenario().bench, first, last));
 }
 
 // The range of travel [x_from, x_to] in stretches: cut at every multiple of kStretchTravel, so
@@ -192,20 +227,20 @@ std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from
     Executor& ex = options.on_step ? in_order : executor_or_default(options.executor);
     const std::vector<double> edge = x_to > x_from ? stretch_edges(x_from, x_to) : std::vector<double>{x_from, x_from};
     const size_t chunks = edge.size() - 1;
-    std::vector<std::optional<Contact>> found(chunks);
+    std::vector<std::optional<double>> found(chunks);  // the travel of each stretch's contact
     std::vector<int> steps(chunks, 0);
     std::vector<Workspace> ws(static_cast<size_t>(ex.workers()));
     std::atomic<size_t> winner{chunks};
-    EdgeFrames edge_frames(unit, edge);
+    EdgeAngles edge_angles(unit, edge);
     const bool serial = ex.workers() == 1;
     auto search = [&](size_t k, int worker) {
         if (winner.load() < k) return;
         check_stop(ex);
-        const Simulation watched = watched_over(unit, edge_frames, k, options.skip_untouched_tail);
+        Workspace& mine = ws[static_cast<size_t>(worker)];
+        const Simulation watched = watched_over(unit, edge_angles, k, options.skip_untouched_tail, mine.frame);
         try {
             found[k] = search_stretch(sim, watched, edge[k], edge[k + 1], options.on_step,
-                                      [&] { return winner.load(std::memory_order_relaxed) < k; }, steps[k],
-                                      ws[static_cast<size_t>(worker)]);
+                                      [&] { return winner.load(std::memory_order_relaxed) < k; }, steps[k], mine);
         } catch (...) {
             winner = 0;  // stop the others at their next step; the executor rethrows this
             throw;
@@ -223,7 +258,7 @@ std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from
     }
     const size_t w = winner.load();
     if (w == chunks) return std::nullopt;
-    Contact c = std::move(*found[w]);
+    Contact c = make_contact(sim, *found[w], ws.front().broad);
     c.steps = 0;
     for (size_t k = 0; k <= w; ++k) c.steps += steps[k];
     return c;

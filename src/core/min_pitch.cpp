@@ -147,9 +147,12 @@ double closest_approach(const Scenario& s, double pitch, int a, int b, double t0
     const Simulation sim(q);
     t1 = std::min(t1, sim.end_time());
     if (const std::optional<Jam> j = sim.jam_before(t1)) t1 = j->time;
+    // Only the chain up to the later of the two benches: its leading handles are the whole
+    // chain's, bit for bit (the chain is solved from the head back).
+    const Simulation lead = sim.leading(std::max(a, b));
     Frame f;
     auto gap = [&](double t) {
-        sim.frame_into(t, f);
+        lead.frame_into(t, f);
         return separation(f.benches[static_cast<size_t>(a - 1)], f.benches[static_cast<size_t>(b - 1)]).distance;
     };
     constexpr int kSamples = kApproachSamples;

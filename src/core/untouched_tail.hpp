@@ -25,6 +25,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "dragon/chain.hpp"
 
@@ -47,5 +48,16 @@ std::optional<BenchReach> bench_reach(double b, const BenchSpec& spec, int bench
 // touch at any moment between the two frames of motion on `spiral` (first.time <= last.time):
 // every pair with a bench numbered above K stays apart. spec.bench_count when nothing is proved.
 int benches_that_may_touch(const Spiral& spiral, const BenchSpec& spec, const Frame& first, const Frame& last);
+
+// All the proof reads of a frame: its time and its handles' angles on the spiral (a search keeps
+// these for the edges of its stretches, a fortieth of the whole frames' memory).
+struct ChainAngles {
+    double time = 0.0;
+    std::vector<double> theta;  // every handle's place.u, head front first
+    bool on_spiral = true;      // every handle on the spiral's one piece
+};
+ChainAngles chain_angles(const Frame& f);
+int benches_that_may_touch(const Spiral& spiral, const BenchSpec& spec, const ChainAngles& first,
+                           const ChainAngles& last);
 
 }  // namespace dragon

@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "core/contact_step.hpp"
 #include "dragon/analyses.hpp"
+#include "dragon/collision.hpp"
 #include "dragon/constants.hpp"
 #include "dragon/executor.hpp"
 
@@ -315,4 +317,79 @@ TEST(Q2, AProbeBracketNeverPassesOverAnotherPairsContact) {
     EXPECT_GT(clearance(sim.frame(late->time - 1e-8)).distance, 0.0);
     // A scan of the bracket agrees: nothing touches before it.
     for (double t = 159.06; t < late->time - 1e-3; t += 0.01) ASSERT_GT(clearance(sim.frame(t)).distance, 0.0) << t;
+}
+
+// The quick test a stretch starts with and a bisection goes by (contact::overlap_of) answers
+// yes only where the clearances are <= 0 (over every pair, and clearance(f, kMargin) as the
+// search takes it), no only where they are > 0, and unsure only within kSureGap of touching:
+// before, at and past the first contact (where more and more benches lie across each other), on
+// the whole chain and on its leading benches, at several pitches; and in a scan through the
+// contest's contact, on both sides of it.
+TEST(Q2, TheOverlapTestAgreesWithTheClearances) {
+    contact::Workspace ws;
+    BroadPhase broad;
+    int yes = 0, no = 0, unsure = 0;
+    Frame f;
+    const auto check = [&](const std::string& where) {
+        const double every = clearance_all_pairs(f).distance;
+        const double search = clearance(f, contact::kMargin, broad).distance;
+        switch (contact::overlap_of(f, ws)) {
+            case contact::Overlap::yes:
+                ++yes;
+                ASSERT_LE(every, 0.0) << where;
+                ASSERT_LE(search, 0.0) << where;
+                break;
+            case contact::Overlap::no:
+                ++no;
+                ASSERT_GT(every, 0.0) << where;
+                ASSERT_GT(search, 0.0) << where;
+                break;
+            case contact::Overlap::unsure:
+                ++unsure;
+                ASSERT_LT(std::abs(every), 2.0 * contact::kSureGap) << where;
+                break;
+        }
+    };
+    for (const double pitch : {0.45, 0.55, 0.7}) {
+        Scenario s;
+        s.path.pitch = pitch;
+        const Simulation sim(s);
+        const double end = sim.valid_end();
+        for (const int lead : {5, 30, 223}) {
+            const Simulation part = sim.leading(lead);
+            for (double t = std::max(0.0, end - 120.0); t <= end; t += 0.37) {
+                part.frame_into(t, f);
+                check("pitch " + std::to_string(pitch) + ", t = " + std::to_string(t));
+            }
+        }
+    }
+    const Simulation contest{Scenario{}};
+    const auto hit = first_contact(contest, 0.0, contest.valid_end());
+    ASSERT_TRUE(hit);
+    for (int k = -200; k <= 200; ++k) {
+        contest.frame_into(hit->time + k * 1e-9, f);
+        check("contact + " + std::to_string(k) + " ns");
+    }
+    EXPECT_GT(yes, 200);
+    EXPECT_GT(no, 200);
+    EXPECT_GT(unsure, 0);  // the scan through the contact passes within kSureGap of touching
+}
+
+// A frame from the minimum-pitch map's runs (width 0.2 m, body boards 2.15 m) where benches 1 and
+// 18 have a projected gap of 8e-17 m and a separation that rounds to 0: the search's clearance
+// says touching there, so the quick test must not say no (it said so once, and a pitch of the
+// map moved by 1e-15 m).
+TEST(Q2, TheOverlapTestLeavesARoundedTouchToTheClearance) {
+    Scenario s;
+    s.bench.width = 0.2;
+    s.bench.body_length = 2.15;
+    s.path.pitch = 0.3524969561797035;
+    const Simulation sim = Simulation(s).leading(21);
+    const Frame f = sim.frame(99.005771427176668);
+    const Clearance search = clearance(f, contact::kMargin);
+    ASSERT_EQ(search.distance, 0.0);
+    ASSERT_EQ(search.bench_a, 1);
+    ASSERT_EQ(search.bench_b, 18);
+    contact::Workspace ws;
+    EXPECT_NE(contact::overlap_of(f, ws), contact::Overlap::no);
 }

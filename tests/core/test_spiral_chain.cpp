@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
+#include "core/chain_front.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/path.hpp"
 
@@ -286,4 +288,42 @@ TEST(Scenario, TheEndTimeItselfIsOnThePath) {
                 << "speed " << speed << ", start turn " << turn;
         }
     }
+}
+
+// The angles alone (what the proof of the untouched tail reads) are the whole solve's, bit for
+// bit: far out and near the centre (where links reach round it), for long and short links.
+TEST(Chain, AnglesAloneAreTheWholeSolvesAngles) {
+    std::vector<double> theta;
+    Frame f;
+    int compared = 0;
+    for (const double pitch : {0.32, 0.55, 1.7}) {
+        for (const double body : {1.2, 2.2}) {
+            BenchSpec spec;
+            spec.body_length = body;
+            const Spiral sp(pitch);
+            // From far out down to a head a link's length from the centre.
+            for (double head = -400.0; head < -0.5; head *= 0.93) {
+                try {
+                    solve_chain(sp, spec, head, 1.0, f);
+                } catch (const SolverError&) {
+                    continue;  // the chain runs off the spiral's outer end: no frame to compare
+                }
+                ASSERT_TRUE(solve_spiral_chain_angles(sp, spec, head, theta));
+                ASSERT_EQ(theta.size(), f.handles.size());
+                for (size_t k = 0; k < theta.size(); ++k) {
+                    ASSERT_EQ(f.handles[k].place.piece, 0);
+                    ASSERT_EQ(theta[k], f.handles[k].place.u) << "pitch " << pitch << ", head " << head << ", handle " << k;
+                    ++compared;
+                }
+            }
+        }
+    }
+    EXPECT_GT(compared, 50000);
+    // Any other path: not solved, left as it was.
+    Scenario turn;
+    turn.path.kind = PathKind::turnaround;
+    const Simulation tsim(turn);
+    theta.assign(3, 7.0);
+    EXPECT_FALSE(solve_spiral_chain_angles(tsim.path(), turn.bench, tsim.head_arc(0.0), theta));
+    EXPECT_EQ(theta, std::vector<double>(3, 7.0));
 }

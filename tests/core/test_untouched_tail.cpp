@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -222,6 +224,146 @@ TEST(UntouchedTail, TheSearchFindsWhatWatchingEveryBenchFinds) {
         EXPECT_EQ(quick->frame.benches.size(), static_cast<size_t>(s.bench.bench_count)) << name;  // the whole chain
     }
     EXPECT_GE(contacts, 6);
+}
+
+namespace {
+
+// The proof as its comment states it, written plainly: every libm call made, every partner
+// found by a full bisection. The library's version skips the calls whose outcome a cheaper bound
+// already settles and searches from a hint; it must watch exactly as many benches.
+std::optional<BenchReach> plain_reach(double b, const BenchSpec& spec, int bench, double front_last, double rear_last,
+                                      double span_first) {
+    const double d = spec.link_length(bench), o = spec.hole_offset, hw = 0.5 * spec.width;
+    const double rho = b * front_last, corner = std::hypot(o, hw);
+    if (!(rho > 0.5 * d)) return std::nullopt;
+    const double seg = std::sqrt(rho * rho - 0.25 * d * d);
+    if (!(seg > 2.0 * corner)) return std::nullopt;
+    const double line = seg - o, near = seg - corner;
+    const double curv = 1.0 / line + b / (line * line);
+    const double grad = std::sqrt(1.0 + (b / near) * (b / near));
+    const double h = rho * (b * rear_last) * std::sin(span_first) / d;
+    double in = curv * d * d / 8.0, out = curv * o * (d + o) / 2.0;
+    if (!(h > 2.0 * b)) in = out = std::max(in, out);
+    const double widen = 1.0 + 1e-9;
+    return BenchReach{(in + grad * hw) * widen, (out + grad * hw) * widen, std::asin(corner / seg) * widen};
+}
+
+int plain_benches_that_may_touch(const Spiral& spiral, const BenchSpec& spec, const Frame& first, const Frame& last) {
+    constexpr double slack = 1e-9;
+    const int n = spec.bench_count;
+    const size_t handles = static_cast<size_t>(n) + 1;
+    if (first.handles.size() != handles || last.handles.size() != handles || !(first.time <= last.time)) return n;
+    std::vector<double> tf, tl;
+    for (size_t k = 0; k < handles; ++k) {
+        if (first.handles[k].place.piece != 0 || last.handles[k].place.piece != 0) return n;
+        tf.push_back(first.handles[k].place.u);
+        tl.push_back(last.handles[k].place.u);
+    }
+    for (size_t k = 0; k < handles; ++k) {
+        if (!(tf[k] >= tl[k])) return n;
+        if (k + 1 == handles) break;
+        const double span_last = tl[k + 1] - tl[k], span_first = tf[k + 1] - tf[k];
+        if (!(span_last > 0.0 && span_last < 0.5 * std::numbers::pi && tl[k] > std::tan(0.5 * span_last))) return n;
+        if (!(span_first > 0.0 && span_first <= span_last * (1.0 + slack))) return n;
+    }
+    const double b = spiral.b(), pitch = spiral.pitch();
+    std::vector<BenchReach> reach(handles);
+    for (size_t k = 1; k <= static_cast<size_t>(n); ++k) {
+        const auto r = plain_reach(b, spec, static_cast<int>(k), tl[k - 1], tl[k], tf[k] - tf[k - 1]);
+        if (!r) return n;
+        reach[k] = *r;
+    }
+    std::vector<double> in_from(handles + 1, 0.0), angle_from(handles + 1, 0.0);
+    for (size_t k = handles - 1; k >= 1; --k) {
+        in_from[k] = std::max(in_from[k + 1], reach[k].in);
+        angle_from[k] = std::max(angle_from[k + 1], reach[k].angle);
+    }
+    int watched = std::min(n, 2);
+    for (int i = n - 2; i >= 1; --i) {
+        const size_t ki = static_cast<size_t>(i), j0 = ki + 2;
+        const BenchReach& ri = reach[ki];
+        const double turns = (ri.out + in_from[j0]) / pitch;
+        if (turns > 8) return n;
+        for (int m = 0; m <= static_cast<int>(turns); ++m) {
+            const double shift = 2.0 * std::numbers::pi * m;
+            const double widest = ri.angle + angle_from[j0] + slack * (1.0 + tl.back());
+            const size_t top = static_cast<size_t>(std::upper_bound(tf.begin(), tf.end(), tf[ki] + shift + widest) - tf.begin());
+            const size_t j_hi = std::min(top, static_cast<size_t>(n));
+            const size_t j_lo = std::max(
+                j0, static_cast<size_t>(std::lower_bound(tl.begin(), tl.end(), tl[ki - 1] + shift - widest) - tl.begin()));
+            for (size_t j = j_hi; j >= j_lo && static_cast<int>(j) > watched; --j) {
+                const double apart = ri.angle + reach[j].angle, s = slack * (1.0 + tl[j]);
+                const bool offsets_meet = pitch * m <= ri.out + reach[j].in;
+                const bool behind = tf[j - 1] - tf[ki] > shift + apart + s;
+                const bool ahead = tl[j] - tl[ki - 1] < shift - apart - s;
+                if (offsets_meet && !behind && !ahead) {
+                    watched = static_cast<int>(j);
+                    break;
+                }
+            }
+        }
+    }
+    return watched;
+}
+
+}  // namespace
+
+// The same count as the plain proof, over every stretch of runs to the boundary and beyond on the
+// contest's chain and on random ones (wide and narrow boards, near and far from the centre), and
+// the same reach for every bench of them (the proof's and the public bench_reach's).
+TEST(UntouchedTail, TheShortCutsWatchWhatThePlainProofWatches) {
+    std::mt19937 rng(20261125);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<Scenario> runs(1);
+    for (const double p : {0.32, 0.44, 0.55, 1.2}) {
+        Scenario s;
+        s.path.pitch = p;
+        runs.push_back(s);
+    }
+    while (runs.size() < 16) {
+        Scenario s;
+        s.bench.bench_count = 20 + static_cast<int>(250 * unit(rng));
+        s.bench.width = 0.15 + 0.4 * unit(rng);
+        s.bench.body_length = 1.0 + 2.0 * unit(rng);
+        s.bench.head_length = s.bench.body_length + 1.5 * unit(rng);
+        s.bench.hole_offset = 0.1 + 0.25 * unit(rng);
+        s.path.pitch = s.bench.width + 0.02 + 0.6 * unit(rng);
+        try {
+            Simulation(s).frame(0.0);
+        } catch (const InputError&) {
+            continue;
+        }
+        runs.push_back(s);
+    }
+    int stretches = 0, partial = 0, reaches = 0;
+    for (const Scenario& s : runs) {
+        const Simulation sim(s);
+        const auto& sp = dynamic_cast<const Spiral&>(sim.path());
+        const double end = sim.valid_end();
+        for (double a = 0.0; a < end; a += 3.7) {
+            const Frame first = sim.frame(a), last = sim.frame(std::min(end, a + 10.0));
+            const int plain = plain_benches_that_may_touch(sp, s.bench, first, last);
+            ASSERT_EQ(benches_that_may_touch(sp, s.bench, first, last), plain) << "pitch " << s.path.pitch << ", t = " << a;
+            ASSERT_EQ(benches_that_may_touch(sp, s.bench, chain_angles(first), chain_angles(last)), plain);
+            ++stretches;
+            if (plain < s.bench.bench_count) ++partial;
+            for (size_t k = 1; k < first.handles.size(); ++k) {
+                const double tf0 = first.handles[k - 1].place.u, tf1 = first.handles[k].place.u;
+                const double tl0 = last.handles[k - 1].place.u, tl1 = last.handles[k].place.u;
+                const auto mine = bench_reach(sp.b(), s.bench, static_cast<int>(k), tl0, tl1, tf1 - tf0);
+                const auto ref = plain_reach(sp.b(), s.bench, static_cast<int>(k), tl0, tl1, tf1 - tf0);
+                ASSERT_EQ(mine.has_value(), ref.has_value());
+                if (!mine) continue;
+                ++reaches;
+                ASSERT_EQ(mine->in, ref->in);
+                ASSERT_EQ(mine->out, ref->out);
+                ASSERT_EQ(mine->angle, ref->angle);
+            }
+        }
+    }
+    EXPECT_GT(stretches, 200);
+    EXPECT_GT(partial, stretches / 2);  // the proof mostly succeeds, so its every branch is taken
+    EXPECT_GT(reaches, 100000);
 }
 
 TEST(UntouchedTail, ProvesNothingItCannot) {
