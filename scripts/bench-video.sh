@@ -46,7 +46,7 @@ row() {
 "$dragon" video -o "$out/reference-small.mp4" $film --size 640x360 --crf 0 --preset ultrafast --tune none >/dev/null
 frames=$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 "$out/reference.mp4")
 echo "coil-in film, 1280x720, 30 fps, $frames frames, against --crf 0:"
-row "mp4 default (faster+ref 8, 3 B, subme 2; crf 22)" default.mp4
+row "mp4 default (faster, tune animation, ref 8, subme 2, crf 23)" default.mp4
 row "mp4 --preset ultrafast --tune none --crf 20" old.mp4 --preset ultrafast --tune none --crf 20
 row "mp4 --preset veryfast --crf 26" veryfast26.mp4 --preset veryfast --crf 26
 row "webm default (realtime, cpu-used 6, crf 35)" default.webm

@@ -71,11 +71,10 @@ the test run); commands are the median wall time of five runs.
 \`scripts/bench-video.sh\` makes the README's coil-in film (\`dragon video --to collision --speedup
 20\`, 1280x720) with each setting and compares it with the same film encoded losslessly (\`--crf 0\`;
 PSNR by ffmpeg's psnr filter, averaged over the frames). The defaults are libx264 \`faster\` with
-\`tune animation\` and, over them, 8 reference frames, 3 B-frames and sub-pixel level 2 at crf 22
-(the chain moves along its own path: a long reference list finds each bench where another lay a
-few frames before), VP9 in realtime mode at speed 6 and crf 35, GIF with 64 colours. Before
-2026-11-25 the H.264 default was plain \`faster\` with \`tune animation\` at crf 23: 8.8 MB at 40.6 dB
-and 20.9 ms of CPU a frame for this film.
+\`tune animation\` and, over them, 8 reference frames and sub-pixel level 2 at crf 23 (the chain
+moves along its own path: a long reference list finds each bench where another lay a few frames
+before), VP9 in realtime mode at speed 6 and crf 35, GIF with 64 colours. Before 2026-11-25 the
+H.264 default was plain \`faster\` with \`tune animation\`: 8.8 MB at 40.6 dB and 20.9 ms of CPU a frame for this film.
 
 \`\`\`
 $(sh scripts/bench-video.sh "$dragon" "$tmp/video" 2>&1)

@@ -36,7 +36,7 @@ struct DefaultCrf {
     int h264;  // libx264's constant rate factor
     int vp9;   // libvpx-vp9's
 };
-inline constexpr DefaultCrf kDefaultCrf{22, 35};  // measured on the dragon's films by scripts/bench-video.sh
+inline constexpr DefaultCrf kDefaultCrf{23, 35};  // measured on the dragon's films by scripts/bench-video.sh
 
 // The rates a video can have, frames per second: a frame at least every 100 s (GIF stores a
 // frame's delay in 1/100 s in 16 bits, 655 s at most, and the MP4 muxer refuses the durations of
@@ -66,16 +66,16 @@ struct VideoOptions {
     int height = 720;   // pixels; even for mp4 and webm
     double fps = 30.0;  // frames per second of the video, 0.01 to 240
     // Quality: constant rate factor; lower is better and larger. None: the codec's default here
-    // (H.264: 22, VP9: 35; see kDefaultCrf). GIF has none.
+    // (H.264: 23, VP9: 35; see kDefaultCrf). GIF has none.
     std::optional<int> crf;
     // libx264 preset (ultrafast .. veryslow) and tune (animation, film, stillimage, ...; "none"
     // for x264's own). The defaults suit a dragon's films on two cores: "faster" with tune
-    // "animation", and over them (with these two only) 8 reference frames, 3 B-frames and
-    // sub-pixel refinement at level 2, at crf 22. The chain moves along its own path, so each
-    // bench soon lies where another lay and a long reference list finds it. Measured by
-    // scripts/bench-video.sh on the README's coil-in film (720p, 650 frames): 2.5 Mbit/s at
-    // 40.9 dB against a lossless encode (plain "faster" at crf 23: 3.2 Mbit/s at 40.6 dB), for
-    // two thirds of the encoder's CPU; "ultrafast" at crf 20 made 15.9 Mbit/s.
+    // "animation", and over them (with these two only) 8 reference frames and sub-pixel
+    // refinement at level 2. The chain moves along its own path, so each bench soon lies where
+    // another lay and a long reference list finds it. Measured by scripts/bench-video.sh on the
+    // README's coil-in film (720p, 650 frames) against a lossless encode: 2.9 Mbit/s at 40.6 dB
+    // (plain "faster": 3.2 Mbit/s at 40.6 dB) for two thirds of the encoder's CPU; at speedup
+    // 10 half the bits; "ultrafast" at crf 20 made 15.9 Mbit/s.
     std::string preset = "faster";
     std::string tune = "animation";
     // Seconds between key frames (H.264, VP9): a player can seek to one in at most this long.

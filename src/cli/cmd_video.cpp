@@ -73,9 +73,8 @@ void register_video(CLI::App& app, Registry& reg) {
                     fmt::format("Quality, lower is better: H.264 0-51 (default {}), VP9 0-63 (default {}); not for GIF",
                                 kDefaultCrf.h264, kDefaultCrf.vp9));
     sub->add_option("--preset", opt->preset, "libx264 preset, ultrafast .. veryslow (default faster: with tune animation, "
-                                         "8 reference frames, 3 B-frames and subme 2 over it, which suit the "
-                                         "dragon; any other is x264's own; ultrafast encodes ~2x faster into ~6x "
-                                         "larger files)");
+                                         "8 reference frames and subme 2 over it, which suit the dragon; any other "
+                                         "is x264's own; ultrafast encodes ~2x faster into ~5x larger files)");
     sub->add_option("--tune", opt->tune, "libx264 tune: animation (default, for line art), film, stillimage, "
                                        "grain, psnr, ssim, fastdecode, zerolatency or none");
     sub->add_option("--threads", opt->threads, "Encoder threads, 0 = automatic (default); above 3840x2160 at most 2 "

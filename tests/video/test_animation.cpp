@@ -187,7 +187,7 @@ TEST(Animation, DecodedH264FrameMatchesTheRenderersPicture) {
     Scenario s;
     const Simulation sim(s);
     const Animation anim(sim, Clip{100.0, 104.0, 2.0}, 10, SceneOptions{});
-    VideoOptions opt;  // the defaults but the size: H.264, faster, tune animation, crf 22 and the dragon's x264 settings
+    VideoOptions opt;  // the defaults but the size: H.264, faster, tune animation, crf 23 and the dragon's x264 settings
     opt.width = 640;
     opt.height = 360;
     const std::string path = scratch("coil.mp4");
