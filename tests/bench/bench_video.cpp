@@ -40,22 +40,31 @@ std::vector<cairo::Surface> drawn_frames(int w, int h) {
     return out;
 }
 
-void BM_VideoArgbToYuv420p(benchmark::State& state) {
-    const int w = static_cast<int>(state.range(0)), h = static_cast<int>(state.range(1));
-    const auto frames = drawn_frames(w, h);
+// A w x h YUV 4:2:0 frame to convert into.
+av::Frame yuv420_frame(int w, int h) {
     av::Frame yuv(av_frame_alloc());
     yuv->format = AV_PIX_FMT_YUV420P;
     yuv->width = w;
     yuv->height = h;
     av_frame_get_buffer(yuv.get(), 0);
+    return yuv;
+}
+
+// A drawn surface converted into `yuv`, as the video writer converts each frame.
+void convert(cairo_surface_t* s, AVFrame* yuv) {
+    video::argb32_to_yuv420p(cairo_image_surface_get_data(s), cairo_image_surface_get_stride(s), yuv->width,
+                             yuv->height,
+                             {yuv->data[0], yuv->linesize[0], yuv->data[1], yuv->linesize[1], yuv->data[2],
+                              yuv->linesize[2]});
+    benchmark::DoNotOptimize(yuv->data[0][0]);
+}
+
+void BM_VideoArgbToYuv420p(benchmark::State& state) {
+    const int w = static_cast<int>(state.range(0)), h = static_cast<int>(state.range(1));
+    const auto frames = drawn_frames(w, h);
+    const av::Frame yuv = yuv420_frame(w, h);
     size_t i = 0;
-    for (auto _ : state) {
-        cairo_surface_t* s = frames[i++ % frames.size()].get();
-        video::argb32_to_yuv420p(cairo_image_surface_get_data(s), cairo_image_surface_get_stride(s), w, h,
-                                 {yuv->data[0], yuv->linesize[0], yuv->data[1], yuv->linesize[1], yuv->data[2],
-                                  yuv->linesize[2]});
-        benchmark::DoNotOptimize(yuv->data[0][0]);
-    }
+    for (auto _ : state) convert(frames[i++ % frames.size()].get(), yuv.get());
 }
 BENCHMARK(BM_VideoArgbToYuv420p)->Args({1280, 720})->Args({1920, 1080})->Unit(benchmark::kMillisecond);
 
@@ -75,11 +84,7 @@ void BM_FilmDrawAndConvert(benchmark::State& state) {
     look.events = plan.events;
     const Animation anim(sim, plan.clip, 30.0, scene, plan.end_mark, look);
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h));
-    av::Frame yuv(av_frame_alloc());
-    yuv->format = AV_PIX_FMT_YUV420P;
-    yuv->width = w;
-    yuv->height = h;
-    av_frame_get_buffer(yuv.get(), 0);
+    const av::Frame yuv = yuv420_frame(w, h);
     int i = 0;
     for (auto _ : state) {
         {
@@ -87,10 +92,7 @@ void BM_FilmDrawAndConvert(benchmark::State& state) {
             anim.paint(i++ % anim.distinct_frames(), cr.get(), w, h);
         }
         cairo_surface_flush(surface.get());
-        video::argb32_to_yuv420p(cairo_image_surface_get_data(surface.get()), cairo_image_surface_get_stride(surface.get()),
-                                 w, h, {yuv->data[0], yuv->linesize[0], yuv->data[1], yuv->linesize[1], yuv->data[2],
-                                        yuv->linesize[2]});
-        benchmark::DoNotOptimize(yuv->data[0][0]);
+        convert(surface.get(), yuv.get());
     }
 }
 BENCHMARK(BM_FilmDrawAndConvert)->Args({1280, 720})->Args({1920, 1080})->Unit(benchmark::kMillisecond)->MinTime(2.0);
