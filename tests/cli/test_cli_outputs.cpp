@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_run.hpp"
+#include "support/zip_entries.hpp"
 
 namespace fs = std::filesystem;
 using dragon_test::contains;
@@ -144,6 +145,22 @@ TEST(CliOutputs, WorkbooksAreTheSameBytesFromRunToRun) {
     std::this_thread::sleep_for(std::chrono::milliseconds(1100));  // a clock-stamped workbook would differ now
     ASSERT_EQ(run_dragon("simulate --path turnaround --from -3 --to 3 -q -o " + (dir / "b.xlsx").string()).code, 0);
     EXPECT_EQ(slurp(dir / "a.xlsx"), slurp(dir / "b.xlsx"));
+}
+
+// The tool packs its workbooks at zlib's level 1 (cli/zip_level.cpp): every deflated part says
+// so in its header. tests/tables holds the library's own workbooks to the default level.
+TEST(CliOutputs, TheToolsWorkbooksAreDeflatedFast) {
+    const fs::path dir = fresh_dir("out");
+    ASSERT_EQ(run_dragon("solve --only q2 -q -o " + dir.string()).code, 0);
+    const auto entries = dragon_test::zip_entries(dir / "result2.xlsx");
+    ASSERT_GE(entries.size(), 5u);  // [Content_Types].xml, the sheet, the workbook, styles, ...
+    int deflated = 0;
+    for (const auto& e : entries) {
+        if (e.method != 8) continue;
+        ++deflated;
+        EXPECT_EQ(e.flags & 6, 6) << e.name;
+    }
+    EXPECT_GT(deflated, 0);
 }
 
 TEST(CliOutputs, TablesEndAtToWhenTheStepsLandOnIt) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "support/scratch.hpp"
+#include "support/zip_entries.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -79,6 +80,20 @@ TEST(Workbooks, Result2MatchesTheContestTemplate) {
     }
     v.close();
     EXPECT_EQ(run_checker(out, "result2-template.xlsx", values), 0);
+}
+
+// The library keeps libxlsxwriter's own compression (zlib's default level: flag bits 00); only
+// the dragon executable packs faster (cli/zip_level.cpp, tested in tests/cli).
+TEST(Workbooks, TheLibraryDeflatesAtTheDefaultLevel) {
+    const fs::path out = tmp_dir() / "default-level.xlsx";
+    write_result2_xlsx(Simulation(Scenario{}).frame(412.0), out.string());
+    int deflated = 0;
+    for (const auto& e : dragon_test::zip_entries(out)) {
+        if (e.method != 8) continue;
+        ++deflated;
+        EXPECT_EQ(e.flags & 6, 0) << e.name;
+    }
+    EXPECT_GT(deflated, 0);
 }
 
 TEST(Tables, CsvRoundTrips) {
