@@ -8,8 +8,6 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -41,13 +39,6 @@ struct CliRun {
     int code;
     std::string out, err;
 };
-
-inline std::string slurp(const std::filesystem::path& p) {
-    std::ifstream f(p, std::ios::binary);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
-}
 
 // `dragon ARGS` through the shell (ARGS may quote: "--pitch ''"). `prefix` runs before it in
 // the same shell ("ulimit -f 1;"); `stdout_to` replaces the captured stdout ("/dev/full").

@@ -1,9 +1,11 @@
-// A scratch folder of the test that is running, its own: ctest runs tests in parallel, one
+// A scratch folder of the test that is running, its own (and a file read whole): ctest runs tests in parallel, one
 // process each, so folders shared between tests would race (one test's output counted as
 // another's stray file).
 #pragma once
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -26,6 +28,14 @@ inline std::filesystem::path fresh_dir(const std::string& name) {
     std::filesystem::remove_all(d);
     std::filesystem::create_directories(d);
     return d;
+}
+
+// A file's whole contents, bytes as they are ("" if it cannot be read).
+inline std::string slurp(const std::filesystem::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
 }
 
 }  // namespace dragon_test

@@ -6,10 +6,10 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
+
+#include "support/scratch.hpp"
 
 namespace dragon_test {
 
@@ -20,8 +20,7 @@ struct ZipEntry {
 };
 
 inline std::vector<ZipEntry> zip_entries(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    const std::string b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string b = slurp(path);
     const auto u16 = [&](std::size_t at) {
         return static_cast<int>(static_cast<std::uint8_t>(b[at]) | static_cast<std::uint8_t>(b[at + 1]) << 8);
     };

@@ -97,12 +97,7 @@ INSTANTIATE_TEST_SUITE_P(Formats, RoundTrip,
 
 // x264 writes the settings it encoded with into the stream (its SEI text): "ref=8 ... ".
 std::string x264_setting(const std::string& path, const std::string& key) {
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) return "";
-    std::string bytes;
-    char buf[65536];
-    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) bytes.append(buf, n);
-    std::fclose(f);
+    const std::string bytes = dragon_test::slurp(path);
     const std::size_t at = bytes.find(" " + key + "=", bytes.find("x264 - core"));
     if (at == std::string::npos) return "";
     const std::size_t from = at + key.size() + 2;
