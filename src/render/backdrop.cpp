@@ -41,6 +41,15 @@ std::shared_ptr<const BackdropCache::Entry> BackdropCache::find(const BackdropKe
     return nullptr;
 }
 
+bool BackdropCache::worth_keeping(const BackdropKey& key) {
+    std::lock_guard lock(mutex_);
+    for (const auto& e : entries_)
+        if (e->key == key) return false;
+    if (last_missed_ && *last_missed_ == key) return true;
+    last_missed_ = key;
+    return false;
+}
+
 void BackdropCache::keep(BackdropKey key, std::vector<unsigned char> pixels) {
     auto entry = std::make_shared<const Entry>(Entry{std::move(key), std::move(pixels)});
     std::lock_guard lock(mutex_);
@@ -109,6 +118,7 @@ bool copy_backdrop(cairo_t* cr, BackdropCache& cache, const BackdropKey& key) {
 }
 
 void keep_backdrop(cairo_t* cr, BackdropCache& cache, BackdropKey key) {
+    if (!cache.worth_keeping(key)) return;
     cairo_surface_t* target = cairo_get_target(cr);
     cairo_surface_flush(target);
     const unsigned char* data = cairo_image_surface_get_data(target);

@@ -20,7 +20,8 @@ std::optional<BackdropKey> backdrop_key(cairo_t* cr, const Scene& s, const View&
 // Copies the cached backdrop into the target; false if the cache has none for this key.
 bool copy_backdrop(cairo_t* cr, BackdropCache& cache, const BackdropKey& key);
 
-// Keeps the target's pixels as the backdrop of `key` (call once the backdrop is drawn).
+// Keeps the target's pixels as the backdrop of `key` if the cache finds it worth keeping (call
+// once the backdrop is drawn).
 void keep_backdrop(cairo_t* cr, BackdropCache& cache, BackdropKey key);
 
 }  // namespace dragon::render

@@ -38,10 +38,12 @@ struct BackdropKey {
     bool operator==(const BackdropKey& o) const;
 };
 
-// The last two backdrops drawn (a crossfade shows two shots at once), safe to share between the
+// The last two backdrops kept (a crossfade shows two shots at once), safe to share between the
 // threads that draw a film's frames: a frame takes a copy of the pixels it needs under a lock,
-// never a Cairo object another thread also uses. Frames larger than 4K UHD are not kept (they
-// would hold tens of megabytes each for a film whose memory is otherwise a few frames).
+// never a Cairo object another thread also uses. A backdrop is kept once a second frame has
+// drawn it, so a camera that moves (a new backdrop every frame) costs no copies. Frames larger
+// than 4K UHD are not kept (they would hold tens of megabytes each for a film whose memory is
+// otherwise a few frames).
 class BackdropCache {
 public:
     struct Entry {
@@ -49,12 +51,16 @@ public:
         std::vector<unsigned char> pixels;  // stride x height bytes
     };
     std::shared_ptr<const Entry> find(const BackdropKey& key) const;
+    // Whether a frame that has just drawn this backdrop should keep it: true if the frame before
+    // that missed drew the same one (and none is kept yet); else it is remembered as that frame.
+    bool worth_keeping(const BackdropKey& key);
     void keep(BackdropKey key, std::vector<unsigned char> pixels);
     long hits() const;  // frames whose backdrop was copied, for tests and benchmarks
 
 private:
     mutable std::mutex mutex_;
     std::vector<std::shared_ptr<const Entry>> entries_;  // most recent last
+    std::optional<BackdropKey> last_missed_;  // the backdrop the last frame that missed drew
     mutable long hits_ = 0;
 };
 
