@@ -16,7 +16,7 @@
 namespace dragon {
 
 // Frames at t0, t0 + dt, ..., t1 (inclusive, by index so no float drift), computed on the
-// executor's workers (null: default_executor()).
+// executor's workers (null: the calling thread alone).
 std::vector<Frame> simulate_table(const Simulation& sim, double t0, double t1, double dt, Executor* executor = nullptr);
 // The same into `frames`, reusing its storage (a table of 301 frames is 7 MB: allocating and
 // first touching it costs more than computing it).
@@ -44,7 +44,7 @@ struct WindowCut {
 WindowCut cut_window(const Simulation& sim, const RunWindow& window);
 // Throws PastTheValidMotion (or InputError, off the path) naming `at` as given ("120 m", "5")
 // under `field` unless the moment is within the valid motion.
-void require_valid_at(const Simulation& sim, const Along& at, const char* field);
+void require_valid_at(const Simulation& sim, const Along& at, Key field);
 
 // Frames at the given times (in any order; each within the valid motion, else the InputError
 // Simulation::frame throws, before any is made), on the executor's workers: `out(k, frame)`
@@ -79,7 +79,7 @@ struct ContactSearchOptions {
     // If given, hears of every interval [from, to] the search has declared contact-free by its
     // bounds (without looking inside), in order; the search then runs on the calling thread.
     StepObserver on_step;
-    Executor* executor = nullptr;  // null: default_executor()
+    Executor* executor = nullptr;  // null: the calling thread alone
     // On the plain spiral, leave out of each stretch's search the benches proved unable to touch
     // anything over it (their turn of the spiral stays clear of the next); false watches every
     // bench, for checking that proof.
@@ -93,6 +93,11 @@ std::optional<Contact> first_contact(const Simulation& sim, double t_from, doubl
 std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from, double x_to,
                                             const ContactSearchOptions& options = {});
 
+// Benches overlapping where a search starts (`start`, as asked): "benches 1 and 24 already
+// overlap at 0 m of head travel, where the search starts (by 0.114626 m): their first contact is
+// before it".
+std::string overlap_sentence(const Overlap& o, const Along& start);
+
 // Q2 as `dragon collide` asks it: the first contact over a window, cut to the valid motion.
 struct CollideAnswer {
     std::optional<Contact> contact;  // none: nothing touched in the window searched
@@ -101,22 +106,13 @@ struct CollideAnswer {
     // The end of the valid motion where it cut the window short and nothing touched before it.
     std::optional<Jam> jam;
     // The contact is at the window's start with the benches already overlapping there: they
-    // first touched before it (first_contact_covering only; collide throws instead).
+    // first touched before it. `overlap` says which two, and how deep.
     bool overlapping = false;
+    std::optional<Overlap> overlap;
 };
-// Benches that already overlap where a search for the first contact starts: the chain collides
-// (before that moment), so the window holds no first contact to report. An InputError on the
-// window's start for a command (field "time range start"); a verdict on the scenario for a
-// sweep's map, as min-pitch calls such a pitch "collides".
-struct OverlapAtStart : InputError {
-    // `start`: the window's start as given ("0 m", "420"); benches a < b overlap by `overlap` m.
-    OverlapAtStart(const std::string& start, int a, int b, double overlap);
-    int bench_a;   // 1..N
-    int bench_b;   // 1..N, bench_a < bench_b
-    double depth;  // how deep they overlap, m
-};
-// Throws InputError as cut_window does, and OverlapAtStart when two benches already overlap
-// where the window starts: their first contact lies before it.
+// Throws InputError as cut_window does. Benches already overlapping where the window starts are
+// a verdict, not a refusal: the answer has `overlap` set (and the contact at the start), the
+// same for every command, sweep and front end.
 CollideAnswer collide(const Simulation& sim, const RunWindow& window, Executor* executor = nullptr);
 // The motion's first contact: collide over the path's default window (default_window). This is
 // the one event every command reports as the first contact: collide and turnaround by default,
@@ -186,11 +182,17 @@ std::optional<Contact> contact_before_boundary(Scenario s, double pitch);
 // grid points, so `grid` trades time for the narrowest window the scan is sure to see.
 inline constexpr double kDefaultPitchGrid = 2.5e-3;
 inline constexpr int kMaxPitchGridSteps = 100000;  // about 10 minutes of runs on 2 cores
+// The first scan's runs over [lo, hi] on `grid` (a range that is a whole number of spacings up
+// to rounding gets that number): what a search costs, most of its time.
+double pitch_grid_steps(double lo, double hi, double grid);
+// Runs beyond which a search is out of proportion to the contest's (80 on 0.35..0.55 m): a
+// front end says so before it starts.
+inline constexpr double kCostlyPitchGridSteps = 800;
 // `progress` hears of the first scan's runs, one per grid pitch (most of the time taken).
 struct MinPitchOptions {
     double grid = kDefaultPitchGrid;  // the first scan's pitch spacing, m
     WorkProgress progress;         // hears of the first scan's runs, one call per run
-    Executor* executor = nullptr;  // runs the pitches in parallel; null: default_executor()
+    Executor* executor = nullptr;  // runs the pitches in parallel; null: the calling thread alone
 };
 // The answer and any error are the same whatever the executor and its size (the pitches run
 // are fixed in advance; an error is the one of the smallest pitch that failed). Throws

@@ -22,6 +22,9 @@ std::string min_pitch_guarantee(const MinPitch& m);
 // can follow at all.
 std::string turnaround_conclusion(const TurnaroundStudy& st);
 
+// The overlap as an answer's "overlap_at_start" key: {"benches", "depth"}, or null.
+Json overlap_json(const std::optional<Overlap>& o);
+
 // The end of the valid motion as an answer's "jam" key: {"time", "travel", "handle", "kind",
 // "ahead", "point", "tolerance"}, or null. "kind" is what happens as time runs forward; "ahead":
 // the motion is valid until the jam (else from it).

@@ -32,7 +32,7 @@ struct Frame {
 // Fills `out` with the chain whose head front handle is at arc position head_arc moving at
 // head_speed. Each next handle is the nearest point behind the previous one at its link's
 // chord. Speeds follow from rigidity: both ends of a link have equal velocity components along
-// it, v_i (T_i . u) = v_{i+1} (T_{i+1} . u). Throws InputError if the chain runs off the path.
+// it, v_i (T_i . u) = v_{i+1} (T_{i+1} . u). Throws SolverError if the chain runs off the path.
 void solve_chain(const Path& path, const BenchSpec& spec, double head_arc, double head_speed,
                  Frame& out);
 
@@ -80,10 +80,10 @@ public:
     // The latest time the head stays on the path (the spiral's centre; +inf on the turnaround).
     double end_time() const;
 
-    // Throws InputError (its field `what`, e.g. "time range end") unless the head is on the path at time t
+    // Throws InputError (its key `what`, e.g. Key::to) unless the head is on the path at time t
     // and the whole chain within kMaxReach of the spiral's centre (the turnaround path is endless,
     // but far out its points lose precision).
-    void require_on_path(double t, const char* what) const;
+    void require_on_path(double t, Key what) const;
     // travel(t), for a t within the valid motion (or at its end) kept within it in travel too:
     // the time of a jam, converted back, may round one step past the jam's travel.
     double travel_within(double t) const;
@@ -97,9 +97,9 @@ public:
     // The same for a head travel x, m.
     std::optional<Jam> jam_before_travel(double x) const;
     // require_on_path, and throws InputError naming the jam if t lies past one.
-    void require_valid(double t, const char* what) const;
+    void require_valid(double t, Key what) const;
     // The same for a head travel x, m (PastTheValidMotion names the time x / speed).
-    void require_valid_travel(double x, const char* what) const;
+    void require_valid_travel(double x, Key what) const;
     // The latest time the motion is valid: valid_range().to.
     double valid_end() const { return valid_range().to; }
     // [t0, t1] cut to the valid motion, and the jam that cut it (the later end's, if both did).
@@ -111,7 +111,7 @@ public:
         std::optional<Jam> jam;  // the jam that cut it, if one did
     };
     // [t0, t1], s, as a Span.
-    Span clip_to_valid(double t0, double t1, const char* from_what, const char* to_what) const;
+    Span clip_to_valid(double t0, double t1, Key from_what, Key to_what) const;
     // The same for a range of head travel [x0, x1], m, with the jam at each end that cut it, and
     // cut at the spiral's centre too.
     struct TravelSpan {
@@ -121,7 +121,7 @@ public:
         std::optional<Jam> after;   // the jam that cut its end
     };
     // [x0, x1], m, as a TravelSpan.
-    TravelSpan clip_travel(double x0, double x1, const char* from_what, const char* to_what) const;
+    TravelSpan clip_travel(double x0, double x1, Key from_what, Key to_what) const;
 
     // The chain at time t; throws InputError unless t is within the valid range (require_valid).
     Frame frame(double t) const;
@@ -143,7 +143,7 @@ private:
     // the side's end when `whole`); nullopt if none found there.
     std::optional<Jam> side_jam(double s, bool forward, bool whole) const;
     bool arc_on_path(double s) const;  // require_arc_on_path would pass
-    void require_arc_on_path(double s, const char* what, const std::string& value) const;
+    void require_arc_on_path(double s, Key what, const std::string& value) const;
 
     Scenario scenario_;
     std::shared_ptr<const Path> path_;
@@ -166,9 +166,9 @@ std::string jam_sentence(const Jam& j);
 // and the jam, for an application to word (allowed() words it in the library's terms).
 struct PastTheValidMotion : InputError {
     // The moment t, s, under `field`, past the jam j.
-    PastTheValidMotion(const char* field, double t, const Jam& j);
+    PastTheValidMotion(Key field, double t, const Jam& j);
     // The same for a value as given ("120 m" of head travel, say).
-    PastTheValidMotion(const char* field, const std::string& value, const Jam& j);
+    PastTheValidMotion(Key field, const std::string& value, const Jam& j);
     Jam jam;     // the end of the valid motion it lies past
     bool ahead;  // jam.ahead: the motion is valid until it, else from it
 };

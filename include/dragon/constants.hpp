@@ -8,6 +8,11 @@ namespace dragon {
 // One turn, rad.
 inline constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
+// The broad phase of the searches' collision checks: pairs of benches whose bounding circles come
+// within this of each other are tested exactly (and bounded pair by pair); the others are bounded
+// group by group, m. The gallery's fig3 draws it.
+inline constexpr double kBroadPhaseMargin = 0.7;
+
 }  // namespace dragon
 
 namespace dragon::tol {

@@ -44,7 +44,7 @@ struct ContestOptions {
     std::function<void(const std::vector<Frame>&)> on_q1_table;
     // The same for Q4's table.
     std::function<void(const std::vector<Frame>&)> on_q4_table;
-    Executor* executor = nullptr;  // null: default_executor()
+    Executor* executor = nullptr;  // null: the calling thread alone
 
     bool asks(Question q) const;  // whether `questions` holds q
 };
@@ -72,6 +72,10 @@ struct PitchRange {
     std::string moved;  // "" for the contest's own range
 };
 PitchRange default_pitch_range(const Scenario& s);  // Q3's range for s, as above
+// The range a minimum-pitch search of s covers: default_pitch_range(s) with the ends given in
+// its place (`moved` only when an end it left to the default was moved). Every front end asks
+// this, so min-pitch, solve, sweeps, Python and the page search the same pitches.
+PitchRange pitch_search_range(const Scenario& s, std::optional<double> lo, std::optional<double> hi);
 
 // Each question's answer, present when it was asked.
 struct ContestAnswers {

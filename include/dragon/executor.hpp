@@ -3,8 +3,10 @@
 // Work comes as a parallel_for: `count` items, handed out to the executor's workers in any
 // order; each call gets the item's index and the number of the worker running it (0 ..
 // workers() - 1), so that a caller can keep one scratch workspace per worker instead of
-// thread-locals. The library starts no threads of its own: every function that runs in parallel
-// takes an Executor, or uses default_executor() when given none.
+// thread-locals. The library starts no threads of its own and keeps no pool: every function that
+// runs in parallel takes an Executor from its caller, and given none it runs on the calling
+// thread. A pool belongs to whoever made it, so a process that forks after its pools are gone
+// (Python's multiprocessing, a server that forks workers) finds nothing half-inherited.
 #pragma once
 
 #include <atomic>
@@ -23,7 +25,7 @@ public:
 };
 
 // Where the library's parallel work runs: the caller's threads, behind this interface (given
-// none, the library uses default_executor()).
+// none, the library runs on the calling thread).
 class Executor {
 public:
     virtual ~Executor() = default;
@@ -35,8 +37,8 @@ public:
     virtual int workers() const = 0;
     // Calls body(item, worker) for every item in [0, count), each exactly once, and returns when
     // all are done. The first exception a body throws is rethrown here, once the items already
-    // started have finished (the rest are skipped). A parallel_for called from inside a body
-    // runs inline on that worker.
+    // started have finished (the rest are skipped). A parallel_for may be called from inside a
+    // body (its items may then run on the other workers too) and from several threads at once.
     virtual void parallel_for(std::size_t count, const std::function<void(std::size_t item, int worker)>& body) = 0;
 };
 
@@ -55,8 +57,15 @@ private:
     const Executor* outer_ = nullptr;
 };
 
-// A fixed set of threads, started once and kept; the calling thread works as one of them, so
-// ThreadPool(1) starts none. 0: one worker per core.
+// A fixed set of threads, started with the pool and joined when it is destroyed; the calling
+// thread works as one of them, so ThreadPool(1) starts none. 0: one worker per core.
+//
+// Jobs do not wait for each other: a parallel_for started inside another's item (solve's
+// minimum-pitch search inside its list of questions), or by another thread at the same time,
+// is one more job whose items any idle worker takes. A caller waits only for items that are
+// running, and those never wait for items not yet started, so nesting cannot deadlock.
+// Worker numbers stay unique within each job: the pool's threads are 1 .. workers() - 1, and a
+// job's caller is 0, or its own number when it is one of the pool's threads.
 class ThreadPool final : public Executor {
 public:
     explicit ThreadPool(int workers = 0);  // starts workers - 1 threads (0: one worker per core)
@@ -94,13 +103,11 @@ inline void check_stop(const Executor& ex) {
     if (ex.stop_requested()) throw Cancelled();
 }
 
-// The executor used when a caller passes none: a ThreadPool with one worker per core, made on
-// first use. set_default_workers(n) before that first use sets its size instead (n >= 1); it
-// throws std::logic_error once the pool exists.
-Executor& default_executor();
-void set_default_workers(int workers);
+// `executor`, or `serial` (the calling thread) when it is null: what a function given no
+// executor runs on. Keeps no state: the caller owns both.
+inline Executor& executor_or(Executor* executor, InlineExecutor& serial) { return executor ? *executor : serial; }
 
-// `executor`, or default_executor() when it is null.
-inline Executor& executor_or_default(Executor* executor) { return executor ? *executor : default_executor(); }
+// How many workers "one per core" means here (at least 1).
+int cores();
 
 }  // namespace dragon

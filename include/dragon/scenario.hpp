@@ -9,6 +9,9 @@
 
 namespace dragon {
 
+// The most benches a chain may have.
+inline constexpr int kMaxBenchCount = 1000000;
+
 // The benches: how many, and each board's size and where its holes are.
 struct BenchSpec {
     int bench_count = 223;       // benches in the chain; bench 1 is the head
@@ -82,13 +85,19 @@ inline constexpr ScenarioValues all = (1u << 11) - 1;  // every value above
 // plain spiral's pitch and start turn or the turnaround path's turn radius, pitch and ratio.
 ScenarioValues values_read(PathKind kind);
 
-// A value that is not allowed, and which values the failed rule involves (one, or two or
-// more for a rule between them, such as the pitch against the width).
+// A value that is not allowed (its key, as given, and what is allowed), and which values the
+// failed rule involves (one, or two or more for a rule between them, such as the pitch against
+// the width; the key is the one the sentence is about).
 struct ScenarioError : InputError {
     // `what`: the whole sentence; `involved`: the values of the rule it breaks.
-    ScenarioError(const std::string& what, ScenarioValues involved) : InputError(what), values(involved) {}
+    ScenarioError(Key key, std::string value, std::string allowed, const std::string& what, ScenarioValues involved)
+        : InputError(key, std::move(value), std::move(allowed), what), values(involved) {}
     ScenarioValues values;  // the values the failed rule involves
 };
+
+// Throws the ScenarioError of a bench count outside 1..kMaxBenchCount, `given` as written (a
+// front end checks a whole number before it narrows it to an int).
+[[noreturn]] void refuse_bench_count(const std::string& given);
 
 // Throws ScenarioError naming the first bad value among `values` and what is allowed. A rule
 // between values is checked when all of them are among `values`.

@@ -21,7 +21,7 @@ struct Still {
 // reaches t, and as make_scene does for a bad camera. An unset annotation becomes the time and
 // pitch, with the first contact when t is past it, in the scene's language. Either way the
 // annotation gets a band of its own above the view (SceneOptions::title_band), hiding nothing.
-Still still_at(const Simulation& sim, double t, SceneOptions so, const char* time_field = "time");
+Still still_at(const Simulation& sim, double t, SceneOptions so, Key time_field = Key::time);
 
 // The chain at the motion's first contact (first_contact_of_motion: the one every command
 // reports), the touching benches and their meeting point marked and the benches named ("bench 1

@@ -41,23 +41,26 @@ const std::vector<MeasureInfo>& sweep_measures();
 // Throws InputError naming the measure and listing the others.
 const MeasureInfo& find_measure(const std::string& name);
 
-// A pitch bound of min-pitch's search: a number, or the bench width plus one ("width+0.05"),
-// for sweeps that vary the width.
+// A pitch bound of min-pitch's search: a number, the bench width plus one ("width+0.05"), for
+// sweeps that vary the width, or "auto": each scenario's own default (default_pitch_range, as
+// min-pitch and solve search it), the default.
 struct PitchBound {
     double offset = 0.0;       // m: the pitch, or what is added to the bench width
     bool above_width = false;  // the bound is the bench width plus `offset`
+    bool automatic = false;    // the bound is the scenario's default_pitch_range
+    bool upper = false;        // which end of that range (the hi bound's)
     // The bound for this scenario; width+X rounded to 12 significant digits, as a sweep's values
     // are (0.42, not 0.42000000000000004: the same pitch the command's --lo 0.42 searches from).
     double at(const Scenario& s) const;
-    std::string text() const;  // as given: "0.42", "width+0.05"
+    std::string text() const;  // as given: "0.42", "width+0.05", "auto"
 };
-// Throws InputError naming `flag` and the text.
-PitchBound parse_pitch_bound(const std::string& flag, const std::string& text);
+// The bound `text` gives (`upper`: the hi bound). Throws InputError naming `flag` and the text.
+PitchBound parse_pitch_bound(const std::string& flag, const std::string& text, bool upper);
 
 // The options of the measures (those of their commands a sweep passes on).
 struct MeasureOptions {
-    PitchBound lo{0.35, false};                   // min-pitch --lo
-    PitchBound hi{0.55, false};                   // min-pitch --hi
+    PitchBound lo{0.0, false, true, false};       // min-pitch --lo: each scenario's default
+    PitchBound hi{0.0, false, true, true};        // min-pitch --hi: each scenario's default
     double grid = kDefaultPitchGrid;              // min-pitch --grid
     double limit = 2.0;                           // max-speed --limit
     // --from (and --to, below): the window of collide, turnaround and max-speed over their path's default

@@ -21,6 +21,11 @@ std::string handle_label(int handle, int handle_count);
 std::string format_time(double t, int digits);
 // A time header as the contest writes it: "0 s", "-100 s", "0.5 s".
 std::string time_header(double t);
+// Throws InputError (Key::step) when two successive frames' times would read alike in a table
+// (a step finer than the times it prints: format_time(t, digits), or time_header in a workbook,
+// `workbook`), naming the decimals that would tell them apart, so that no table has two rows or
+// columns labelled with one moment.
+void require_distinct_times(const std::vector<Frame>& frames, int digits, bool workbook);
 
 // Decimals of the CSV and JSON tables: 6 by default (the contest's), at most 17 (every bit of a
 // double of 0.1 or more, for a reader who wants the value itself; smaller values keep 17

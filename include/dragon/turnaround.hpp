@@ -163,7 +163,7 @@ struct RunClearance {
 };
 // Over `window` cut to the valid motion (cut_window). `progress` hears of the scan's samples
 // (most of the time taken). The first-contact search runs on `executor` (null:
-// default_executor()). Throws InputError as cut_window does, ("clearance time range") for a
+// the calling thread alone). Throws InputError as cut_window does, ("clearance time range") for a
 // window too long to scan (over 1e8 bench checks), and Cancelled when `executor` asks to stop.
 RunClearance min_clearance(const Scenario& s, const RunWindow& window = kTurnaroundWindow,
                            const WorkProgress& progress = {}, Executor* executor = nullptr);

@@ -89,7 +89,7 @@ struct VideoOptions {
     int colours = 64;
     // The workers frames are drawn on (encode_frames, write_video, write_film): at most 8 of its
     // workers draw, and the one that finds the next frame drawn encodes it. Null: the
-    // default_executor(). The codec's own threads are `threads`, above.
+    // calling thread alone. The codec's own threads are `threads`, above.
     Executor* executor = nullptr;
 };
 // Throws InputError for a size or rate the format cannot take (odd size for yuv420p, fps out

@@ -184,7 +184,9 @@ class MaxSpeedResult(Result):
 
     ``max_head_speed`` (m/s), ``ratio`` (the fastest handle over the head), ``handle`` and
     ``tied`` (which reach it), ``time`` (s) and ``travel`` (m), the window, ``jam`` and
-    ``unbounded`` (a handle's speed without bound before the window ends).
+    ``unbounded`` (a handle's speed without bound before the window ends). Where the end of
+    the valid motion cuts the window short (``jam`` set), ``max_head_speed`` is None: the dragon
+    cannot make the turn at any speed.
     """
 
 
@@ -356,14 +358,18 @@ def collide(scenario: Optional[Scenario] = None, *, path: str = "spiral", from_:
     return result
 
 
-def min_pitch(scenario: Optional[Scenario] = None, *, lo: float = 0.35, hi: float = 0.55, grid: float = 0.0025,
+def min_pitch(scenario: Optional[Scenario] = None, *, lo: Optional[float] = None, hi: Optional[float] = None,
+              grid: float = 0.0025,
               progress: Union[bool, Callable[[int, int], None], None] = True) -> MinPitchResult:
     """Q3: the smallest pitch (m) with which the head reaches the turning space collision-free
     (``dragon min-pitch``), searched over `lo` .. `hi` on a first scan of spacing `grid`, each
-    change of feasibility narrowed to 1e-9 m. `progress` hears the first scan's runs."""
+    change of feasibility narrowed to 1e-9 m. Left out, `lo` and `hi` are the scenario's own range
+    as the command searches it (0.35 .. 0.55 m, moved up for a dragon too wide for it).
+    `progress` hears the first scan's runs."""
     callback, close = _progress(progress, "pitches", "min_pitch")
     try:
-        return MinPitchResult(json.loads(_core._min_pitch(_values(scenario), float(lo), float(hi), float(grid),
+        return MinPitchResult(json.loads(_core._min_pitch(_values(scenario), None if lo is None else float(lo),
+                                                          None if hi is None else float(hi), float(grid),
                                                           callback)))
     finally:
         close()

@@ -35,15 +35,17 @@ void bind_answers(py::module_& m) {
           py::arg("scenario"), py::arg("path"), py::arg("from_"), py::arg("to"));
 
     m.def("_min_pitch",
-          [](const py::dict& scenario, double lo, double hi, double grid, const py::object& progress) {
+          [](const py::dict& scenario, std::optional<double> lo, std::optional<double> hi, double grid,
+             const py::object& progress) {
               Scenario s = scenario_from(scenario);
               s.path.kind = PathKind::spiral;
+              const PitchRange range = pitch_search_range(s, lo, hi);  // the command's, to the digit
               MinPitchOptions o;
               o.grid = grid;
               o.progress = progress_from(progress);
               const MinPitch mp = interruptible([&](Executor& ex) {
                   o.executor = &ex;
-                  return min_pitch(s, lo, hi, o);
+                  return min_pitch(s, range.lo, range.hi, o);
               });
               return json_text(min_pitch_answer(mp, s.path.turn_radius));
           },
@@ -85,7 +87,7 @@ void bind_answers(py::module_& m) {
               if (!only.empty()) {
                   o.questions.clear();
                   for (int q : only) {
-                      if (q < 1 || q > 5) throw InputError("only", fmt::format("{}", q), "the questions are 1 to 5");
+                      if (q < 1 || q > 5) throw InputError(Key::only, fmt::format("{}", q), "the questions are 1 to 5");
                       o.questions.push_back(static_cast<Question>(q - 1));
                   }
               }

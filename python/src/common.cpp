@@ -1,7 +1,6 @@
 #include "common.hpp"
 
 #include <cmath>
-#include <map>
 #include <memory>
 
 #include <fmt/format.h>
@@ -16,54 +15,16 @@ namespace {
 
 py::object input_error, file_error, solver_error;
 
-// The Python name of a value the library names (a scenario value as its keyword, an option as
-// the keyword of the call that takes it).
-std::string python_name(const std::string& field) {
-    static const std::map<std::string, std::string> names = {
-        {"time range start", "from_"},      {"time range end", "to"},
-        {"time range", "from_/to"},         {"clearance time range", "from_/to"},
-        {"time", "t"},                      {"time step", "step"},
-        {"head travel", "travel"},          {"pitch grid", "grid"},
-        {"pitch search range end", "hi"},   {"speed limit", "limit"},
-        {"picture size", "size"},           {"frame rate", "fps"},
-        {"speedup", "speedup"},             {"hold", "hold"},
-        {"film moment", "at"},              {"H.264 quality (crf)", "crf"},
-        {"VP9 quality (crf)", "crf"},       {"GIF quality (crf)", "crf"},
-        {"encoder preset", "preset"},       {"encoder tune", "tune"},
-        {"palette colours", "colours"},     {"encoder threads", "threads"},
-        {"measure", "measure"},             {"sweep axis", "vary"},
-        {"path", "path"},                   {"head speed", "speed"},
-        {"video size", "size"},             {"zoom", "zoom"},
-        {"language", "lang"},              {"print width", "width_in"},
-        {"font size", "font_pt"},           {"dpi", "dpi"},
-        {"print size", "print_size"},
-    };
-    if (const auto it = names.find(field); it != names.end()) return it->second;
-    std::string out = field;
-    for (char& c : out)
-        if (c == ' ' || c == '-') c = '_';
-    return out;
-}
-
-// A scenario's refusal names its value in words ("pitch = 0 is not allowed: ..."): the keyword
-// of the first value involved, the value as written, and what is allowed.
-void scenario_fields(const ScenarioError& e, std::string& field, std::string& value, std::string& allowed) {
-    for (const SweepParameter& p : sweep_parameters())
-        if (e.values & p.value) {
-            field = p.name;
-            for (char& c : field)
-                if (c == '-') c = '_';
-            if (field == "head_speed") field = "speed";
-            break;
-        }
-    const std::string what = e.what();
-    const std::size_t cut = what.find(" is not allowed");
-    if (cut == std::string::npos) return;
-    std::string head = what.substr(0, cut);
-    const std::size_t eq = head.rfind(" = ");
-    value = eq != std::string::npos ? head.substr(eq + 3) : head.substr(head.rfind(' ') + 1);
-    const std::size_t colon = what.find(": ", cut);
-    allowed = colon != std::string::npos ? what.substr(colon + 2) : "";
+// The keyword that sets a key: its name, but where Python's words differ (`from` is reserved,
+// a moment is `t`, a print size `print_size`, beside the builtin print).
+std::string python_name(Key key) {
+    switch (key) {
+        case Key::from: return "from_";
+        case Key::time_range: case Key::clearance_range: return "from_/to";
+        case Key::time: return "t";
+        case Key::print: return "print_size";
+        default: return std::string(key_info(key).name);
+    }
 }
 
 // A Python exception of `type` with the message and the attributes given.
@@ -93,26 +54,18 @@ void register_errors(py::module_& m) {
             if (p) std::rethrow_exception(p);
         } catch (const PastTheValidMotion& e) {
             py::dict a;
-            a["field"] = python_name(e.field());
+            a["field"] = python_name(e.key());
             a["value"] = e.value();
             a["allowed"] = e.allowed();
             // The package's Jam (a result: keys and attributes), as valid_range gives it.
             a["jam"] = py::module_::import("benchdragon").attr("Jam")(jam_object(e.jam));
             raise_with(input_error, e.what(), a);
-        } catch (const ScenarioError& e) {
-            std::string field, value, allowed;
-            scenario_fields(e, field, value, allowed);
-            py::dict a;
-            a["field"] = field;
-            a["value"] = value;
-            a["allowed"] = allowed;
-            a["jam"] = py::none();
-            raise_with(input_error, e.what(), a);
         } catch (const InputError& e) {
+            const bool one_value = e.key() != Key::none;
             py::dict a;
-            a["field"] = e.field().empty() ? py::object(py::none()) : py::object(py::str(python_name(e.field())));
-            a["value"] = e.field().empty() ? py::object(py::none()) : py::object(py::str(e.value()));
-            a["allowed"] = e.field().empty() ? py::object(py::none()) : py::object(py::str(e.allowed()));
+            a["field"] = one_value ? py::object(py::str(python_name(e.key()))) : py::object(py::none());
+            a["value"] = one_value ? py::object(py::str(e.value())) : py::object(py::none());
+            a["allowed"] = one_value ? py::object(py::str(e.allowed())) : py::object(py::none());
             a["jam"] = py::none();
             raise_with(input_error, e.what(), a);
         } catch (const FileError& e) {
@@ -129,25 +82,38 @@ void register_errors(py::module_& m) {
 
 Scenario scenario_from(const py::dict& values) {
     Scenario s;
+    ScenarioValues given = 0;
     for (const auto& [key, v] : values) {
-        std::string name = py::str(key);
-        std::string flag = name == "speed" ? "speed" : name;
-        for (char& c : flag)
-            if (c == '_') c = '-';
-        const SweepParameter* p = find_sweep_parameter(flag);
+        const std::string name = py::str(key);
+        const KeyInfo* k = name.find('-') == std::string::npos ? find_key(name) : nullptr;
+        const SweepParameter* p = k && k->scenario ? find_sweep_parameter(hyphenated(k->key)) : nullptr;
         if (!p) throw py::type_error(fmt::format("Scenario() got an unexpected keyword argument '{}'", name));
         if (v.is_none()) continue;
+        // A bool is not a number here, though Python's True == 1.
+        if (py::isinstance<py::bool_>(v))
+            throw InputError(k->key, py::str(py::repr(v)).cast<std::string>(), p->whole ? "give a whole number" : "give a number");
         double x;
-        try {
-            x = v.cast<double>();
-        } catch (const py::cast_error&) {
-            throw InputError(name, py::str(py::repr(v)).cast<std::string>(), "give a number");
+        if (p->whole && py::isinstance<py::int_>(v)) {
+            // Checked as the integer it is, before any narrowing: 2**31 is not -2147483648.
+            const py::object n = py::reinterpret_borrow<py::object>(v);
+            if (n < py::int_(1) || n > py::int_(kMaxBenchCount)) refuse_bench_count(py::repr(n).cast<std::string>());
+            x = static_cast<double>(n.cast<long long>());
+        } else {
+            try {
+                x = v.cast<double>();
+            } catch (const py::cast_error&) {
+                throw InputError(k->key, py::str(py::repr(v)).cast<std::string>(), p->whole ? "give a whole number" : "give a number");
+            }
         }
-        if (p->whole && !(x == std::floor(x) && std::abs(x) < 9.2e18))
-            throw InputError(name, fmt::format("{}", x), "give a whole number");
+        if (p->whole && x != std::floor(x))
+            throw InputError(k->key, py::str(py::repr(v)).cast<std::string>(), "give a whole number");
         set_parameter(s, *p, x);
-        validate(s, p->value);
+        validate(s, p->value);  // the value alone, named as given
+        given |= p->value;
     }
+    // The rules between values (the holes within the boards, the pitch wider than the benches),
+    // for every rule a given value takes part in: Scenario(hole_offset=5) is refused here.
+    if (given) validate(s, value::all);
     return s;
 }
 
@@ -167,10 +133,10 @@ py::dict scenario_dict(const Scenario& s) {
 PathKind path_kind(const std::string& name) {
     if (name == "spiral") return PathKind::spiral;
     if (name == "turnaround") return PathKind::turnaround;
-    throw InputError("path", fmt::format("'{}'", name), "use \"spiral\" or \"turnaround\"");
+    throw InputError(Key::path, fmt::format("'{}'", name), "use \"spiral\" or \"turnaround\"");
 }
 
-std::optional<Along> along_from(const py::object& v, const char* field) {
+std::optional<Along> along_from(const py::object& v, Key field) {
     if (v.is_none()) return std::nullopt;
     if (py::isinstance<py::str>(v)) {
         const std::string text = v.cast<std::string>();
@@ -189,8 +155,8 @@ std::optional<Along> along_from(const py::object& v, const char* field) {
 
 RunWindow window_from(const RunWindow& defaults, const py::object& from, const py::object& to) {
     RunWindow w = defaults;
-    if (const auto a = along_from(from, "from_")) w.from = *a;
-    if (const auto a = along_from(to, "to")) w.to = *a;
+    if (const auto a = along_from(from, Key::from)) w.from = *a;
+    if (const auto a = along_from(to, Key::to)) w.to = *a;
     return w;
 }
 

@@ -35,7 +35,7 @@ py::dict scenario_dict(const Scenario& s);
 // "spiral" or "turnaround"; InputError (field "path") otherwise.
 PathKind path_kind(const std::string& name);
 // A window end from Python: None (the default), a number of seconds, or "12.5s" / "-100m".
-std::optional<Along> along_from(const py::object& v, const char* field);
+std::optional<Along> along_from(const py::object& v, Key field);
 // The window over a default: `from_` and `to` as given.
 RunWindow window_from(const RunWindow& defaults, const py::object& from, const py::object& to);
 
@@ -48,11 +48,14 @@ WorkProgress progress_from(const py::object& callback);
 // Runs work(executor) on a thread of its own with the GIL released, while this thread checks
 // Python's signals every 50 ms: a KeyboardInterrupt (Ctrl-C, or a notebook's interrupt) asks the
 // work to stop (it throws Cancelled at its next check) and is raised here once it has. The
-// executor runs on the library's default pool.
+// work runs on a pool made for this call (`workers`, 0: one per core) and joined before it
+// returns: nothing is left running between calls, so a process forked afterwards (a
+// ProcessPoolExecutor's workers) finds no half-inherited threads.
 template <class F>
-auto interruptible(F&& work) -> std::invoke_result_t<F&, Executor&> {
+auto interruptible(F&& work, int workers = 0) -> std::invoke_result_t<F&, Executor&> {
     using R = std::invoke_result_t<F&, Executor&>;
-    StoppableExecutor ex(default_executor());
+    ThreadPool pool(workers);
+    StoppableExecutor ex(pool);
     std::optional<std::conditional_t<std::is_void_v<R>, bool, R>> result;
     std::exception_ptr error;
     std::mutex lock;

@@ -32,7 +32,7 @@ T get(const py::dict& d, const char* key, T fallback) {
 
 void check_zoom(double zoom) {
     if (!(zoom >= kMinViewExtent && zoom <= kMaxViewExtent))
-        throw InputError("zoom", fmt::format("{}", zoom),
+        throw InputError(Key::zoom, fmt::format("{}", zoom),
                          fmt::format("give the view's width in metres, {:g}..{:g}", kMinViewExtent, kMaxViewExtent));
 }
 
@@ -55,7 +55,7 @@ std::optional<PrintSize> print_size_of(const py::dict& p) {
     if (given("width_cm")) {
         const double cm = p["width_cm"].cast<double>();
         if (!(cm >= kMinPrintWidthIn * kCmPerInch && cm <= kMaxPrintWidthIn * kCmPerInch))
-            throw InputError("width_cm", error_value(cm), fmt::format("give centimetres, {:g}..{:g}",
+            throw InputError(Key::width_cm, error_value(cm), fmt::format("give centimetres, {:g}..{:g}",
                                                                       kMinPrintWidthIn * kCmPerInch,
                                                                       kMaxPrintWidthIn * kCmPerInch));
         size.width_in = cm / kCmPerInch;
@@ -107,7 +107,7 @@ SceneOptions scene_look(const py::dict& look, const std::string& assets) {
         const auto c = look["centre"].cast<std::pair<double, double>>();
         if (!zoom) throw InputError("centre needs zoom (the width of the view in metres)");
         if (!(std::abs(c.first) <= kMaxViewCentre && std::abs(c.second) <= kMaxViewCentre))
-            throw InputError("centre", fmt::format("({}, {})", c.first, c.second),
+            throw InputError(Key::centre, fmt::format("({}, {})", c.first, c.second),
                              fmt::format("give x, y in metres, each within \u00b1{:g}", kMaxViewCentre));
         so.camera = Camera::at({c.first, c.second}, *zoom);
     } else if (zoom) {
@@ -136,7 +136,7 @@ Still make_still(const Simulation& sim, const py::object& time, bool collision, 
         still = still_at_first_contact(sim, so, zoom, &searched);
     }
     if (!still)
-        throw InputError("collision", "True",
+        throw InputError(Key::collision, "True",
                          fmt::format("no two benches touch between t = {} s and {} s on this scenario{}; give a time",
                                      format_time(searched.window.from), format_time(searched.window.to),
                                      searched.jam ? " (" + jam_sentence(*searched.jam) + ")" : ""));

@@ -106,7 +106,7 @@ void bind_simulation(py::module_& m) {
         // that made it): times (T,), positions (T, H, 2), speeds (T, H).
         .def("frames",
              [](const Simulation& sim, py::array_t<double, py::array::c_style | py::array::forcecast> times) {
-                 if (times.ndim() != 1) throw InputError("times", fmt::format("an array of {} dimensions", times.ndim()),
+                 if (times.ndim() != 1) throw InputError(Key::times, fmt::format("an array of {} dimensions", times.ndim()),
                                                          "give a sequence of times in seconds");
                  const std::vector<double> ts(times.data(), times.data() + times.size());
                  const auto count = static_cast<py::ssize_t>(ts.size());

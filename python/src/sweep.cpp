@@ -75,7 +75,7 @@ void bind_sweep(py::module_& m) {
                   lines.reserve(indices.size());
                   for (std::size_t index : indices) {
                       if (index >= s.grid.size())
-                          throw InputError("row", fmt::format("{}", index), fmt::format("the sweep has {} rows", s.grid.size()));
+                          throw InputError(Key::row, fmt::format("{}", index), fmt::format("the sweep has {} rows", s.grid.size()));
                       check_stop(ex);
                       if (!stop.is_none()) {
                           py::gil_scoped_acquire acquire;

@@ -59,6 +59,11 @@ Json contact_json(const Contact& c) {
             {"tolerance", c.tolerance}};
 }
 
+Json overlap_json(const std::optional<Overlap>& o) {
+    if (!o) return nullptr;
+    return {{"benches", {o->bench_a, o->bench_b}}, {"depth", o->depth}};
+}
+
 Json collide_answer(const CollideAnswer& r, bool with_handles) {
     const std::optional<Contact>& c = r.contact;
     Json answer = c ? contact_json(*c)
@@ -67,6 +72,7 @@ Json collide_answer(const CollideAnswer& r, bool with_handles) {
     answer["evaluations"] = c ? Json(c->steps) : Json(nullptr);
     add_window(answer, r.window);
     answer["jam"] = jam_json(r.jam);
+    answer["overlap_at_start"] = overlap_json(r.overlap);
     if (with_handles) {
         Json handles = c ? Json::array() : Json(nullptr);
         if (c)
@@ -138,7 +144,10 @@ Json turnaround_answer(const SCurve& d, const std::optional<Jam>& design_jam, co
 }
 
 Json max_speed_answer(const MaxSpeed& m, double limit) {
-    Json answer = {{"max_head_speed", m.max_head_speed},
+    // A window cut short by the end of the valid motion has no largest speed: the dragon cannot
+    // make the turn at any speed (the motion's validity does not depend on it), and the largest
+    // speed over the part before the jam would answer another question.
+    Json answer = {{"max_head_speed", m.jam ? Json(nullptr) : Json(m.max_head_speed)},
                    {"ratio", m.unbounded ? Json(nullptr) : Json(m.ratio)},
                    {"unbounded", m.unbounded},
                    {"handle", m.handle},

@@ -14,6 +14,13 @@ namespace dragon {
 
 namespace {
 
+// The chain already collides where collide's search starts: a verdict the row reports in place
+// of an answer (run_measure).
+struct CollidesAtStart {
+    Overlap overlap;
+    Along start;
+};
+
 const std::vector<std::string> kJamKeys = {"jam.time",  "jam.travel", "jam.handle",   "jam.kind",
                                            "jam.ahead", "jam.point",  "jam.tolerance"};
 
@@ -48,8 +55,11 @@ void leaves(const Json& v, const std::string& prefix, std::vector<std::string>& 
 Json collide_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
     InlineExecutor here(options.stop_source);
     const CollideAnswer search = collide(Simulation(s), options.window(s.path.kind), &here);
+    if (search.overlap) throw CollidesAtStart{*search.overlap, search.asked.from};
     if (search.jam) jam = "no contact before the end of the valid motion: " + jam_sentence(*search.jam);
-    return collide_answer(search, false);
+    Json answer = collide_answer(search, false);
+    answer.erase("overlap_at_start");  // always null here: an overlap is the row's verdict instead
+    return answer;
 }
 
 Json min_pitch_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
@@ -119,7 +129,7 @@ const std::vector<MeasureInfo>& sweep_measures() {
 const MeasureInfo& find_measure(const std::string& name) {
     for (const MeasureInfo& m : sweep_measures())
         if (name == m.name) return m;
-    throw InputError("measure", name.empty() ? "''" : name, "use collide, min-pitch, turnaround or max-speed");
+    throw InputError(Key::measure, name.empty() ? "''" : name, "use collide, min-pitch, turnaround or max-speed");
 }
 
 RunWindow MeasureOptions::window(PathKind kind) const {
@@ -130,21 +140,29 @@ RunWindow MeasureOptions::window(PathKind kind) const {
 }
 
 double PitchBound::at(const Scenario& s) const {
+    if (automatic) {
+        const PitchRange r = default_pitch_range(s);
+        return upper ? r.hi : r.lo;
+    }
     if (!above_width) return offset;
     return std::strtod(fmt::format("{:.12g}", s.bench.width + offset).c_str(), nullptr);
 }
 
-std::string PitchBound::text() const { return above_width ? fmt::format("width+{}", offset) : fmt::format("{}", offset); }
+std::string PitchBound::text() const {
+    if (automatic) return "auto";
+    return above_width ? fmt::format("width+{}", offset) : fmt::format("{}", offset);
+}
 
-PitchBound parse_pitch_bound(const std::string& flag, const std::string& text) {
+PitchBound parse_pitch_bound(const std::string& flag, const std::string& text, bool upper) {
+    if (text == "auto") return {0.0, false, true, upper};
     const bool relative = text.rfind("width+", 0) == 0;
     const std::string number = relative ? text.substr(6) : text;
     char* end = nullptr;
     const double v = std::strtod(number.c_str(), &end);
     if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(v) || (relative && v < 0.0))
         throw InputError(fmt::format("{} {} is not allowed: give a pitch in m (0.35), or the bench width plus one "
-                                     "(width+0.05) when the sweep varies the width", flag, text));
-    return {v, relative};
+                                     "(width+0.05) when the sweep varies the width, or auto (each scenario's default range)", flag, text));
+    return {v, relative, false, upper};
 }
 
 MeasureResult run_measure(const MeasureInfo& m, const Scenario& scenario, const MeasureOptions& options) {
@@ -157,16 +175,9 @@ MeasureResult run_measure(const MeasureInfo& m, const Scenario& scenario, const 
         std::string jam;
         out.answer = m.answer(s, options, jam);
         if (!jam.empty()) out.state = State::jam, out.note = fmt::format("jam ({}): {}", m.name, jam);
-    } catch (const OverlapAtStart& e) {
+    } catch (const CollidesAtStart& c) {
         // The chain collides: a verdict on the scenario, as min-pitch gives it, not a refusal.
-        const std::string& start = e.value();  // "0 m" (head travel) or "420" (seconds)
-        const std::string at = start.size() > 2 && start.compare(start.size() - 2, 2, " m") == 0
-                                   ? start + " of head travel"
-                                   : "t = " + start + " s";
-        out = {State::collides, std::nullopt,
-               overlap_note_prefix(m) + fmt::format("benches {} and {} already overlap at {}, where the search "
-                                                    "starts (by {:.6f} m): their first contact is before it",
-                                                    e.bench_a, e.bench_b, at, e.depth)};
+        out = {State::collides, std::nullopt, overlap_note_prefix(m) + overlap_sentence(c.overlap, c.start)};
     } catch (const InputError& e) {
         out = {State::refused, std::nullopt, fmt::format("refused ({}): {}", m.name, e.what())};
     } catch (const Cancelled&) {

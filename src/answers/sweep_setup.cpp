@@ -53,10 +53,10 @@ void check_options(const MeasureOptions& o, const std::vector<const MeasureInfo*
     if (const auto why = grid_problem(o.grid))
         throw InputError(fmt::format("{} {} is not allowed: {}", name("grid"), error_value(o.grid), *why));
     for (const auto& [bound, option] : {std::pair{&o.lo, "lo"}, std::pair{&o.hi, "hi"}})
-        if (!bound->above_width && !(bound->offset <= kMaxPitch))
+        if (!bound->above_width && !bound->automatic && !(bound->offset <= kMaxPitch))
             throw InputError(fmt::format("{} {} is not allowed: a pitch is at most {} m", name(option),
                                          error_value(bound->offset), kMaxPitch));
-    if (!o.lo.above_width && !o.hi.above_width) {
+    if (!o.lo.above_width && !o.hi.above_width && !o.lo.automatic && !o.hi.automatic) {
         if (!(o.hi.offset > o.lo.offset))
             throw InputError(fmt::format("{} {} is not allowed with {} {}: the search needs lo < hi", name("hi"),
                                          error_value(o.hi.offset), name("lo"), error_value(o.lo.offset)));
@@ -119,8 +119,8 @@ SweepSetup make_sweep_setup(const SweepAsked& asked, const SweepWords& words,
     Scenario s = base(fixed, fmt::format("no measure of this sweep ({}) reads it", measure_names(measures)));
     s.path.kind = PathKind::spiral;
     MeasureOptions options;
-    if (asked.lo) options.lo = parse_pitch_bound(option("lo"), *asked.lo);
-    if (asked.hi) options.hi = parse_pitch_bound(option("hi"), *asked.hi);
+    if (asked.lo) options.lo = parse_pitch_bound(option("lo"), *asked.lo, false);
+    if (asked.hi) options.hi = parse_pitch_bound(option("hi"), *asked.hi, true);
     if (asked.grid) options.grid = *asked.grid;
     if (asked.limit) options.limit = *asked.limit;
     for (const auto& [given, name] : {std::pair{asked.from, "from"}, std::pair{asked.to, "to"}}) {
@@ -197,8 +197,8 @@ SweepSetup read_spec_line(const std::string& line, const std::string& file) {
         MeasureOptions options;
         const Json& o = spec.at("options");
         if (o.contains("min-pitch")) {
-            options.lo = parse_pitch_bound("lo", o["min-pitch"].at("lo").get<std::string>());
-            options.hi = parse_pitch_bound("hi", o["min-pitch"].at("hi").get<std::string>());
+            options.lo = parse_pitch_bound("lo", o["min-pitch"].at("lo").get<std::string>(), false);
+            options.hi = parse_pitch_bound("hi", o["min-pitch"].at("hi").get<std::string>(), true);
             options.grid = o["min-pitch"].at("grid").get<double>();
         }
         if (o.contains("max-speed")) options.limit = o["max-speed"].at("limit").get<double>();

@@ -44,7 +44,7 @@ void register_collide(CLI::App& app, Registry& reg) {
                     "the table's header and no rows");
     sub->add_option("--digits", opt->digits, "Decimals of every number of a .csv or .json -o (t without trailing zeros), 0 to 17 (default 6)");
     add_quiet_flag(sub, opt->quiet);
-    reg["collide"] = [opt]() {
+    reg["collide"] = [opt](Executor& ex) {
         const std::string ext = extension_of(opt->out);
         if (opt->digits && ext != ".csv" && ext != ".json")
             throw InputError(fmt::format("--digits {} is not allowed {}: it sets the decimals of a .csv or .json -o",
@@ -58,7 +58,7 @@ void register_collide(CLI::App& app, Registry& reg) {
             AtomicFile probe(opt->out);  // fail on an unwritable path before any work
         }
         const Simulation sim(s);
-        const CollideAnswer search = collide(sim, window);
+        const CollideAnswer search = collide(sim, window, &ex);
         const std::optional<Contact>& c = search.contact;
         if (!c) {
             if (!opt->out.empty()) write_no_contact(opt->out);
@@ -82,6 +82,11 @@ void register_collide(CLI::App& app, Registry& reg) {
         }
         if (opt->json) {
             print_json(collide_answer(search, true));
+        } else if (search.overlap) {
+            // The chain collided before the window: the verdict, and the benches where it starts.
+            fmt::print("the chain collides before the search starts: {}{}\n", overlap_sentence(*search.overlap, search.asked.from),
+                       search.asked.from.value > 0.0 ? " (an earlier --from finds it)" : "");
+            print_single_frame(fmt::format("handles at t = {} s", format_time(c->time)), c->frame);
         } else {
             fmt::print("first contact at t = {} s (head travel {} m): bench {} touches bench {}; head radius {:.6f} m\n",
                        format_resolved(c->time, c->tolerance), format_resolved(c->travel, c->travel_tolerance),

@@ -63,7 +63,7 @@ void register_figures(CLI::App& app, Registry& reg) {
     for (CLI::Option* o : sub->get_options())
         if (o != list && o->get_name() != "--help" && !o->get_name().empty()) o->excludes(list);
     add_quiet_flag(sub, opt->quiet);
-    reg["figures"] = [opt]() {
+    reg["figures"] = [opt](Executor&) {
         if (opt->list) {
             for (const auto& f : figure_list()) fmt::print("{:<22} {}\n", f.name, f.caption);
             return 0;

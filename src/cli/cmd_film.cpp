@@ -51,7 +51,7 @@ void register_film(CLI::App& app, Registry& reg) {
     sub->add_option("--colours", opt->colours, "GIF palette size, 2-256 (default 64)");
     add_quiet_flag(sub, opt->quiet);
 
-    reg["film"] = [opt]() {
+    reg["film"] = [opt](Executor& ex) {
         const bool poster = extension_of(opt->out) == ".png";
         if (poster && !opt->at) throw InputError("--out " + opt->out + " is a picture: give --at SECONDS, the moment of the film it shows");
         if (!poster && opt->at) {
@@ -93,6 +93,7 @@ void register_film(CLI::App& app, Registry& reg) {
         vo.width = board.film.width;
         vo.height = board.film.height;
         vo.fps = board.film.fps;
+        vo.executor = &ex;
         vo.crf = opt->crf;
         if (opt->preset) vo.preset = *opt->preset;
         if (opt->tune) vo.tune = *opt->tune;

@@ -38,10 +38,10 @@ void register_max_speed(CLI::App& app, Registry& reg) {
                        "Search up to here (default 100m)");
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
     add_quiet_flag(sub, opt->quiet);
-    reg["max-speed"] = [opt]() {
+    reg["max-speed"] = [opt](Executor& ex) {
         Scenario s = opt->scenario.resolve();
         s.path.kind = PathKind::turnaround;
-        const MaxSpeed m = max_head_speed(s, opt->limit, opt->window.resolve(kTurnaroundWindow));
+        const MaxSpeed m = max_head_speed(s, opt->limit, opt->window.resolve(kTurnaroundWindow), &ex);
         if (opt->json) {
             print_json(max_speed_answer(m, opt->limit));
             return 0;
@@ -50,6 +50,15 @@ void register_max_speed(CLI::App& app, Registry& reg) {
             fmt::print("No head speed keeps every handle at or under {} m/s: {}\n", opt->limit, jam_sentence(*m.jam));
             fmt::print("  as that moment nears, handle {}'s speed grows without bound, whatever the head's speed\n",
                        m.jam->handle);
+            return 0;
+        }
+        if (m.jam) {
+            // Cut short by the end of the valid motion: no speed makes the turn, so no headline speed.
+            fmt::print("No head speed makes this turn: the dragon cannot follow the turnaround path through the "
+                       "window at any speed: {}\n", jam_sentence(*m.jam));
+            fmt::print("  (up to there, the fastest handle is {:.9f} times the head's speed, handle {} at t = {:.6f} s; "
+                       "the largest head speed asked for is not defined)\n", m.ratio, m.handle, m.time);
+            fmt::print("{}", window_cuts(m.window, "the search"));
             return 0;
         }
         fmt::print("Largest head speed with every handle at or under {} m/s: {} m/s\n", opt->limit,

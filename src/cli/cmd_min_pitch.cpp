@@ -12,6 +12,7 @@
 #include "wording.hpp"
 #include "status.hpp"
 #include "dragon/analyses.hpp"
+#include "dragon/contest.hpp"
 
 namespace dragon::cli {
 
@@ -28,7 +29,8 @@ std::string lower_lo_advice(const MinPitch& m) {
 
 struct MinPitchOptions {
     ScenarioFlags scenario;
-    double lo = 0.35, hi = 0.55, grid = kDefaultPitchGrid;
+    std::optional<double> lo, hi;  // unset: the scenario's default range (pitch_search_range)
+    double grid = kDefaultPitchGrid;
     bool json = false;
     bool quiet = false;
 };
@@ -39,20 +41,29 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
     CLI::App* sub = app.add_subcommand(
         "min-pitch", "Q3: the smallest pitch with which the head reaches the turning space collision-free");
     opt->scenario.add_to(sub, ScenarioUse::pitch_search());
-    sub->add_option("--lo", opt->lo, "Smallest pitch searched, m (default 0.35)");
-    sub->add_option("--hi", opt->hi, "Largest pitch searched, m (default 0.55)");
+    sub->add_option("--lo", opt->lo, "Smallest pitch searched, m (default 0.35, or just above the smallest "
+                                     "pitch this dragon can use)");
+    sub->add_option("--hi", opt->hi, "Largest pitch searched, m (default 0.55, or 1.5 times --lo's default)");
     sub->add_option("--grid", opt->grid,
                     "Pitch spacing of the first scan, m (default 0.0025); windows narrower than this may pass unseen");
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
     add_quiet_flag(sub, opt->quiet);
-    reg["min-pitch"] = [opt]() {
+    reg["min-pitch"] = [opt](Executor& ex) {
         const Scenario s = opt->scenario.resolve();
+        const PitchRange range = pitch_search_range(s, opt->lo, opt->hi);
+        // Said before it starts, terminal or not: a search many times the contest's takes minutes.
+        if (const double steps = pitch_grid_steps(range.lo, range.hi, opt->grid);
+            steps > kCostlyPitchGridSteps && steps <= kMaxPitchGridSteps && !opt->quiet)
+            fmt::print(stderr, "dragon: note: {:.0f} pitches to scan over [{}, {}] m on a {} m grid, {:.0f} times the "
+                               "contest's search: this may take minutes (a coarser --grid or a narrower --lo/--hi is "
+                               "faster)\n", steps, range.lo, range.hi, opt->grid, steps / 80.0);
         const MinPitch m = [&] {
             ProgressLine progress("pitches", opt->quiet);  // erased before the answer is printed
             dragon::MinPitchOptions options;
             options.grid = opt->grid;
+            options.executor = &ex;
             options.progress = [&progress](std::int64_t done, std::int64_t total) { progress.update(done, total); };
-            return min_pitch(s, opt->lo, opt->hi, options);
+            return min_pitch(s, range.lo, range.hi, options);
         }();
         if (opt->json) {
             print_json(min_pitch_answer(m, s.path.turn_radius));
@@ -69,6 +80,7 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
         else
             fmt::print("minimum pitch: {:.10f} m (head reaches radius {} m with no collision on the way)\n",
                        m.pitch, s.path.turn_radius);
+        if (!range.moved.empty()) fmt::print("  searched {}..{} m: {}\n", m.search_lo, m.search_hi, range.moved);
         for (const PitchInterval& i : m.intervals)
             fmt::print("  [{:.10f}, {:.10f}] m  {}\n", i.lo, i.hi, i.feasible ? "collision-free" : "collides");
         if (m.jam)

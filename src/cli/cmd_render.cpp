@@ -52,7 +52,7 @@ void register_render(CLI::App& app, Registry& reg) {
     opt->look.add_to(sub);
     opt->print.add_to(sub);
     add_quiet_flag(sub, opt->quiet);
-    reg["render"] = [opt]() {
+    reg["render"] = [opt](Executor&) {
         const std::string ext = extension_of(opt->out);
         if (ext != ".png" && ext != ".svg" && ext != ".pdf")
             throw InputError(fmt::format("--out {} has extension '{}': use .png, .svg or .pdf", opt->out, ext));

@@ -44,7 +44,7 @@ void register_simulate(CLI::App& app, Registry& reg) {
                     "CSV on stdout if omitted");
     sub->add_option("--digits", opt->digits, "Decimals of every number in CSV and JSON (t without trailing zeros), 0 to 17 (default 6)");
     add_quiet_flag(sub, opt->quiet);
-    reg["simulate"] = [opt]() {
+    reg["simulate"] = [opt](Executor& ex) {
         const std::string ext = opt->out.empty() ? ".csv" : extension_of(opt->out);
         if (!opt->out.empty() && ext != ".csv" && ext != ".json" && ext != ".xlsx")
             throw InputError(fmt::format("--out {} has extension '{}': use .csv, .json or .xlsx", opt->out, ext));
@@ -59,12 +59,13 @@ void register_simulate(CLI::App& app, Registry& reg) {
             turn ? kTurnaroundWindow : RunWindow{Along::metres(0.0), Along::metres(300.0)});
         if (!opt->out.empty()) AtomicFile probe(opt->out);  // an unwritable path fails here, before any work
         const Simulation sim(s);
-        require_valid_at(sim, window.from, "time range start");
-        require_valid_at(sim, window.to, "time range end");
+        require_valid_at(sim, window.from, Key::from);
+        require_valid_at(sim, window.to, Key::to);
         const double t0 = window.from.time(s.head_speed), t1 = window.to.time(s.head_speed);
-        const std::vector<Frame> frames = simulate_table(sim, t0, t1, opt->step);
+        const std::vector<Frame> frames = simulate_table(sim, t0, t1, opt->step, &ex);
+        require_distinct_times(frames, digits, ext == ".xlsx");  // no two rows labelled with one moment
         // Rows past the first contact show benches lying across each other: said on stderr.
-        const CollideAnswer contact = first_contact_covering(sim, t0, t1);
+        const CollideAnswer contact = first_contact_covering(sim, t0, t1, &ex);
         if (const std::optional<Contact>& c = contact.contact; c && !frames.empty() && frames.back().time > c->time)
             fmt::print(stderr, "dragon: note: rows {} t = {} s are past the first contact (bench {} touches bench "
                                "{}): from there on benches overlap\n", contact.overlapping ? "from" : "after",

@@ -95,7 +95,7 @@ void register_solve(CLI::App& app, Registry& reg) {
     opt->window.add_to(sub, "Q4's table and Q5's search from here (default -100m: 100 s before the turn at 1 m/s)",
                        "Q4's table and Q5's search up to here (default 100m)");
     add_quiet_flag(sub, opt->quiet);
-    reg["solve"] = [opt]() {
+    reg["solve"] = [opt](Executor& ex) {
         const std::set<std::string> all{"q1", "q2", "q3", "q4", "q5"};
         ContestOptions contest;
         if (!opt->only.empty()) contest.questions.clear();
@@ -144,6 +144,7 @@ void register_solve(CLI::App& app, Registry& reg) {
         // (Nothing is written on stderr meanwhile: libxlsxwriter's closing mutes it.)
         if (result1) contest.on_q1_table = [result1](const std::vector<Frame>& t) { write_result_xlsx(t, *result1, kWorkbooks); };
         if (result4) contest.on_q4_table = [result4](const std::vector<Frame>& t) { write_result_xlsx(t, *result4, kWorkbooks); };
+        contest.executor = &ex;
         const ContestAnswers a = solve_contest(s, contest);
 
         // Q1: coiling in.
@@ -158,7 +159,11 @@ void register_solve(CLI::App& app, Registry& reg) {
 
         // Q2: the termination time.
         if (const std::optional<CollideAnswer>& q2 = a.q2) {
-            if (const std::optional<Contact>& c = q2->contact) {
+            if (q2->overlap) {
+                fmt::print("\nQ2: the chain collides before it moves: {}\n",
+                           overlap_sentence(*q2->overlap, q2->asked.from));
+                print_single_frame("", q2->contact->frame);
+            } else if (const std::optional<Contact>& c = q2->contact) {
                 fmt::print("\nQ2: benches {} and {} touch at t = {} s (head radius {:.6f} m)\n", c->bench_a,
                            c->bench_b, format_resolved(c->time, c->tolerance), c->head_radius);
                 print_single_frame("", c->frame);
@@ -212,10 +217,12 @@ void register_solve(CLI::App& app, Registry& reg) {
             if (v.unbounded)
                 fmt::print("\nQ5: no head speed keeps every handle at or under {} m/s: {}\n", contest.speed_limit,
                            jam_sentence(*v.jam));
+            else if (v.jam)
+                fmt::print("\nQ5: no head speed makes this turn: the dragon cannot follow the turnaround path "
+                           "through the window at any speed: {}\n", jam_sentence(*v.jam));
             else
-                fmt::print("\nQ5: largest head speed {:.6f} m/s (speed ratio {:.6f} at handle {}, t = {:.6f} s){}\n",
-                           v.max_head_speed, v.ratio, v.handle, v.time,
-                           v.jam ? "; searched only up to the end of the valid motion: " + jam_sentence(*v.jam) : "");
+                fmt::print("\nQ5: largest head speed {:.6f} m/s (speed ratio {:.6f} at handle {}, t = {:.6f} s)\n",
+                           v.max_head_speed, v.ratio, v.handle, v.time);
         }
         write_text_file(*summary_json, json_text(contest_summary(a, contest), 2) + "\n");
         std::vector<AtomicFile*> set;

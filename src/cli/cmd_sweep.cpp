@@ -86,27 +86,30 @@ int run_merge(const SweepOptions& opt) {
 // of them ran for ten minutes without a row).
 constexpr int kWorkersPerCore = 4;
 
-// The workers the sweep runs on: --workers, capped at the scenarios of this run and at
-// kWorkersPerCore a core, with a note when the cap takes some away; else one per core.
-void set_workers(const std::optional<int>& asked, std::size_t scenarios, bool quiet) {
-    if (!asked) return;
+// How many workers the sweep runs on: --workers, capped at the scenarios of this run and at
+// kWorkersPerCore a core, with a note when the cap takes some away; else 0 (the tool's pool).
+int sweep_workers(const std::optional<int>& asked, std::size_t scenarios, bool quiet) {
+    if (!asked) return 0;
     if (*asked < 1) throw InputError(fmt::format("--workers {} is not allowed: at least 1", *asked));
-    const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    const int cores = dragon::cores();
     const int most = static_cast<int>(std::min<std::size_t>(std::max<std::size_t>(scenarios, 1),
                                                             static_cast<std::size_t>(kWorkersPerCore * cores)));
     const int workers = std::min(*asked, most);
     if (workers < *asked && !quiet)
         fmt::print(stderr, "dragon: note: --workers {}: {} run at once (at most one per scenario, {} here, and {} per "
                            "core, {} here)\n", *asked, workers, scenarios, kWorkersPerCore, kWorkersPerCore * cores);
-    set_default_workers(workers);
+    return workers;
 }
 
-int run(SweepOptions& opt) {
+int run(SweepOptions& opt, Executor& tool_pool) {
     if (opt.merge->parsed()) return run_merge(opt);
     if (opt.workers && *opt.workers < 1)
         throw InputError(fmt::format("--workers {} is not allowed: at least 1", *opt.workers));
     const SweepSetup setup = make_setup(opt.request, opt.scenario);
-    set_workers(opt.workers, setup.shard.size(setup.grid.size()), opt.output.quiet);
+    const int workers = sweep_workers(opt.workers, setup.shard.size(setup.grid.size()), opt.output.quiet);
+    std::optional<ThreadPool> own_pool;  // --workers: a pool of that size for this sweep
+    if (workers > 0) own_pool.emplace(workers);
+    Executor& ex = own_pool ? static_cast<Executor&>(*own_pool) : tool_pool;
     check_output(opt.output);
     const std::optional<PrintSize> print = plot_print(opt.print, opt.plot);
     const Language language = parse_language(opt.lang);
@@ -117,7 +120,7 @@ int run(SweepOptions& opt) {
     // The map's values only when a map is asked for: a row is otherwise never held.
     std::optional<MapCollector> maps;
     if (!opt.plot.empty()) maps.emplace(setup);
-    const SweepTally t = run_rows(setup, opt.output, [&](const std::string& row) {
+    const SweepTally t = run_rows(setup, opt.output, ex, [&](const std::string& row) {
         if (maps) maps->add(row);
     });
     if (!opt.output.out.empty())
@@ -153,8 +156,8 @@ void register_sweep(CLI::App& app, Registry& reg) {
         ->delimiter(',')
         ->allow_extra_args(false);
     opt->scenario.add_to(sub, ScenarioUse::both_paths("no measure of this sweep reads it"));
-    sub->add_option("--lo", opt->request.lo, "min-pitch: smallest pitch searched, m, or width+X (default 0.35)");
-    sub->add_option("--hi", opt->request.hi, "min-pitch: largest pitch searched, m, or width+X (default 0.55)");
+    sub->add_option("--lo", opt->request.lo, "min-pitch: smallest pitch searched, m, width+X, or auto (default: each scenario's own, as min-pitch searches it)");
+    sub->add_option("--hi", opt->request.hi, "min-pitch: largest pitch searched, m, width+X, or auto (default: each scenario's own)");
     sub->add_option("--grid", opt->request.grid, "min-pitch: pitch spacing of the first scan, m (default 0.0025)");
     sub->add_option("--limit", opt->request.limit, "max-speed: handle speed limit, m/s (default 2)");
     sub->add_option("--from", opt->request.from,
@@ -186,7 +189,7 @@ void register_sweep(CLI::App& app, Registry& reg) {
     opt->merge_print.add_to(opt->merge);
     add_language_flag(opt->merge, opt->merge_lang);
     add_quiet_flag(opt->merge, opt->merge_quiet);
-    reg["sweep"] = [opt]() { return run(*opt); };
+    reg["sweep"] = [opt](Executor& ex) { return run(*opt, ex); };
 }
 
 }  // namespace dragon::cli

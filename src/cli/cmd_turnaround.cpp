@@ -102,7 +102,7 @@ void register_turnaround(CLI::App& app, Registry& reg) {
     opt->window.from_option()->excludes(skip);
     opt->window.to_option()->excludes(skip);
     add_quiet_flag(sub, opt->quiet);
-    reg["turnaround"] = [opt]() {
+    reg["turnaround"] = [opt](Executor& ex) {
         Scenario s = opt->scenario.resolve();
         s.path.kind = PathKind::turnaround;
         if (!opt->out.empty() && extension_of(opt->out) != ".csv")
@@ -115,7 +115,7 @@ void register_turnaround(CLI::App& app, Registry& reg) {
         if (!opt->skip_clearance) {
             ProgressLine progress("samples", opt->quiet);  // long chains and fast heads take seconds
             clear = min_clearance(s, window,
-                                  [&progress](std::int64_t done, std::int64_t total) { progress.update(done, total); });
+                                  [&progress](std::int64_t done, std::int64_t total) { progress.update(done, total); }, &ex);
         }
         if (!opt->out.empty()) write_study_csv(st, opt->out);
         if (opt->json) print_json(turnaround_answer(st.design, st.design_jam, clear, &st));

@@ -92,7 +92,7 @@ void register_video(CLI::App& app, Registry& reg) {
     sub->add_flag("--no-inset", opt->no_inset, "Leave out the small whole-dragon picture of a followed or zoomed view");
     add_quiet_flag(sub, opt->quiet);
 
-    reg["video"] = [opt, sub]() {
+    reg["video"] = [opt, sub](Executor& ex) {
         // Everything that can be checked without simulating first, so bad options fail at once
         // and leave no file.
         const VideoFormat format = video_format_for(opt->out);
@@ -106,6 +106,7 @@ void register_video(CLI::App& app, Registry& reg) {
         vo.preset = opt->preset;
         vo.tune = opt->tune;
         vo.threads = opt->threads;
+        vo.executor = &ex;
         vo.colours = opt->colours.value_or(opt->colour_by_speed ? 256 : VideoOptions{}.colours);
         validate(vo, format);
         // Options of the other formats' encoders would do nothing.

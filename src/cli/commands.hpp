@@ -8,11 +8,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include "dragon/executor.hpp"
+
 namespace dragon::cli {
 
-// Subcommand name -> what to run. A runner returns the exit code (0 on success); bad input is
-// thrown as InputError and becomes exit 2.
-using Registry = std::map<std::string, std::function<int()>>;
+// Subcommand name -> what to run, on the run's executor (the tool's pool, one worker per core,
+// made once the command line is read and joined when the run ends). A runner returns the exit
+// code (0 on success); bad input is thrown as InputError and becomes exit 2.
+using Registry = std::map<std::string, std::function<int(Executor&)>>;
 
 void register_simulate(CLI::App& app, Registry& reg);
 void register_solve(CLI::App& app, Registry& reg);
@@ -25,5 +28,6 @@ void register_figures(CLI::App& app, Registry& reg);
 void register_video(CLI::App& app, Registry& reg);
 void register_sweep(CLI::App& app, Registry& reg);
 void register_film(CLI::App& app, Registry& reg);
+void register_keys(CLI::App& app, Registry& reg);
 
 }  // namespace dragon::cli

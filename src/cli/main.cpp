@@ -15,6 +15,7 @@
 #include "kill_cleanup.hpp"
 #include "status.hpp"
 #include "dragon/atomic_file.hpp"
+#include "dragon/executor.hpp"
 #include "dragon/input_file.hpp"
 #include "dragon/scenario.hpp"
 
@@ -60,6 +61,7 @@ int main(int argc, char** argv) {
     cli::register_video(app, reg);
     cli::register_film(app, reg);
     cli::register_sweep(app, reg);
+    cli::register_keys(app, reg);
 
     if (const std::optional<int> done = cli::parse_command_line(app, argc, argv))
         return stdout_intact() ? *done : stdout_failed(errno);
@@ -70,7 +72,8 @@ int main(int argc, char** argv) {
         // one of the files it reads.
         RunOutputs outputs;
         const std::string name = app.get_subcommands().front()->get_name();
-        code = reg.at(name)();
+        ThreadPool pool;  // the run's workers, one per core, made for this run and joined with it
+        code = reg.at(name)(pool);
         if (!stdout_intact()) return stdout_failed(errno);
         if (code == 0) {
             outputs.commit();

@@ -126,7 +126,8 @@ std::size_t rewrite_without(const SweepSetup& setup, const std::string& source, 
 
 }  // namespace
 
-SweepTally run_rows(const SweepSetup& setup, const SweepOutput& o, const std::function<void(const std::string&)>& on_row) {
+SweepTally run_rows(const SweepSetup& setup, const SweepOutput& o, Executor& executor,
+                    const std::function<void(const std::string&)>& on_row) {
     const std::vector<std::string> preamble = {spec_line(setup), csv_line(header(setup))};
     SweepTally tally;
     tally.scenarios = setup.shard.size(setup.grid.size());
@@ -165,7 +166,7 @@ SweepTally run_rows(const SweepSetup& setup, const SweepOutput& o, const std::fu
     }
     ProgressLine progress("scenarios", o.quiet);
     run_sweep<SweepRow>(
-        setup.grid, setup.shard, done, default_executor(),
+        setup.grid, setup.shard, done, executor,
         [&](std::size_t index, int) { return make_row(setup, index); },
         [&](std::size_t, SweepRow&& row) {
             if (log) log->append(row.csv);

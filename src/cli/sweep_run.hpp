@@ -6,6 +6,7 @@
 #include <string>
 
 #include "sweep_setup.hpp"
+#include "dragon/executor.hpp"
 
 namespace dragon::cli {
 
@@ -30,10 +31,10 @@ std::string partial_path(const std::string& out);
 // and an unfinished sweep's rows are not overwritten without --resume. Throws InputError.
 void check_output(const SweepOutput& output);
 
-// Runs the rows of the setup's shard not yet written on the default executor, each scenario's
-// measures on one worker. The rows go to <out>.partial as they finish, which is renamed to
-// <out> when all are there; `on_row` hears every row's CSV line, the resumed ones first.
-SweepTally run_rows(const SweepSetup& setup, const SweepOutput& output,
+// Runs the rows of the setup's shard not yet written on `executor`, each scenario's measures on
+// one worker. The rows go to <out>.partial as they finish, which is renamed to <out> when all
+// are there; `on_row` hears every row's CSV line, the resumed ones first.
+SweepTally run_rows(const SweepSetup& setup, const SweepOutput& output, Executor& executor,
                     const std::function<void(const std::string& csv_row)>& on_row);
 
 }  // namespace dragon::cli

@@ -32,10 +32,10 @@ void take_file_options(const SweepFile& f, const std::string& path, SweepRequest
             return v;
         };
         if (o.measure == "min-pitch" && o.key == "lo") {
-            from_file.lo = parse_pitch_bound(where + " =", o.value);
+            from_file.lo = parse_pitch_bound(where + " =", o.value, false);
             req.lo = req.lo.value_or(o.value);
         } else if (o.measure == "min-pitch" && o.key == "hi") {
-            from_file.hi = parse_pitch_bound(where + " =", o.value);
+            from_file.hi = parse_pitch_bound(where + " =", o.value, true);
             req.hi = req.hi.value_or(o.value);
         } else if (o.measure == "min-pitch" && o.key == "grid") {
             from_file.grid = number();

@@ -145,7 +145,7 @@ double Simulation::end_time() const {
     return t;
 }
 
-void Simulation::require_on_path(double t, const char* what) const {
+void Simulation::require_on_path(double t, Key what) const {
     if (!std::isfinite(t)) throw InputError(what, error_value(t), "it must be a finite time in seconds");
     if (!arc_on_path(head_arc(t))) require_arc_on_path(head_arc(t), what, error_value(t));
 }
@@ -157,7 +157,7 @@ bool Simulation::arc_on_path(double s) const {
            entry_length_ + std::abs(s) + scenario_.bench.chain_length() <= kMaxReach;
 }
 
-void Simulation::require_arc_on_path(double s, const char* what, const std::string& value) const {
+void Simulation::require_arc_on_path(double s, Key what, const std::string& value) const {
     if (s > path_->s_max()) {
         throw InputError(what, value,
                          fmt::format("the head reaches the end of the path (the spiral's centre) at t = {:.6f} s",
@@ -225,7 +225,7 @@ std::optional<Jam> Simulation::jam_before_travel(double x) const {
     return std::nullopt;
 }
 
-void Simulation::require_valid(double t, const char* what) const {
+void Simulation::require_valid(double t, Key what) const {
     if (!std::isfinite(t)) require_on_path(t, what);
     // The jam first: past the spiral's centre the dragon has stopped following its path long
     // before, and that is the limit worth naming.
@@ -236,14 +236,14 @@ void Simulation::require_valid(double t, const char* what) const {
     require_on_path(t, what);
 }
 
-void Simulation::require_valid_travel(double x, const char* what) const {
+void Simulation::require_valid_travel(double x, Key what) const {
     if (!std::isfinite(x)) throw InputError(what, error_value(x), "it must be a finite head travel in metres");
     const double on_path = std::min(x, path_->s_max() - start_arc_);
     if (const std::optional<Jam> j = jam_before_travel(on_path)) throw PastTheValidMotion(what, time_of(x), *j);
     if (!arc_on_path(start_arc_ + x)) require_arc_on_path(start_arc_ + x, what, fmt::format("{} m of head travel", x));
 }
 
-Simulation::Span Simulation::clip_to_valid(double t0, double t1, const char* from_what, const char* to_what) const {
+Simulation::Span Simulation::clip_to_valid(double t0, double t1, Key from_what, Key to_what) const {
     // A range starting past a jam (or ending before one, behind t = 0) has nothing valid in it.
     if (t0 >= 0.0) require_valid(t0, from_what);
     if (t1 <= 0.0) require_valid(t1, to_what);
@@ -259,7 +259,7 @@ Simulation::Span Simulation::clip_to_valid(double t0, double t1, const char* fro
     return span;
 }
 
-Simulation::TravelSpan Simulation::clip_travel(double x0, double x1, const char* from_what, const char* to_what) const {
+Simulation::TravelSpan Simulation::clip_travel(double x0, double x1, Key from_what, Key to_what) const {
     if (x0 >= 0.0) require_valid_travel(x0, from_what);
     if (x1 <= 0.0) require_valid_travel(x1, to_what);
     TravelSpan span{x0, x1, std::nullopt, std::nullopt};
@@ -274,10 +274,10 @@ Simulation::TravelSpan Simulation::clip_travel(double x0, double x1, const char*
     return span;
 }
 
-PastTheValidMotion::PastTheValidMotion(const char* field, double t, const Jam& j)
+PastTheValidMotion::PastTheValidMotion(Key field, double t, const Jam& j)
     : PastTheValidMotion(field, error_value(t), j) {}
 
-PastTheValidMotion::PastTheValidMotion(const char* field, const std::string& value, const Jam& j)
+PastTheValidMotion::PastTheValidMotion(Key field, const std::string& value, const Jam& j)
     : InputError(field, value,
                  fmt::format("the dragon can follow its path only {} t = {:.9f} s, where {}", j.ahead ? "until" : "from",
                              j.time, describe(j))),
@@ -294,13 +294,13 @@ std::string describe(const Jam& j) {
 }
 
 void Simulation::frame_into(double t, Frame& out) const {
-    require_valid(t, "time");
+    require_valid(t, Key::time);
     out.time = t;
     solve_chain_front(*path_, scenario_.bench, head_arc(t), scenario_.head_speed, solved_benches() + 1, out);
 }
 
 void Simulation::frame_at_travel_into(double x, Frame& out) const {
-    require_valid_travel(x, "head travel");
+    require_valid_travel(x, Key::travel);
     out.time = time_of(x);
     solve_chain_front(*path_, scenario_.bench, start_arc_ + x, scenario_.head_speed, solved_benches() + 1, out);
 }

@@ -5,19 +5,12 @@
 
 namespace dragon {
 
-namespace {
-
-std::string given_start(const RunWindow& w) {
-    return w.from.unit == Along::Unit::seconds ? error_value(w.from.value) : fmt::format("{} m", error_value(w.from.value));
+std::string overlap_sentence(const Overlap& o, const Along& start) {
+    const std::string at = start.unit == Along::Unit::metres ? fmt::format("{} m of head travel", error_value(start.value))
+                                                             : fmt::format("t = {} s", error_value(start.value));
+    return fmt::format("benches {} and {} already overlap at {}, where the search starts (by {:.6f} m): their first "
+                       "contact is before it", o.bench_a, o.bench_b, at, o.depth);
 }
-
-}  // namespace
-
-OverlapAtStart::OverlapAtStart(const std::string& start, int a, int b, double overlap)
-    : InputError("time range start", start,
-                 fmt::format("benches {} and {} already overlap there (by {:.6f} m): their first contact is before it",
-                             a, b, overlap)),
-      bench_a(a), bench_b(b), depth(overlap) {}
 
 namespace {
 
@@ -33,7 +26,11 @@ CollideAnswer search(const Simulation& sim, const RunWindow& window, Executor* e
     out.contact = first_contact_travel(sim, cut.from, cut.to, options);
     // Touching exactly where the search starts is a contact there; overlapping is not a first
     // contact: the benches met before the window.
-    if (out.contact && out.contact->travel <= cut.from) out.overlapping = clearance(out.contact->frame).distance < 0.0;
+    if (out.contact && out.contact->travel <= cut.from) {
+        const Clearance now = clearance(out.contact->frame);
+        out.overlapping = now.distance < 0.0;
+        if (out.overlapping) out.overlap = Overlap{now.bench_a, now.bench_b, -now.distance, now.point};
+    }
     // The end of the valid motion matters only where nothing touched before it.
     if (!out.contact) out.jam = cut.after;
     return out;
@@ -42,12 +39,7 @@ CollideAnswer search(const Simulation& sim, const RunWindow& window, Executor* e
 }  // namespace
 
 CollideAnswer collide(const Simulation& sim, const RunWindow& window, Executor* executor) {
-    CollideAnswer out = search(sim, window, executor);
-    if (out.overlapping) {
-        const Clearance now = clearance(out.contact->frame);
-        throw OverlapAtStart(given_start(window), now.bench_a, now.bench_b, -now.distance);
-    }
-    return out;
+    return search(sim, window, executor);
 }
 
 CollideAnswer first_contact_of_motion(const Simulation& sim, Executor* executor) {

@@ -9,10 +9,11 @@
 
 #include "motion.hpp"
 #include "dragon/collision.hpp"
+#include "dragon/constants.hpp"
 
 namespace dragon::contact {
 
-inline constexpr double kMargin = 0.7;    // broad-phase margin, m
+inline constexpr double kMargin = kBroadPhaseMargin;  // broad-phase margin, m
 inline constexpr double kMaxTravel = 2.0; // m of head travel per step; keeps the bound's drift small
 inline constexpr double kProbeGap = 2e-3; // m; below this clearance, try to bracket the contact
 

@@ -65,6 +65,14 @@ PitchRange default_pitch_range(const Scenario& s) {
     return r;
 }
 
+PitchRange pitch_search_range(const Scenario& s, std::optional<double> lo, std::optional<double> hi) {
+    PitchRange r = default_pitch_range(s);
+    if (lo && hi) r.moved.clear();
+    if (lo) r.lo = *lo;
+    if (hi) r.hi = *hi;
+    return r;
+}
+
 ContestAnswers solve_contest(const Scenario& scenario, const ContestOptions& options) {
     ContestAnswers out;
     out.scenario = scenario;
@@ -78,17 +86,17 @@ ContestAnswers solve_contest(const Scenario& scenario, const ContestOptions& opt
     if (options.asks(Question::q1) || options.asks(Question::q2)) coil_sim.emplace(coil);
     if (options.asks(Question::q4) || options.asks(Question::q5)) turn_sim.emplace(turn);
     if (options.asks(Question::q3)) {
-        out.q3_range = options.pitch_lo || options.pitch_hi ? PitchRange{} : default_pitch_range(coil);
-        if (options.pitch_lo) out.q3_range->lo = *options.pitch_lo;
-        if (options.pitch_hi) out.q3_range->hi = *options.pitch_hi;
+        out.q3_range = pitch_search_range(coil, options.pitch_lo, options.pitch_hi);
     }
 
-    // The jobs, longest first, spread over the executor's workers (work nested inside a job runs
-    // on that job's worker). Q1 needs Q2's contact to mark rows past it, so Q2 runs first in
-    // Q1's job.
+    // The jobs, longest first, spread over the executor's workers; the parallel work inside a
+    // job (Q3's pitches, Q1's frames) goes to the same workers, which take it up as they finish
+    // their own questions. Q1 needs Q2's contact to mark rows past it, so Q2 runs first in Q1's
+    // job.
     enum Job { q3, q1_q2, q4, q5, count };
-    Executor& ex = executor_or_default(options.executor);
-    InlineExecutor inside(&ex);
+    InlineExecutor serial;
+    Executor& ex = executor_or(options.executor, serial);
+    Executor* const inside = &ex;
     // A run that fails in several jobs (a full disk under two workbooks closing at once) reports
     // the first question's failure, whichever worker met its own first.
     std::array<std::exception_ptr, count> failed;
@@ -99,15 +107,15 @@ ContestAnswers solve_contest(const Scenario& scenario, const ContestOptions& opt
                     if (options.asks(Question::q3)) {
                         MinPitchOptions o;
                         o.grid = options.pitch_grid;
-                        o.executor = &inside;
+                        o.executor = inside;
                         out.q3 = min_pitch(coil, out.q3_range->lo, out.q3_range->hi, o);
                     }
                     break;
                 case q1_q2:
                     if (options.asks(Question::q1) || options.asks(Question::q2))
-                        out.q2 = first_contact_of_motion(*coil_sim, &inside);
+                        out.q2 = first_contact_of_motion(*coil_sim, inside);
                     if (options.asks(Question::q1)) {
-                        out.q1 = table_over(*coil_sim, options.q1_window, &inside);
+                        out.q1 = table_over(*coil_sim, options.q1_window, inside);
                         mark_past_contact(*out.q1, out.q2->contact);
                         if (options.on_q1_table) options.on_q1_table(out.q1->frames);
                     }
@@ -117,9 +125,9 @@ ContestAnswers solve_contest(const Scenario& scenario, const ContestOptions& opt
                     if (options.asks(Question::q4)) {
                         out.q4_design = design_s_curve(turn);
                         out.q4_jam = turnaround_jam(*turn_sim);
-                        out.q4 = table_over(*turn_sim, options.turn_window, &inside);
+                        out.q4 = table_over(*turn_sim, options.turn_window, inside);
                         ContactSearchOptions o;
-                        o.executor = &inside;
+                        o.executor = inside;
                         mark_past_contact(*out.q4, first_contact_travel(*turn_sim, out.q4->window.from_travel,
                                                                         out.q4->window.to_travel, o));
                         if (options.on_q4_table) options.on_q4_table(out.q4->frames);
@@ -127,7 +135,7 @@ ContestAnswers solve_contest(const Scenario& scenario, const ContestOptions& opt
                     break;
                 case q5:
                     if (options.asks(Question::q5))
-                        out.q5 = max_head_speed(turn, options.speed_limit, options.turn_window, &inside);
+                        out.q5 = max_head_speed(turn, options.speed_limit, options.turn_window, inside);
                     break;
                 case count: break;
             }

@@ -27,61 +27,80 @@ void StoppableExecutor::parallel_for(std::size_t count, const std::function<void
     });
 }
 
-// One job at a time: the items are claimed from an atomic counter by the calling thread (worker
-// 0) and the pool's threads (workers 1..n-1), woken by a generation number.
-struct ThreadPool::State {
-    int workers = 1;
-    std::vector<std::thread> threads;
-    std::mutex job;  // held by the caller for the whole of a parallel_for
-    std::mutex lock; // guards what follows
-    std::condition_variable wake, idle;
-    std::uint64_t generation = 0;
-    bool stop = false;
-    int busy = 0;  // pool threads not yet done with the current job
+int cores() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
+
+namespace {
+
+// One parallel_for: its items are claimed from an atomic counter by its caller and by any pool
+// thread that visits it.
+struct Job {
     const std::function<void(std::size_t, int)>* body = nullptr;
     std::size_t count = 0;
     std::atomic<std::size_t> next{0};
     std::atomic<bool> failed{false};
-    std::exception_ptr failure;
+    std::exception_ptr failure;  // the first, guarded by State::lock
+    int visitors = 0;            // pool threads inside run_items, guarded by State::lock
+};
 
-    void run_items(int worker) {
-        for (std::size_t i; !failed.load(std::memory_order_relaxed) && (i = next++) < count;) {
+// Which pool this thread belongs to and its number there: a job it starts on that pool is run
+// under its own number, so that no two threads of one job share a worker's scratch.
+thread_local const void* own_pool = nullptr;
+thread_local int own_number = 0;
+
+}  // namespace
+
+struct ThreadPool::State {
+    int workers = 1;
+    std::vector<std::thread> threads;
+    std::mutex lock;  // guards jobs, stop and every Job's failure and visitors
+    std::condition_variable wake;  // a job was posted, or the pool stops
+    std::condition_variable left;  // a visitor left a job
+    std::vector<Job*> jobs;        // posted and not yet fully claimed, newest last
+    bool stop = false;
+
+    void run_items(Job& job, int worker) {
+        for (std::size_t i; !job.failed.load(std::memory_order_relaxed) && (i = job.next++) < job.count;) {
             try {
-                (*body)(i, worker);
+                (*job.body)(i, worker);
             } catch (...) {
                 const std::lock_guard<std::mutex> hold(lock);
-                if (!failure) failure = std::current_exception();
-                failed = true;
+                if (!job.failure) job.failure = std::current_exception();
+                job.failed = true;
             }
+        }
+    }
+
+    // Takes `job` off the list of jobs with items to claim (called with `lock` held).
+    void retire(const Job* job) {
+        const auto it = std::find(jobs.begin(), jobs.end(), job);
+        if (it != jobs.end()) jobs.erase(it);
+    }
+
+    void serve(int number) {
+        own_pool = this;
+        own_number = number;
+        std::unique_lock<std::mutex> l(lock);
+        for (;;) {
+            wake.wait(l, [&] { return stop || !jobs.empty(); });
+            if (stop) return;
+            // The newest first: a job started inside another's item is the one its caller, busy
+            // in that item, waits for.
+            Job* job = jobs.back();
+            ++job->visitors;
+            l.unlock();
+            run_items(*job, number);
+            l.lock();
+            retire(job);  // every item is claimed now
+            if (--job->visitors == 0) left.notify_all();
         }
     }
 };
 
-namespace {
-// The pool whose job this thread is running, if any: a parallel_for on the same pool from inside
-// a body runs inline (waiting for the pool from one of its own workers would deadlock).
-thread_local const void* running_job_of = nullptr;
-}  // namespace
-
 ThreadPool::ThreadPool(int workers) : state_(std::make_unique<State>()) {
     State& s = *state_;
-    s.workers = workers > 0 ? workers : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    for (int k = 1; k < s.workers; ++k) {
-        s.threads.emplace_back([&s, k] {
-            running_job_of = &s;
-            std::uint64_t seen = 0;
-            std::unique_lock<std::mutex> l(s.lock);
-            for (;;) {
-                s.wake.wait(l, [&] { return s.stop || s.generation != seen; });
-                if (s.stop) return;
-                seen = s.generation;
-                l.unlock();
-                s.run_items(k);
-                l.lock();
-                if (--s.busy == 0) s.idle.notify_all();
-            }
-        });
-    }
+    s.workers = workers > 0 ? workers : cores();
+    s.threads.reserve(static_cast<std::size_t>(s.workers - 1));
+    for (int k = 1; k < s.workers; ++k) s.threads.emplace_back([&s, k] { s.serve(k); });
 }
 
 ThreadPool::~ThreadPool() {
@@ -97,51 +116,25 @@ int ThreadPool::workers() const { return state_->workers; }
 
 void ThreadPool::parallel_for(std::size_t count, const std::function<void(std::size_t, int)>& body) {
     State& s = *state_;
+    const int number = own_pool == &s ? own_number : 0;
     if (count == 0) return;
-    if (running_job_of == &s || s.threads.empty() || count == 1) {
-        for (std::size_t i = 0; i < count; ++i) body(i, 0);
+    if (s.threads.empty() || count == 1) {
+        for (std::size_t i = 0; i < count; ++i) body(i, number);
         return;
     }
-    const std::lock_guard<std::mutex> one_job(s.job);
+    Job job;
+    job.body = &body;
+    job.count = count;
     {
         const std::lock_guard<std::mutex> hold(s.lock);
-        s.body = &body;
-        s.count = count;
-        s.next = 0;
-        s.failed = false;
-        s.failure = nullptr;
-        s.busy = static_cast<int>(s.threads.size());
-        ++s.generation;
+        s.jobs.push_back(&job);
     }
     s.wake.notify_all();
-    const void* outer = running_job_of;
-    running_job_of = &s;
-    s.run_items(0);
-    running_job_of = outer;
+    s.run_items(job, number);
     std::unique_lock<std::mutex> l(s.lock);
-    s.idle.wait(l, [&] { return s.busy == 0; });
-    s.body = nullptr;
-    if (s.failure) std::rethrow_exception(s.failure);
-}
-
-namespace {
-std::mutex default_lock;
-int default_workers = 0;  // 0: one per core
-std::unique_ptr<ThreadPool> default_pool;
-}  // namespace
-
-Executor& default_executor() {
-    const std::lock_guard<std::mutex> hold(default_lock);
-    if (!default_pool) default_pool = std::make_unique<ThreadPool>(default_workers);
-    return *default_pool;
-}
-
-void set_default_workers(int workers) {
-    const std::lock_guard<std::mutex> hold(default_lock);
-    if (workers < 1) throw std::invalid_argument("set_default_workers: at least one worker");
-    if (default_pool && default_pool->workers() != workers)
-        throw std::logic_error("set_default_workers: the default executor is already running");
-    default_workers = workers;
+    s.retire(&job);  // no new visitor from here on; those inside finish the items they claimed
+    s.left.wait(l, [&] { return job.visitors == 0; });
+    if (job.failure) std::rethrow_exception(job.failure);
 }
 
 }  // namespace dragon

@@ -168,7 +168,7 @@ public:
     const ChainAngles& at(size_t k, Frame& scratch) {
         std::call_once(made_[k], [&] {
             const double t = edge_[k];
-            unit_.require_valid(t, "time");  // as a frame there would
+            unit_.require_valid(t, Key::time);  // as a frame there would
             ChainAngles& a = angles_[k];
             a.time = t;
             if (!solve_spiral_chain_angles(unit_.path(), unit_.scenario().bench, unit_.head_arc(t), a.theta)) {
@@ -220,11 +220,11 @@ std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from
                                             const ContactSearchOptions& options) {
     // Both ends within the valid motion (the range between them then is too); searched here,
     // once, so that the frames below find it known.
-    sim.require_valid_travel(x_from, "time range start");
-    sim.require_valid_travel(x_to, "time range end");
+    sim.require_valid_travel(x_from, Key::from);
+    sim.require_valid_travel(x_to, Key::to);
     const Simulation unit = sim.at_speed(1.0);
     InlineExecutor in_order(options.executor);
-    Executor& ex = options.on_step ? in_order : executor_or_default(options.executor);
+    Executor& ex = options.on_step ? in_order : executor_or(options.executor, in_order);
     const std::vector<double> edge = x_to > x_from ? stretch_edges(x_from, x_to) : std::vector<double>{x_from, x_from};
     const size_t chunks = edge.size() - 1;
     std::vector<std::optional<double>> found(chunks);  // the travel of each stretch's contact
@@ -266,8 +266,8 @@ std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from
 
 std::optional<Contact> first_contact(const Simulation& sim, double t_from, double t_to,
                                      const ContactSearchOptions& options) {
-    sim.require_valid(t_from, "time range start");
-    sim.require_valid(t_to, "time range end");
+    sim.require_valid(t_from, Key::from);
+    sim.require_valid(t_to, Key::to);
     return first_contact_travel(sim, sim.travel_within(t_from), sim.travel_within(t_to), options);
 }
 

@@ -69,7 +69,7 @@ SpeedRatio speed_ratio_at(const Path& path, const BenchSpec& spec, double head_a
 MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow& window, const Executor* executor) {
     const InlineExecutor stop(executor);
     if (!std::isfinite(limit) || limit <= 0.0)
-        throw InputError("speed limit", error_value(limit), "it must be a finite speed > 0 m/s");
+        throw InputError(Key::limit, error_value(limit), "it must be a finite speed > 0 m/s");
     Scenario s = scenario;
     s.path.kind = PathKind::turnaround;
     const Simulation sim(s);
@@ -102,7 +102,7 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
     if (s.bench.bench_count > 1) shortest = std::min(shortest, s.bench.link_length(2));
     const double samples = std::ceil((s1 - s0) * kSamplesPerLink / shortest);
     if (!(samples * s.bench.handle_count() <= kMaxHandlePositions))
-        throw InputError("time range", fmt::format("{}..{} m of head travel", cut.from, cut.to),
+        throw InputError(Key::time_range, fmt::format("{}..{} m of head travel", cut.from, cut.to),
                          fmt::format("the scan would solve {:.3g} chains of {} handles (at most {:.0e} handle "
                                      "positions); narrow it", samples, s.bench.handle_count(), kMaxHandlePositions));
     const int steps = std::max(2, static_cast<int>(samples));

@@ -38,7 +38,7 @@ constexpr int kSectionPoints = 3;
 double start_radius(double pitch, double start_turn) { return Spiral(pitch).b() * kTwoPi * start_turn; }
 
 // The error of a pitch whose run cannot start: the head would start inside the turning space.
-InputError starts_inside(const std::string& field, double pitch, double start_turn, double turn_radius) {
+InputError starts_inside(Key field, double pitch, double start_turn, double turn_radius) {
     return InputError(field, error_value(pitch),
                       fmt::format("it puts the head's start (radius {:.4f} m) inside the turning space (radius {} m); "
                                   "a pitch above {} m starts the head outside it",
@@ -55,7 +55,7 @@ BoundaryRun run_inline(Scenario s, double pitch, const Executor* outer) {
     s.path.pitch = pitch;
     const Simulation sim(s);
     if (start_radius(pitch, s.path.start_turn) <= s.path.turn_radius)
-        throw starts_inside("pitch", pitch, s.path.start_turn, s.path.turn_radius);
+        throw starts_inside(Key::pitch, pitch, s.path.start_turn, s.path.turn_radius);
     const double t_end = boundary_time(sim);
     BoundaryRun run;
     run.jam = sim.jam_before(t_end);
@@ -214,9 +214,12 @@ double refine_cut(const Scenario& s, Executor& ex, double a, double b, const Pro
 
 // For the contest's dragon, a 1 mm scan of 0.35..0.55 m (tests) and a 0.1 mm one (README) find
 // no window the default grid misses.
+double pitch_grid_steps(double lo, double hi, double grid) { return std::ceil((hi - lo) / grid * (1.0 - 1e-12)); }
+
 MinPitch min_pitch(const Scenario& scenario, double lo, double hi, const MinPitchOptions& options) {
     const double grid = options.grid;
-    Executor& ex = executor_or_default(options.executor);
+    InlineExecutor serial;
+    Executor& ex = executor_or(options.executor, serial);
     // What every run reads but the pitch, which the search sets.
     validate(scenario, value::bench | value::head_speed | value::start_turn | value::turn_radius);
     // Whether a run collides depends on the head's travel, not its speed: the runs go at 1 m/s
@@ -225,7 +228,7 @@ MinPitch min_pitch(const Scenario& scenario, double lo, double hi, const MinPitc
     s.head_speed = 1.0;
     constexpr double kMaxPitch = 1e3;  // m, the largest pitch validate() allows
     if (!(hi <= kMaxPitch))
-        throw InputError("pitch search range end", error_value(hi), fmt::format("a pitch is at most {} m", kMaxPitch));
+        throw InputError(Key::hi, error_value(hi), fmt::format("a pitch is at most {} m", kMaxPitch));
     if (!(lo > s.bench.width) || !(hi > lo))
         throw InputError(fmt::format("pitch search range [{}, {}] is not allowed: it needs width {} < lo < hi",
                                      lo, hi, s.bench.width));
@@ -233,13 +236,12 @@ MinPitch min_pitch(const Scenario& scenario, double lo, double hi, const MinPitc
     // start's radius grows with the pitch), so a range starting there holds no pitch that cannot start.
     const double lowest = std::max(s.bench.width, s.path.turn_radius / s.path.start_turn);
     if (start_radius(lo, s.path.start_turn) <= s.path.turn_radius)
-        throw starts_inside("pitch search range start", lo, s.path.start_turn, s.path.turn_radius);
+        throw starts_inside(Key::lo, lo, s.path.start_turn, s.path.turn_radius);
     if (!(grid > 0.0) || !std::isfinite(grid))
-        throw InputError("pitch grid", error_value(grid), "give a pitch spacing above 0, in m");
-    // Grid steps: a range that is a whole number of spacings up to rounding gets that number.
-    const double steps = std::ceil((hi - lo) / grid * (1.0 - 1e-12));
+        throw InputError(Key::grid, error_value(grid), "give a pitch spacing above 0, in m");
+    const double steps = pitch_grid_steps(lo, hi, grid);
     if (steps > kMaxPitchGridSteps)
-        throw InputError("pitch grid", error_value(grid),
+        throw InputError(Key::grid, error_value(grid),
                          fmt::format("it makes {:.3g} grid steps over [{}, {}]; at most {} (a grid of at least {:.2g} m)",
                                      steps, lo, hi, kMaxPitchGridSteps, (hi - lo) / kMaxPitchGridSteps));
     MinPitch out{};

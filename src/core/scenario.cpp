@@ -16,12 +16,22 @@ namespace dragon {
 
 namespace {
 
-// A rule between values, or on one, failed: the message, and which values it involves.
-[[noreturn]] void refuse(ScenarioValues involved, const std::string& what) { throw ScenarioError(what, involved); }
+// A rule between values, or on one, failed: the value the sentence is about, what is allowed,
+// the sentence, and which values the rule involves.
+[[noreturn]] void refuse(ScenarioValues involved, Key key, std::string value, std::string allowed,
+                         const std::string& what) {
+    throw ScenarioError(key, std::move(value), std::move(allowed), what, involved);
+}
 
-void require_positive(ScenarioValues v, const char* name, double x) {
-    if (!std::isfinite(x) || x <= 0.0)
-        refuse(v, fmt::format("{} = {} is not allowed: it must be a finite number > 0", name, x));
+// The usual sentence: "{words} = {value} is not allowed: {allowed}".
+[[noreturn]] void refuse_value(ScenarioValues v, double x, const std::string& allowed) {
+    const Key key = scenario_key(v);
+    const std::string shown = error_value(x);
+    refuse(v, key, shown, allowed, fmt::format("{} = {} is not allowed: {}", key_info(key).words, shown, allowed));
+}
+
+void require_positive(ScenarioValues v, double x) {
+    if (!std::isfinite(x) || x <= 0.0) refuse_value(v, x, "it must be a finite number > 0");
 }
 
 // Each value's range: wide enough for any dragon (a 1 mm toy to a 1 km parade, a snail's pace
@@ -38,11 +48,9 @@ constexpr Range kTurns{1e-3, 1e4, ""};          // start turn: theta up to 2 pi 
 constexpr Range kRatio{1e-3, 1e3, ""};          // arc ratio r1 / r2
 constexpr Range kSpeed{1e-9, 1e9, " m/s"};      // head speed: only the time scale depends on it
 
-void require_in(ScenarioValues v, const char* name, double x, Range r) {
-    require_positive(v, name, x);
-    if (!(x >= r.lo && x <= r.hi))
-        refuse(v, fmt::format("{} = {} is not allowed: it must be from {}{} to {}{}", name, x, r.lo, r.unit, r.hi,
-                              r.unit));
+void require_in(ScenarioValues v, double x, Range r) {
+    require_positive(v, x);
+    if (!(x >= r.lo && x <= r.hi)) refuse_value(v, x, fmt::format("it must be from {}{} to {}{}", r.lo, r.unit, r.hi, r.unit));
 }
 
 bool has(ScenarioValues set, ScenarioValues wanted) { return (set & wanted) == wanted; }
@@ -56,6 +64,8 @@ void require_reach(const Scenario& s, bool spiral) {
     const double head = coil.length_to(spiral ? kTwoPi * s.path.start_turn : s.path.turn_radius / coil.b());
     if (!(head + b.chain_length() <= kMaxReach))
         refuse(value::bench | (spiral ? value::pitch | value::start_turn : value::turn_pitch | value::turn_radius),
+               Key::bench_count, std::to_string(b.bench_count),
+               fmt::format("at most {:.0f} m of chain and path from the spiral's centre", kMaxReach),
                fmt::format("{} {} {}: the chain would reach {:.4g} m along the spiral from its centre (the "
                            "head {:.4g} m, the chain {:.4g} m); at most {:.0f} m keeps positions to 1e-8 m",
                            b.bench_count, b.bench_count == 1 ? "bench" : "benches", spiral ? "from this start turn and pitch" : "at this turn radius and pitch",
@@ -66,12 +76,19 @@ void require_reach(const Scenario& s, bool spiral) {
 // least as wide as the pitch overlaps the next turn from the first instant.
 void require_wider_pitch(ScenarioValues pitch_value, double pitch, double width) {
     if (pitch <= width)
-        refuse(pitch_value | value::width,
+        refuse(pitch_value | value::width, scenario_key(pitch_value), error_value(pitch),
+               fmt::format("the pitch must exceed the bench width, {} m", width),
                fmt::format("pitch {} is not allowed with width {}: the pitch must exceed the bench width, or the "
                            "chain does not fit between the turns", pitch, width));
 }
 
 }  // namespace
+
+void refuse_bench_count(const std::string& given) {
+    const std::string allowed = fmt::format("the chain needs 1 to {} benches", kMaxBenchCount);
+    throw ScenarioError(Key::bench_count, given, allowed, fmt::format("bench count {} is not allowed: {}", given, allowed),
+                        value::bench_count);
+}
 
 const char* to_string(PathKind k) { return k == PathKind::spiral ? "spiral" : "turnaround"; }
 
@@ -86,29 +103,28 @@ void validate(const Scenario& s) { validate(s, values_read(s.path.kind)); }
 void validate(const Scenario& s, ScenarioValues values) {
     using namespace value;
     const BenchSpec& b = s.bench;
-    if ((values & bench_count) && (b.bench_count < 1 || b.bench_count > 1000000))
-        refuse(bench_count, fmt::format("bench count {} is not allowed: the chain needs 1 to 1000000 benches",
-                                        b.bench_count));
-    if (values & head_length) require_in(head_length, "head length", b.head_length, kLength);
-    if (values & body_length) require_in(body_length, "body length", b.body_length, kLength);
-    if (values & width) require_in(width, "width", b.width, kLength);
+    if ((values & bench_count) && (b.bench_count < 1 || b.bench_count > kMaxBenchCount))
+        refuse_bench_count(std::to_string(b.bench_count));
+    if (values & head_length) require_in(head_length, b.head_length, kLength);
+    if (values & body_length) require_in(body_length, b.body_length, kLength);
+    if (values & width) require_in(width, b.width, kLength);
     if ((values & hole_offset) && !(std::isfinite(b.hole_offset) && b.hole_offset >= 0.0))
-        refuse(hole_offset, fmt::format("hole offset = {} is not allowed: it must be a finite number >= 0 m",
-                                        b.hole_offset));
+        refuse_value(hole_offset, b.hole_offset, "it must be a finite number >= 0 m");
     if (has(values, bench_count | head_length | body_length | hole_offset)) {
         const double shortest = b.bench_count > 1 ? std::min(b.head_length, b.body_length) : b.head_length;
         // The holes at least 1 mm apart on every board: a link of zero length has no direction.
         if (!(shortest - 2.0 * b.hole_offset >= kLength.lo))
-            refuse(bench_count | head_length | body_length | hole_offset,
+            refuse(bench_count | head_length | body_length | hole_offset, Key::hole_offset, error_value(b.hole_offset),
+                   fmt::format("it must be less than half the shortest board ({} m) by at least 0.5 mm", 0.5 * shortest),
                    fmt::format("hole offset {} is not allowed: it must be less than half the shortest board "
                                "({} m) by at least 0.5 mm", b.hole_offset, 0.5 * shortest));
     }
-    if (values & head_speed) require_in(head_speed, "head speed", s.head_speed, kSpeed);
-    if (values & pitch) require_in(pitch, "pitch", s.path.pitch, kLength);
-    if (values & start_turn) require_in(start_turn, "start turn", s.path.start_turn, kTurns);
-    if (values & turn_radius) require_in(turn_radius, "turn radius", s.path.turn_radius, kLength);
-    if (values & turn_pitch) require_in(turn_pitch, "turn pitch", s.path.turn_pitch, kLength);
-    if (values & arc_ratio) require_in(arc_ratio, "arc ratio", s.path.arc_ratio, kRatio);
+    if (values & head_speed) require_in(head_speed, s.head_speed, kSpeed);
+    if (values & pitch) require_in(pitch, s.path.pitch, kLength);
+    if (values & start_turn) require_in(start_turn, s.path.start_turn, kTurns);
+    if (values & turn_radius) require_in(turn_radius, s.path.turn_radius, kLength);
+    if (values & turn_pitch) require_in(turn_pitch, s.path.turn_pitch, kLength);
+    if (values & arc_ratio) require_in(arc_ratio, s.path.arc_ratio, kRatio);
     if (has(values, bench | pitch | start_turn)) require_reach(s, true);
     if (has(values, bench | turn_pitch | turn_radius)) require_reach(s, false);
     if (has(values, pitch | width)) require_wider_pitch(pitch, s.path.pitch, b.width);

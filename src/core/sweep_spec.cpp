@@ -76,16 +76,16 @@ double rounded(double v) { return std::strtod(fmt::format("{:.12g}", v).c_str(),
 // Checks the axis's values and makes their cells. `spec` names it in messages.
 Axis finish_axis(const SweepParameter& p, std::vector<double> values, const std::string& spec) {
     if (values.size() > kMaxAxisValues)
-        throw InputError("sweep axis", shown_text(spec), fmt::format("it gives {} values, at most {}", values.size(),
+        throw InputError(Key::vary, shown_text(spec), fmt::format("it gives {} values, at most {}", values.size(),
                                      kMaxAxisValues));
     Axis a{&p, {}, {}};
     std::set<double> seen;
     for (double v : values) {
         if (v == 0.0) v = 0.0;  // -0 and 0 are one value, written "0"
         if (p.whole && (v != std::floor(v) || std::abs(v) > INT_MAX))
-            throw InputError("sweep axis", shown_text(spec), fmt::format("{} takes whole numbers, and {} is not one", p.name, v));
+            throw InputError(Key::vary, shown_text(spec), fmt::format("{} takes whole numbers, and {} is not one", p.name, v));
         if (!seen.insert(v).second)
-            throw InputError("sweep axis", shown_text(spec), fmt::format("it gives {} twice (each scenario once)", v));
+            throw InputError(Key::vary, shown_text(spec), fmt::format("it gives {} twice (each scenario once)", v));
         a.values.push_back(v);
         a.cells.push_back(fmt::format("{}", v));
     }
@@ -95,7 +95,11 @@ Axis finish_axis(const SweepParameter& p, std::vector<double> values, const std:
 }  // namespace
 
 void set_parameter(Scenario& s, const SweepParameter& p, double v) {
-    if (p.value == value::bench_count) s.bench.bench_count = static_cast<int>(v);
+    if (p.value == value::bench_count) {
+        // Checked before the narrowing: 2^31 would become a negative int.
+        if (!(v >= 1.0 && v <= kMaxBenchCount)) refuse_bench_count(error_value(v));
+        s.bench.bench_count = static_cast<int>(v);
+    }
     else *slot(s, p.value) = v;
 }
 
@@ -108,12 +112,12 @@ double get_parameter(const Scenario& s, const SweepParameter& p) {
 Axis parse_axis(const std::string& spec) {
     const std::size_t eq = spec.find('=');
     if (eq == std::string::npos)
-        throw InputError("sweep axis", shown_text(spec), "give NAME=FROM:TO:COUNT or NAME=V1,V2,... "
+        throw InputError(Key::vary, shown_text(spec), "give NAME=FROM:TO:COUNT or NAME=V1,V2,... "
                                      "(width=0.20:0.40:21, speed=0.5,1,2)");
     const std::string name = spec.substr(0, eq), values = spec.substr(eq + 1);
     const SweepParameter* p = find_sweep_parameter(name);
     if (!p)
-        throw InputError("sweep axis", shown_text(spec), fmt::format("{} is not a value a sweep can vary; use {}", name.empty() ? "''" : shown_text(name), parameter_names()));
+        throw InputError(Key::vary, shown_text(spec), fmt::format("{} is not a value a sweep can vary; use {}", name.empty() ? "''" : shown_text(name), parameter_names()));
     if (values.find(':') != std::string::npos) {
         // FROM:TO:COUNT
         std::vector<std::string> parts;
@@ -127,13 +131,13 @@ Axis parse_axis(const std::string& spec) {
         const std::optional<double> hi = parts.size() == 3 ? number(parts[1]) : std::nullopt;
         const std::optional<double> count = parts.size() == 3 ? number(parts[2]) : std::nullopt;
         if (!lo || !hi || !count)
-            throw InputError("sweep axis", shown_text(spec), "a range is FROM:TO:COUNT, three finite numbers "
+            throw InputError(Key::vary, shown_text(spec), "a range is FROM:TO:COUNT, three finite numbers "
                                          "(width=0.20:0.40:21 is 21 values from 0.20 to 0.40)");
         if (*count != std::floor(*count) || *count < 1 || *count > static_cast<double>(kMaxAxisValues))
-            throw InputError("sweep axis", shown_text(spec), fmt::format("the count {} must be a whole number from 1 to {}", shown_text(parts[2]), kMaxAxisValues));
+            throw InputError(Key::vary, shown_text(spec), fmt::format("the count {} must be a whole number from 1 to {}", shown_text(parts[2]), kMaxAxisValues));
         const auto n = static_cast<std::size_t>(*count);
         if (n == 1 && *lo != *hi)
-            throw InputError("sweep axis", shown_text(spec), fmt::format("one value cannot run from {} to {}; give a "
+            throw InputError(Key::vary, shown_text(spec), fmt::format("one value cannot run from {} to {}; give a "
                                          "count of at least 2, or the one value", shown_text(parts[0]), shown_text(parts[1])));
         std::vector<double> v(n);
         for (std::size_t k = 0; k < n; ++k)
@@ -146,7 +150,7 @@ Axis parse_axis(const std::string& spec) {
         const std::string item = values.substr(from, comma - from);
         const std::optional<double> x = number(item);
         if (!x)
-            throw InputError("sweep axis", shown_text(spec), fmt::format("'{}' is not a finite number (a list is "
+            throw InputError(Key::vary, shown_text(spec), fmt::format("'{}' is not a finite number (a list is "
                                          "V1,V2,..., a range FROM:TO:COUNT)", shown_text(item)));
         v.push_back(*x);
         if (comma == std::string::npos) break;
@@ -174,7 +178,7 @@ Shard parse_shard(const std::string& text) {
     const std::optional<std::size_t> k = slash == std::string::npos ? std::nullopt : whole(text.substr(0, slash));
     const std::optional<std::size_t> n = slash == std::string::npos ? std::nullopt : whole(text.substr(slash + 1));
     if (!k || !n || *n < 1 || *k < 1 || *k > *n)
-        throw InputError("shard", text, "give K/N, the K-th of N parts, 1 <= K <= N (2/8)");
+        throw InputError(Key::shard, text, "give K/N, the K-th of N parts, 1 <= K <= N (2/8)");
     return {*k, *n};
 }
 

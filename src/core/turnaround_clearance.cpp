@@ -75,7 +75,7 @@ RunClearance min_clearance(const Scenario& scenario, const RunWindow& window, co
     out.jam = cut.after ? cut.after : cut.before;
     const double samples = std::ceil((cut.to - cut.from) / kScanTravel);
     if (!(samples * s.bench.bench_count <= kMaxBenchChecks))
-        throw InputError("clearance time range", fmt::format("{}..{} m of head travel", cut.from, cut.to),
+        throw InputError(Key::clearance_range, fmt::format("{}..{} m of head travel", cut.from, cut.to),
                          fmt::format("the clearance scan would check {:.3g} chains of {} benches (at most {:.0e} "
                                      "bench checks); narrow it, or leave the clearance out", samples,
                                      s.bench.bench_count, kMaxBenchChecks));

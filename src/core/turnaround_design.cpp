@@ -13,7 +13,7 @@ namespace dragon {
 namespace {
 
 
-void require_positive(const char* name, double v) {
+void require_positive(Key name, double v) {
     if (!std::isfinite(v) || v <= 0.0)
         throw InputError(name, error_value(v), "it must be a finite number > 0");
 }
@@ -49,9 +49,9 @@ double arc_reach(const Vec2& c, double r, double u0, double angle) {
 // Here T_B = T_A (the coil-out spiral is the coil-in one turned by pi and travelled backwards),
 // so q2 = 0 and r1 + r2 = R sqrt(1 + theta^2) / theta exactly: the same for every ratio.
 SCurve design_s_curve(double pitch, double entry_radius, double ratio) {
-    require_positive("turn pitch", pitch);
-    require_positive("turn radius", entry_radius);
-    require_positive("arc ratio", ratio);
+    require_positive(Key::turn_pitch, pitch);
+    require_positive(Key::entry_radius, entry_radius);
+    require_positive(Key::arc_ratio, ratio);
 
     const Spiral spiral(pitch);
     SCurve d;

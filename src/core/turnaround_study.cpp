@@ -40,7 +40,7 @@ std::vector<TurnStudyRow> length_vs_entry_radius(double pitch, double turn_radiu
     std::vector<TurnStudyRow> rows;
     for (double r : entry_radii) {
         if (r > turn_radius)
-            throw InputError("entry radius", error_value(r),
+            throw InputError(Key::entry_radius, error_value(r),
                              fmt::format("the turn must start inside the turning space (radius {})", turn_radius));
         rows.push_back(row_of(design_s_curve(pitch, r, ratio), turn_radius));
     }

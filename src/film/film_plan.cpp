@@ -51,6 +51,11 @@ struct Resolver {
         if (!a.contact)
             fail(key, fmt::format("no two benches touch between t = {:g} s and {:.6f} s on this scenario", a.window.from,
                                   a.window.to));
+        // The chain collided before the motion (or the shot) starts: said as such, not as an
+        // empty stretch of film.
+        if (a.overlap)
+            fail(key, "there is no first contact to film: the chain collides before it moves: " +
+                          overlap_sentence(*a.overlap, a.asked.from));
         const Contact& c = *a.contact;
         v.contact = CollisionMark{c.bench_a, c.bench_b, c.point};
         v.contact_time = c.time;
@@ -78,8 +83,8 @@ void plan_view(const Resolver& r, const Shot& shot, ViewPlan& v, const std::stri
     v.from = r.time(v, v.spec.from, key("from"));
     v.to = r.time(v, v.spec.to, key("to"));
     if (!(v.to > v.from)) r.fail(key("to"), fmt::format("to = {:.6f} s is not after from = {:.6f} s", v.to, v.from));
-    r.named(key("from"), [&] { v.sim->require_valid(v.from, "from"); });
-    r.named(key("to"), [&] { v.sim->require_valid(v.to, "to"); });
+    r.named(key("from"), [&] { v.sim->require_valid(v.from, Key::from); });
+    r.named(key("to"), [&] { v.sim->require_valid(v.to, Key::to); });
     for (const Window* w : {&v.spec.camera.from, v.spec.camera.to ? &*v.spec.camera.to : nullptr})
         if (w && w->kind == Window::Kind::contact) r.find_contact(v, key("camera"));
     if (shot.freeze.zoom) r.find_contact(v, "freeze.zoom");

@@ -19,7 +19,7 @@ EncodeStats write_film(const Film& film, const std::string& path, VideoOptions o
 void write_film_frame(const Film& film, double at, const std::string& path, double dpi) {
     const double fps = film.settings().fps;
     if (!(at >= 0 && at < film.duration()))
-        throw InputError("film moment", error_value(at),
+        throw InputError(Key::at, error_value(at),
                          fmt::format("the film lasts {:.3f} s; give 0 up to that", film.duration()));
     const int index = std::min(film.frame_count() - 1, static_cast<int>(std::floor(at * fps + 1e-9)));
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, film.settings().width, film.settings().height));

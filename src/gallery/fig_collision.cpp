@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "dragon/analyses.hpp"
+#include "dragon/constants.hpp"
 #include "render/cairo_handles.hpp"
 #include "dragon/collision.hpp"
 #include "figure_kit.hpp"
@@ -40,7 +41,7 @@ void broad_phase(const Context& c, const std::string& path) {
     // The bench nearer the head of the touching pair (the head itself on the contest's dragon);
     // without a contact, the head.
     const int focus = hit ? hit->bench_a : 1;
-    const double margin = 1.0;  // the clearance search's margin, m
+    const double margin = kBroadPhaseMargin;  // the searches' broad-phase margin, m
     const Rect& r = f.benches[focus - 1];
     // The sweep band: the bench's bounding box on x, widened by half the margin each side (as in
     // candidate_pairs; a bench whose own band overlaps it goes on to the circle test).

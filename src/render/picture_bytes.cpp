@@ -69,7 +69,7 @@ PictureType picture_type(const std::string& name) {
     if (name == "png") return PictureType::png;
     if (name == "svg") return PictureType::svg;
     if (name == "pdf") return PictureType::pdf;
-    throw InputError("format", "'" + name + "'", "pictures are png, svg or pdf");
+    throw InputError(Key::format, "'" + name + "'", "pictures are png, svg or pdf");
 }
 
 std::string render_bytes(const Scene& scene, int w, int h, PictureType type, const Page& page) {

@@ -31,9 +31,9 @@ PictureSize parse_picture_size(std::string_view text, int max_side) {
     const std::size_t x = text.find_first_of("xX");
     const long w = x == std::string_view::npos ? -1 : digits(text, 0, x);
     const long h = x == std::string_view::npos ? -1 : digits(text, x + 1, text.size());
-    if (w < 0 || h < 0) throw InputError("picture size", std::string(text), "use WIDTHxHEIGHT in pixels, e.g. 1280x720");
+    if (w < 0 || h < 0) throw InputError(Key::size, std::string(text), "use WIDTHxHEIGHT in pixels, e.g. 1280x720");
     if (w < kMinPictureSide || h < kMinPictureSide || w > max_side || h > max_side)
-        throw InputError("picture size", std::string(text),
+        throw InputError(Key::size, std::string(text),
                          fmt::format("each side must be {}..{} px", kMinPictureSide, max_side));
     return {static_cast<int>(w), static_cast<int>(h)};
 }
@@ -42,19 +42,19 @@ PrintSize print_preset(std::string_view name) {
     if (name == "column") return {3.5, 8.0, 300.0};
     if (name == "page") return {7.0, 9.0, 300.0};
     if (name == "a4") return {16.0 / kCmPerInch, 10.5, 300.0};
-    throw InputError("print size", std::string(name), "use column (3.5 in, 8 pt), page (7 in, 9 pt) or a4 (16 cm, 10.5 pt)");
+    throw InputError(Key::print, std::string(name), "use column (3.5 in, 8 pt), page (7 in, 9 pt) or a4 (16 cm, 10.5 pt)");
 }
 
 void check_print_size(const PrintSize& s) {
     if (!(s.width_in >= kMinPrintWidthIn && s.width_in <= kMaxPrintWidthIn))
-        throw InputError("print width", error_value(s.width_in),
+        throw InputError(Key::width_in, error_value(s.width_in),
                          fmt::format("give inches, {:g}..{:g} ({:g}..{:g} cm)", kMinPrintWidthIn, kMaxPrintWidthIn,
                                      kMinPrintWidthIn * kCmPerInch, kMaxPrintWidthIn * kCmPerInch));
     if (!(s.font_pt >= kMinFontPt && s.font_pt <= kMaxFontPt))
-        throw InputError("font size", error_value(s.font_pt),
+        throw InputError(Key::font_pt, error_value(s.font_pt),
                          fmt::format("give points, {:g}..{:g}", kMinFontPt, kMaxFontPt));
     if (!(s.dpi >= kMinDpi && s.dpi <= kMaxDpi))
-        throw InputError("dpi", error_value(s.dpi), fmt::format("give pixels per inch, {:g}..{:g}", kMinDpi, kMaxDpi));
+        throw InputError(Key::dpi, error_value(s.dpi), fmt::format("give pixels per inch, {:g}..{:g}", kMinDpi, kMaxDpi));
 }
 
 PrintLayout print_layout(const PrintSize& size, double aspect, bool raster, int max_side) {

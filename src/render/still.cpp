@@ -17,7 +17,7 @@ SceneOptions still_options(SceneOptions so) {
 }
 }  // namespace
 
-Still still_at(const Simulation& sim, double t, SceneOptions so, const char* time_field) {
+Still still_at(const Simulation& sim, double t, SceneOptions so, Key time_field) {
     so = still_options(std::move(so));
     sim.require_valid(t, time_field);
     Frame frame = sim.frame(t);

@@ -169,7 +169,7 @@ void draw_sweep_map(cairo_t* cr, const SweepMap& map, double w, double h) {
 void require_map_format(const std::string& path) {
     const std::string ext = extension_of(path);
     if (ext != ".png" && ext != ".svg" && ext != ".pdf")
-        throw InputError("map file", path, "use .png, .svg or .pdf");
+        throw InputError(Key::plot, path, "use .png, .svg or .pdf");
 }
 
 void write_sweep_map(const SweepMap& map_in, const std::string& path, const std::optional<PrintSize>& print) {

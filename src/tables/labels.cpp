@@ -25,6 +25,33 @@ std::string format_time(double t, int digits) {
 
 std::string time_header(double t) { return format_time(t) + " s"; }
 
+void require_distinct_times(const std::vector<Frame>& frames, int digits, bool workbook) {
+    const auto label = [&](double t, int d) { return workbook ? time_header(t) : format_time(t, d); };
+    const auto distinct = [&](int d) {
+        for (std::size_t k = 1; k < frames.size(); ++k)
+            if (label(frames[k].time, d) == label(frames[k - 1].time, d)) return k;
+        return std::size_t{0};
+    };
+    const std::size_t k = distinct(digits);
+    if (k == 0) return;
+    const double step = frames[k].time - frames[k - 1].time;
+    const std::string same = label(frames[k].time, digits);
+    if (workbook)
+        throw InputError(Key::step, error_value(step),
+                         fmt::format("a workbook labels its columns to 6 decimals of a second, and t = {} s and t = {} "
+                                     "s would both read '{}': use a step of at least 1e-6 s, or a .csv or .json table",
+                                     error_value(frames[k - 1].time), error_value(frames[k].time), same));
+    int needed = digits + 1;
+    while (needed <= kMaxDigits && distinct(needed) != 0) ++needed;
+    throw InputError(Key::step, error_value(step),
+                     needed <= kMaxDigits
+                         ? fmt::format("the table prints times to {} decimals, and t = {} s and t = {} s would both "
+                                       "read {}: print {} decimals or more, or use a coarser step",
+                                       digits, error_value(frames[k - 1].time), error_value(frames[k].time), same, needed)
+                         : fmt::format("no table tells t = {} s from t = {} s (at most {} decimals): use a coarser step",
+                                       error_value(frames[k - 1].time), error_value(frames[k].time), kMaxDigits));
+}
+
 std::string format_fixed(double v, int digits) {
     // round6's rule while v * 10^digits is below 2^52 (where doubles still hold every integer):
     // 6 digits print what the workbooks hold.

@@ -22,7 +22,7 @@ using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
 
 void check_digits(int digits) {
     if (digits < 0 || digits > kMaxDigits)
-        throw InputError("decimals", std::to_string(digits), fmt::format("use 0 to {} decimals", kMaxDigits));
+        throw InputError(Key::digits, std::to_string(digits), fmt::format("use 0 to {} decimals", kMaxDigits));
 }
 
 // Writes the buffer out and empties it; false (errno set) if the stream took less.

@@ -179,7 +179,7 @@ void write_result_xlsx(const std::vector<Frame>& frames, AtomicFile& out, const 
     // than keeping the whole table of cells in memory.
     // A worksheet holds 16,384 columns: the labels' and one per frame.
     if (frames.size() > kMaxWorkbookFrames)
-        throw InputError("frame count", std::to_string(frames.size()),
+        throw InputError(Key::frame_count, std::to_string(frames.size()),
                          fmt::format("a worksheet holds at most {} frames (one column each)", kMaxWorkbookFrames));
     WorkbookPtr wb = new_workbook(out, options, true);
     lxw_worksheet* pos = add_sheet(wb.get(), "位置");

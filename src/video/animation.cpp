@@ -83,21 +83,21 @@ Animation::Animation(const Simulation& sim, Clip clip, double fps, SceneOptions 
     // Named in the library's terms (the CLI words them with its flags: cli/error_words.cpp).
     const std::string range = fmt::format("{}..{} s", clip.from, clip.to);
     if (!std::isfinite(clip.from) || !std::isfinite(clip.to))
-        throw InputError("time range", range, "both ends must be finite seconds");
-    if (!(clip.to > clip.from)) throw InputError("time range", range, "its end must come after its start");
+        throw InputError(Key::time_range, range, "both ends must be finite seconds");
+    if (!(clip.to > clip.from)) throw InputError(Key::time_range, range, "its end must come after its start");
     // A film never shows a moment past the end of the valid motion (nor past the path's end).
-    sim.require_valid(clip.from, "time range start");
-    sim.require_valid(clip.to, "time range end");
-    if (!(fps > 0.0) || !std::isfinite(fps)) throw InputError("frame rate", error_value(fps), "use a rate above 0");
+    sim.require_valid(clip.from, Key::from);
+    sim.require_valid(clip.to, Key::to);
+    if (!(fps > 0.0) || !std::isfinite(fps)) throw InputError(Key::fps, error_value(fps), "use a rate above 0");
     if (!(clip.speedup > 0.0) || !std::isfinite(clip.speedup))
-        throw InputError("speedup", error_value(clip.speedup), "use simulated seconds per video second above 0");
+        throw InputError(Key::speedup, error_value(clip.speedup), "use simulated seconds per video second above 0");
     if (!(clip.hold >= 0.0 && clip.hold <= max_hold))
-        throw InputError("hold", error_value(clip.hold), fmt::format("use 0..{:g} seconds", max_hold));
+        throw InputError(Key::hold, error_value(clip.hold), fmt::format("use 0..{:g} seconds", max_hold));
 
     const double steps = (clip.to - clip.from) * fps / clip.speedup;
     const double hold_frames = std::round(clip.hold * fps);
     if (steps + hold_frames + 1 > kMaxFilmFrames)
-        throw InputError("film frame count", fmt::format("{:.3g}", steps + hold_frames + 1),
+        throw InputError(Key::film_frame_count, fmt::format("{:.3g}", steps + hold_frames + 1),
                          fmt::format("a film has at most {} frames; use fewer frames per second or more simulated "
                                      "seconds per second of film", kMaxFilmFrames));
     // Tolerate float noise: 10 s at 30 fps is 300 steps, not 301.

@@ -150,7 +150,8 @@ EncodeStats encode_frames(const std::string& path, const VideoOptions& opt, int 
     };
     VideoWriter writer(path, opt);
 
-    Executor& executor = executor_or_default(opt.executor);
+    InlineExecutor serial;
+    Executor& executor = executor_or(opt.executor, serial);
     // At most 8 workers draw: more would hold more frames than they gain (the encoder is one);
     // and no more than kMaxFrameRingBytes of frames: large frames get fewer workers.
     const long frame_bytes = 4L * opt.width * opt.height;

@@ -45,12 +45,12 @@ const char* to_string(VideoFormat f) {
 void validate(const VideoOptions& opt, VideoFormat format) {
     const std::string size = fmt::format("{}x{}", opt.width, opt.height);
     if (opt.width < 2 || opt.height < 2 || opt.width > kMaxVideoSide || opt.height > kMaxVideoSide)
-        throw InputError("video size", size, fmt::format("each side must be 2 to {} pixels", kMaxVideoSide));
+        throw InputError(Key::video_size, size, fmt::format("each side must be 2 to {} pixels", kMaxVideoSide));
     if (format != VideoFormat::gif && (opt.width % 2 != 0 || opt.height % 2 != 0))
-        throw InputError("video size", size,
+        throw InputError(Key::video_size, size,
                          fmt::format("{} frames are yuv420p, which needs an even width and height", to_string(format)));
     if (!(opt.fps >= kMinVideoFps) || !(opt.fps <= kMaxVideoFps))
-        throw InputError("frame rate", error_value(opt.fps),
+        throw InputError(Key::fps, error_value(opt.fps),
                          fmt::format("use a rate from {} to {} frames per second", kMinVideoFps, kMaxVideoFps));
     if (format == VideoFormat::webm && static_cast<long>(opt.width) * opt.height > kMaxWebmPixels)
         throw InputError(fmt::format("video size {} is not allowed for webm: a VP9 frame has at most {} pixels "
@@ -65,31 +65,31 @@ void validate(const VideoOptions& opt, VideoFormat format) {
                                          size, h264_max_macroblocks, mbs));
     }
     if (opt.crf && format == VideoFormat::gif)
-        throw InputError("GIF quality (crf)", std::to_string(*opt.crf),
+        throw InputError(Key::crf_gif, std::to_string(*opt.crf),
                          "a GIF has no quality setting (VideoOptions::colours sets its palette)");
     if (opt.crf && format == VideoFormat::mp4 && (*opt.crf < 0 || *opt.crf > 51))
-        throw InputError("H.264 quality (crf)", std::to_string(*opt.crf), "use 0 (lossless) to 51");
+        throw InputError(Key::crf_h264, std::to_string(*opt.crf), "use 0 (lossless) to 51");
     if (opt.crf && format == VideoFormat::webm && (*opt.crf < 0 || *opt.crf > 63))
-        throw InputError("VP9 quality (crf)", std::to_string(*opt.crf), "use 0 to 63");
+        throw InputError(Key::crf_vp9, std::to_string(*opt.crf), "use 0 to 63");
     if (format == VideoFormat::mp4) {
         bool known = false;
         for (auto p : x264_presets) known = known || p == opt.preset;
         if (!known)
-            throw InputError("encoder preset", opt.preset, "use one of ultrafast, superfast, veryfast, faster, fast, "
+            throw InputError(Key::preset, opt.preset, "use one of ultrafast, superfast, veryfast, faster, fast, "
                                                            "medium, slow, slower, veryslow");
         known = false;
         for (auto t : x264_tunes) known = known || t == opt.tune;
         if (!known)
-            throw InputError("encoder tune", opt.tune, "use one of animation, film, stillimage, grain, psnr, ssim, "
+            throw InputError(Key::tune, opt.tune, "use one of animation, film, stillimage, grain, psnr, ssim, "
                                                        "fastdecode, zerolatency or none");
     }
     if (!(opt.keyframe_seconds > 0.0 && opt.keyframe_seconds <= max_keyframe_seconds))
-        throw InputError("key frame interval", fmt::format("{} s", opt.keyframe_seconds),
+        throw InputError(Key::keyint, fmt::format("{} s", opt.keyframe_seconds),
                          fmt::format("use more than 0, up to {:g} s", max_keyframe_seconds));
     if (opt.colours < 2 || opt.colours > 256)
-        throw InputError("palette colours", std::to_string(opt.colours), "a GIF palette has 2 to 256 colours");
+        throw InputError(Key::colours, std::to_string(opt.colours), "a GIF palette has 2 to 256 colours");
     if (opt.threads < 0 || opt.threads > 64)
-        throw InputError("encoder threads", std::to_string(opt.threads), "use 0 (automatic) to 64");
+        throw InputError(Key::threads, std::to_string(opt.threads), "use 0 (automatic) to 64");
 }
 
 }  // namespace dragon

@@ -233,7 +233,7 @@ struct VideoWriter::Impl {
 
     void finish() {
         if (finished) return;
-        if (next_pts == 0) throw InputError("frame count", "0", "a video needs at least one frame");
+        if (next_pts == 0) throw InputError(Key::frame_count, "0", "a video needs at least one frame");
         av::check(avcodec_send_frame(enc.get(), nullptr), "cannot flush the encoder");
         drain();
         av::check_file(av_write_trailer(mux.get()), file.target(), "finish");

@@ -33,4 +33,21 @@ TEST(CliDocs, EveryCommandsHelpIsDocumentedAsTheToolPrintsIt) {
     }
 }
 
+TEST(CliDocs, TheKeyReferenceIsTheLibrarysDescription) {
+    // docs/cli.md's key table is `dragon keys` as it prints now, and that lists every key of
+    // dragon/keys.hpp by the names the flags, TOML files and Python use.
+    const std::string doc = dragon_test::slurp(std::string(DRAGON_SOURCE_DIR) + "/docs/cli.md");
+    const std::smatch m = [&] {
+        std::smatch found;
+        std::regex_search(doc, found, std::regex("## Keys\\n[\\s\\S]*?```text\\n([\\s\\S]*?)```"));
+        return found;
+    }();
+    ASSERT_FALSE(m.empty()) << "docs/cli.md has no key table: run bash scripts/cli-docs.sh > docs/cli.md";
+    const auto r = dragon_test::run_dragon("keys");
+    EXPECT_EQ(r.code, 0);
+    EXPECT_EQ(m[1].str(), r.out) << "docs/cli.md's key table is out of date: run bash scripts/cli-docs.sh > docs/cli.md";
+    for (const char* flag : {"--pitch", "--speed", "--bench-count", "--hole-offset", "--arc-ratio", "--from", "--grid"})
+        EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
+}
+
 }  // namespace

@@ -26,7 +26,7 @@ Words words_of(const std::function<void()>& f) {
     try {
         f();
     } catch (const InputError& e) {
-        return {e.field(), e.value(), e.allowed(), cli::word(e)};
+        return {std::string(e.field()), e.value(), e.allowed(), cli::word(e)};
     }
     ADD_FAILURE() << "no InputError";
     return {};

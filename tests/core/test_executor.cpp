@@ -67,26 +67,81 @@ TEST(Executor, TheFirstExceptionComesBackToTheCaller) {
     EXPECT_THROW(inline_executor.parallel_for(3, [](std::size_t, int) { throw std::logic_error("x"); }), std::logic_error);
 }
 
-TEST(Executor, NestedCallsRunInline) {
+// Runs `count` items on `ex` that each wait (up to 10 s) for all of them to have started: they
+// finish at once only if they all run at the same time. Returns how many had started.
+int all_at_once(Executor& ex, int count) {
+    std::atomic<int> arrived{0};
+    ex.parallel_for(static_cast<std::size_t>(count), [&](std::size_t, int) {
+        ++arrived;
+        const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+        while (arrived.load() < count && std::chrono::steady_clock::now() < give_up) std::this_thread::yield();
+    });
+    return arrived.load();
+}
+
+TEST(Executor, NestedWorkRunsOnTheOtherWorkers) {
+    // One outer item starts inner work whose two items must run at the same time: the pool's
+    // other thread has to take one of them (solve's Q3 inside its list of questions).
     ThreadPool pool(2);
+    std::atomic<int> met{0};
+    const auto start = std::chrono::steady_clock::now();
+    pool.parallel_for(1, [&](std::size_t, int) { met = all_at_once(pool, 2); });
+    EXPECT_EQ(met.load(), 2);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5)) << "the inner items ran one after the other";
+}
+
+TEST(Executor, WorkerNumbersStayUniqueInNestedJobs) {
+    ThreadPool pool(3);
+    std::atomic<bool> shared{false};
     std::atomic<int> inner{0};
-    pool.parallel_for(4, [&](std::size_t, int) {
-        pool.parallel_for(5, [&](std::size_t, int worker) {
-            EXPECT_EQ(worker, 0);  // inline: the one worker
+    pool.parallel_for(6, [&](std::size_t, int) {
+        std::vector<std::atomic<int>> busy(3);
+        pool.parallel_for(50, [&](std::size_t, int worker) {
+            ASSERT_GE(worker, 0);
+            ASSERT_LT(worker, 3);
+            if (busy[static_cast<std::size_t>(worker)]++ != 0) shared = true;
+            std::this_thread::sleep_for(std::chrono::microseconds(50));
+            --busy[static_cast<std::size_t>(worker)];
             ++inner;
         });
     });
-    EXPECT_EQ(inner.load(), 20);
+    EXPECT_EQ(inner.load(), 300);
+    EXPECT_FALSE(shared.load()) << "two threads of one job ran under one worker number";
 }
 
-TEST(Executor, TheDefaultHasAFixedSize) {
-    Executor& a = default_executor();
-    Executor& b = default_executor();
-    EXPECT_EQ(&a, &b);
-    EXPECT_GE(a.workers(), 1);
-    EXPECT_THROW(set_default_workers(a.workers() + 1), std::logic_error);
-    EXPECT_NO_THROW(set_default_workers(a.workers()));
-    EXPECT_THROW(set_default_workers(0), std::invalid_argument);
+TEST(Executor, ConcurrentCallersDoNotQueue) {
+    // Two threads start work on one pool at the same moment; each job's items wait for the
+    // other job's to have started. With one job at a time this would take the 10 s give-up.
+    ThreadPool pool(3);
+    std::atomic<int> started{0};
+    const auto wait_for_both = [&](std::size_t, int) {
+        ++started;
+        const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+        while (started.load() < 2 && std::chrono::steady_clock::now() < give_up) std::this_thread::yield();
+    };
+    const auto start = std::chrono::steady_clock::now();
+    std::thread other([&] { pool.parallel_for(1, wait_for_both); });
+    pool.parallel_for(1, wait_for_both);
+    other.join();
+    EXPECT_EQ(started.load(), 2);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5)) << "the second caller waited for the first";
+    // And with items that need the pool's threads: jobs of several items from two callers.
+    std::atomic<int> total{0};
+    std::thread third([&] { pool.parallel_for(200, [&](std::size_t, int) { ++total; }); });
+    pool.parallel_for(200, [&](std::size_t, int) { ++total; });
+    third.join();
+    EXPECT_EQ(total.load(), 400);
+}
+
+TEST(Executor, NoExecutorMeansTheCallingThread) {
+    InlineExecutor serial;
+    EXPECT_EQ(&executor_or(nullptr, serial), &serial);
+    ThreadPool pool(2);
+    EXPECT_EQ(&executor_or(&pool, serial), &pool);
+    const std::thread::id me = std::this_thread::get_id();
+    bool elsewhere = false;
+    serial.parallel_for(3, [&](std::size_t, int) { elsewhere = elsewhere || std::this_thread::get_id() != me; });
+    EXPECT_FALSE(elsewhere);
 }
 
 TEST(Executor, AnswersDoNotDependOnTheExecutor) {

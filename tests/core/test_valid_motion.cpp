@@ -175,10 +175,10 @@ TEST(ValidMotion, SimulationRefusesMomentsPastTheJam) {
         EXPECT_NE(m.find("handle 1"), std::string::npos) << m;
     }
     // An analysis range reaching past it is cut there, and says so.
-    const Simulation::Span span = sim.clip_to_valid(-100.0, 100.0, "--from", "--to");
+    const Simulation::Span span = sim.clip_to_valid(-100.0, 100.0, Key::from, Key::to);
     EXPECT_EQ(span.to, r.to);
     ASSERT_TRUE(span.jam);
-    EXPECT_THROW(sim.clip_to_valid(20.0, 30.0, "--from", "--to"), InputError);
+    EXPECT_THROW(sim.clip_to_valid(20.0, 30.0, Key::from, Key::to), InputError);
     // Copies share what was found.
     const Simulation copy = sim;
     EXPECT_EQ(copy.valid_range().to, r.to);

@@ -213,7 +213,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                                        : (600.0 * when - 300.0) / s.head_speed;
         fuzz_context() += ", t = " + std::to_string(t) + " s";
         try {
-            sim.require_valid(t, "time");
+            sim.require_valid(t, Key::time);
         } catch (const InputError&) {
             return 0;  // refused (too far out, or past the end of the valid motion): allowed
         }
