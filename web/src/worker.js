@@ -1,0 +1,53 @@
+// @ts-check
+// The answers' worker: the engine's searches, off the page's thread. Its script is the engine
+// (createDragonEngine) followed by this file, made into a Blob by the page. A run is cancelled by
+// ending the worker (app.js keeps a spare one ready), so each run here goes to its end.
+//
+// In:  {type: 'run', id, keys, commands: string[], window: [t0, t1]}
+// Out: {type: 'ready'} once; per command {type: 'progress', id, command, done, total} and
+//      {type: 'result', id, command, result, start, end} (start and end on the shared clock,
+//      performance.timeOrigin + now, ms); {type: 'done', id}; {type: 'error', message}.
+
+/** @type {any} */
+const scope = self;
+
+/** @type {Promise<DragonEngine>} */
+const workerEngine = createDragonEngine().then((m) => new m.Engine());
+
+/** @returns {number} ms on a clock the page shares */
+function clock() {
+  return performance.timeOrigin + performance.now();
+}
+
+workerEngine.then(
+  () => scope.postMessage({ type: 'ready' }),
+  (e) => scope.postMessage({ type: 'error', message: String(e) }),
+);
+
+scope.onmessage = async (/** @type {MessageEvent} */ event) => {
+  const msg = event.data;
+  if (msg.type !== 'run') return;
+  const engine = await workerEngine;
+  const refused = engine.setScenario(msg.keys);
+  for (const command of msg.commands) {
+    const start = clock();
+    /** @type {any} */
+    let result;
+    if (refused) {
+      result = refused;
+    } else if (command === 'gaps') {
+      const [t0, t1] = msg.window;
+      result = { t0, t1, gaps: Array.from(engine.gapCurve(t0, t1, 400)) };
+    } else {
+      let last = 0;
+      result = engine.answer(command, (done, total) => {
+        const now = clock();
+        if (now - last < 100 && done < total) return;
+        last = now;
+        scope.postMessage({ type: 'progress', id: msg.id, command, done, total });
+      });
+    }
+    scope.postMessage({ type: 'result', id: msg.id, command, result, start, end: clock() });
+  }
+  scope.postMessage({ type: 'done', id: msg.id });
+};
