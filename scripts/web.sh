@@ -5,11 +5,12 @@
 # needs first (Debian's emscripten and chromium-headless-shell, Node.js, and the page's npm
 # packages from web/package-lock.json). Run as root from anywhere.
 #   web.sh              install, build, assemble docs/explorer.html
-#   web.sh --install    only install what the page's build and tests need
+#   web.sh --test-deps  only install what the page's tests need (the browser, Node.js, npm packages)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(emscripten chromium-headless-shell cmake ninja-build)
+packages=(chromium-headless-shell)
+[[ "${1:-}" == "--test-deps" ]] || packages+=(emscripten cmake ninja-build)
 command -v node >/dev/null && command -v npm >/dev/null || packages+=(nodejs npm)
 missing=()
 for p in "${packages[@]}"; do
@@ -28,7 +29,7 @@ export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
 if ! cmp -s web/package-lock.json web/node_modules/.installed-lock.json 2>/dev/null; then
   (cd web && npm ci --no-audit --no-fund --loglevel=error && cp package-lock.json node_modules/.installed-lock.json)
 fi
-[[ "${1:-}" == "--install" ]] && exit 0
+[[ "${1:-}" == "--test-deps" ]] && exit 0
 
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
