@@ -338,6 +338,8 @@ private:
         out.set("time", j->time);
         out.set("travel", j->travel);
         out.set("handle", j->handle);
+        out.set("kind", std::string(dragon::to_string(j->kind)));
+        out.set("ahead", j->ahead);
         out.set("x", j->point.x());
         out.set("y", j->point.y());
         out.set("sentence", dragon::jam_sentence(*j));

@@ -278,9 +278,13 @@ let spare = null;
 let busy = false;
 let runId = 0;
 
+/** @type {Promise<WebAssembly.Module>} */
+let wasmModule;
+
 function spawnWorker() {
   const url = URL.createObjectURL(new Blob([workerSource], { type: 'text/javascript' }));
   const worker = new Worker(url);
+  wasmModule.then((module) => worker.postMessage({ type: 'init', module }));
   const ready = new Promise((resolve, reject) => {
     worker.addEventListener('message', function first(e) {
       if (e.data.type === 'ready') { worker.removeEventListener('message', first); resolve(undefined); }
@@ -292,12 +296,28 @@ function spawnWorker() {
   return { worker, ready };
 }
 
+let restartTimer = 0;
+
+/** Asks for the answers of the scenario now: at once when the worker is free; a running search is
+ * ended and a spare worker takes over, once the changes pause (a dragged slider is many changes). */
 function runAnswers() {
+  clearTimeout(restartTimer);
   if (busy && current) {
-    current.worker.terminate();  // cancel the running search
-    current = spare;
-    spare = null;
+    runId += 1;  // what the running search still sends is for an older scenario
+    for (const c of COMMANDS) showPending(c);
+    restartTimer = window.setTimeout(() => {
+      if (!busy || !current) return postRun();
+      current.worker.terminate();  // cancel the running search
+      current = spare;
+      spare = null;
+      postRun();
+    }, 60);
+    return;
   }
+  postRun();
+}
+
+function postRun() {
   if (!current) current = spawnWorker();
   if (!spare) spare = spawnWorker();
   runId += 1;
@@ -312,6 +332,7 @@ function runAnswers() {
 /** @param {MessageEvent} e */
 function onWorkerMessage(e) {
   const m = e.data;
+  if (m.type === 'done' && current && e.target === current.worker) busy = false;
   if (m.id !== runId) return;
   if (m.type === 'progress') {
     const box = document.querySelector(`[data-command="${m.command}"] .status`);
@@ -320,10 +341,11 @@ function onWorkerMessage(e) {
     // The search's own time, on this page's clock.
     const start = m.start - performance.timeOrigin, end = m.end - performance.timeOrigin;
     performance.measure(m.command, { start, end });
+    performance.mark(`answer:${m.command}`);  // when the page has it: a change's latency ends here
     state.answers[m.command] = { ...m.result, ms: end - start };
     showAnswer(m.command);
   } else if (m.type === 'done') {
-    busy = false;
+    performance.mark('answers:done');
     document.body.dataset.answers = 'done';
   }
 }
@@ -830,8 +852,10 @@ function updateReadouts() {
   updateCommands();
   const r = state.range;
   if (!r) return;
-  const end = r.after && state.path === 'spiral'
-    ? say('valid_until', fmtTime(state.tmin), fmtTime(r.to), r.after.sentence)
+  const jam = r.after;
+  const why = jam && (state.lang === 'zh' ? say(`jam_${jam.kind}`, jam.handle, jam.handle - 1) : jam.sentence);
+  const end = jam && state.path === 'spiral'
+    ? say('valid_until', fmtTime(state.tmin), fmtTime(r.to), why ?? '')
     : say('valid_window', fmtTime(state.tmin), fmtTime(state.tmax));
   $('valid').textContent = end;
 }
@@ -1121,10 +1145,20 @@ function clamp(v, lo, hi) {
 
 async function start() {
   performance.mark('start');
-  workerSource = /** @type {HTMLElement} */ (document.getElementById('engine-js')).textContent + '\n' +
-    /** @type {HTMLElement} */ (document.getElementById('worker-js')).textContent;
-  current = spawnWorker();  // compiles the engine while this thread does the same
-  const module = await createDragonEngine();
+  // The engine's wasm, compiled once here and handed to each worker: emscripten's file holds it
+  // as base64, which the workers' copy of that file leaves out.
+  const engineText = /** @type {HTMLElement} */ (document.getElementById('engine-js')).textContent ?? '';
+  const base64 = engineText.match(/data:application\/octet-stream;base64,([A-Za-z0-9+/=]+)/)?.[1] ?? '';
+  wasmModule = WebAssembly.compile(Uint8Array.from(atob(base64), (c) => c.charCodeAt(0)));
+  workerSource = engineText.replace(base64, '') + '\n' + /** @type {HTMLElement} */ (document.getElementById('worker-js')).textContent;
+  current = spawnWorker();
+  const compiled = await wasmModule;
+  const module = await createDragonEngine({
+    instantiateWasm(/** @type {WebAssembly.Imports} */ imports, /** @type {(i: WebAssembly.Instance, m: WebAssembly.Module) => void} */ ok) {
+      WebAssembly.instantiate(compiled, imports).then((instance) => ok(instance, compiled));
+      return {};
+    },
+  });
   engine = new module.Engine();
   state.defaults = module.Engine.defaults();
   const { keys, t } = readHash();

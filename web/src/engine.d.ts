@@ -3,7 +3,10 @@
 /** A refused scenario or a question the library could not answer: its sentence and the flags it concerns. */
 interface DragonRefusal { error: string; flags: string[] }
 /** The end of the valid motion. */
-interface DragonJam { time: number; travel: number; handle: number; x: number; y: number; sentence: string }
+interface DragonJam {
+  time: number; travel: number; handle: number; kind: 'root_vanishes' | 'nearer_root'; ahead: boolean;
+  x: number; y: number; sentence: string;
+}
 /** The valid motion, s and m of head travel; infinite ends are +-Infinity. */
 interface DragonRange {
   from: number; to: number; from_travel: number; to_travel: number;

@@ -102,6 +102,9 @@ const WORDS = {
     engine_error: 'The engine failed: {0}',
   },
   zh: {
+    // The end of the valid motion, as the gallery's Chinese words it (the library's sentence is English).
+    jam_root_vanishes: '把手 {0} 无法再跟随把手 {1}：把手 {0} 处的路径与两把手连线垂直，其速度无界',
+    jam_nearer_root: '把手 {0} 将跳到更近的点：把手 {1} 与 {0} 之间的路径又弯回到连杆长度',
     title: '板凳龙演示',
     subtitle: '2024 年全国大学生数学建模竞赛 A 题，精确引擎实时计算',
     lang_other: 'English',

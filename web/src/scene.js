@@ -210,7 +210,7 @@ function drawChain(ctx, w, h, cam, th, d, say) {
     ctx.setLineDash(atContact ? [] : [3, 3]);
     ctx.stroke();
     ctx.setLineDash([]);
-    label(ctx, [sx + 10, sy + 14], say('first_contact'), th.collision, th.background);
+    label(ctx, [sx - 14, sy + 28], say('first_contact'), th.collision, th.background, 'right');
   }
   // The followed bench's nearest neighbour.
   if (d.selected > 0 && d.nearest && d.nearest.bench > 0) {
@@ -230,14 +230,16 @@ function drawChain(ctx, w, h, cam, th, d, say) {
 /**
  * A word with a halo, right of a point.
  * @param {CanvasRenderingContext2D} ctx @param {[number, number]} at @param {string} text
- * @param {string} colour @param {string} halo
+ * @param {string} colour @param {string} halo @param {CanvasTextAlign} [align]
  */
-function label(ctx, at, text, colour, halo) {
+function label(ctx, at, text, colour, halo, align = 'left') {
+  ctx.textAlign = align;
   ctx.lineWidth = 3;
   ctx.strokeStyle = halo;
   ctx.strokeText(text, at[0] + 7, at[1] - 9);
   ctx.fillStyle = colour;
   ctx.fillText(text, at[0] + 7, at[1] - 9);
+  ctx.textAlign = 'left';
 }
 
 /**

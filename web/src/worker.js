@@ -3,7 +3,8 @@
 // (createDragonEngine) followed by this file, made into a Blob by the page. A run is cancelled by
 // ending the worker (app.js keeps a spare one ready), so each run here goes to its end.
 //
-// In:  {type: 'run', id, keys, commands: string[], window: [t0, t1]}
+// In:  {type: 'init', module} first: the engine's WebAssembly.Module, compiled once by the page;
+//      then {type: 'run', id, keys, commands: string[], window: [t0, t1]}
 // Out: {type: 'ready'} once; per command {type: 'progress', id, command, done, total} and
 //      {type: 'result', id, command, result, start, end} (start and end on the shared clock,
 //      performance.timeOrigin + now, ms); {type: 'done', id}; {type: 'error', message}.
@@ -11,21 +12,32 @@
 /** @type {any} */
 const scope = self;
 
+/** @type {(engine: DragonEngine) => void} */
+let engineReady = () => {};
 /** @type {Promise<DragonEngine>} */
-const workerEngine = createDragonEngine().then((m) => new m.Engine());
+const workerEngine = new Promise((resolve) => { engineReady = resolve; });
 
 /** @returns {number} ms on a clock the page shares */
 function clock() {
   return performance.timeOrigin + performance.now();
 }
 
-workerEngine.then(
-  () => scope.postMessage({ type: 'ready' }),
-  (e) => scope.postMessage({ type: 'error', message: String(e) }),
-);
-
 scope.onmessage = async (/** @type {MessageEvent} */ event) => {
   const msg = event.data;
+  if (msg.type === 'init') {
+    /** @type {WebAssembly.Module} */
+    const module = msg.module;
+    createDragonEngine({
+      instantiateWasm(/** @type {WebAssembly.Imports} */ imports, /** @type {(i: WebAssembly.Instance, m: WebAssembly.Module) => void} */ ok) {
+        WebAssembly.instantiate(module, imports).then((instance) => ok(instance, module));
+        return {};
+      },
+    }).then((m) => {
+      engineReady(new m.Engine());
+      scope.postMessage({ type: 'ready' });
+    }, (e) => scope.postMessage({ type: 'error', message: String(e) }));
+    return;
+  }
   if (msg.type !== 'run') return;
   const engine = await workerEngine;
   const refused = engine.setScenario(msg.keys);
