@@ -93,10 +93,10 @@ function applyScenario(keys, field) {
   state.version += 1;
   state.range = engine.range();
   setTimeRange();
+  runAnswers();  // first: the worker searches while this thread prepares the scene
   buildPath();
   state.contact = null;
   if (state.fitted) fit();
-  runAnswers();
   updateReadouts();
   requestDraw();
   writeHash();
@@ -132,7 +132,7 @@ function buildPath() {
   const chain = chainLength();
   const s0 = engine.headArcAt(state.tmin) - chain - 4;
   let s1 = state.path === 'spiral' ? 0 : engine.headArcAt(state.tmax) + 4;
-  const step = Math.max(0.01, Math.min(0.05, (s1 - s0) / 40000));
+  const step = Math.max(0.02, (s1 - s0) / 12000);  // enough for a smooth line at any zoom that shows the chain
   const points = engine.pathPoints(s0, s1, step).slice();
   const n = points.length / 2;
   /** @type {{ from: number, to: number, colour: string }[]} */
@@ -877,9 +877,11 @@ function updateFrameReadouts(d) {
     line.textContent = say('nearest_now', g.distance.toFixed(6), g.a, g.b);
     line.classList.remove('past');
   } else line.textContent = '';
-  // Q1: the paper's handles now.
+  // Q1: the paper's handles now (ten times a second while playing).
   const table = /** @type {HTMLTableElement | null} */ (document.getElementById('q1-table'));
-  if (table) {
+  const now = performance.now();
+  if (table && (!state.playing || now - lastTable > 100)) {
+    lastTable = now;
     const n = d.handles - 1;
     const handles = PAPER_HANDLES.filter((i) => i <= n);
     if (!handles.includes(n)) handles.push(n);
@@ -901,6 +903,8 @@ function updateFrameReadouts(d) {
   drawSpeedChart(d);
   drawGapChart();
 }
+
+let lastTable = 0;
 
 /** @param {number} t */
 function fmtTime(t) {
@@ -954,8 +958,36 @@ function drawSpeedChart(d) {
   g.stroke();
 }
 
-/** The nearest gap over the shown motion (from the worker), with this moment on it. */
+const gapLayer = document.createElement('canvas');
+let gapLayerKey = '';
+
+/** The nearest gap over the shown motion (from the worker), drawn once per answer; this moment on it each frame. */
 function drawGapChart() {
+  const a = state.answers.gaps;
+  const c = /** @type {HTMLCanvasElement} */ (document.getElementById('gap-chart'));
+  if (!c.clientWidth || !c.clientHeight) return;  // not laid out (yet)
+  const key = `${state.version}|${a ? a.t0 : ''}|${state.theme}|${state.lang}|${c.clientWidth}x${c.clientHeight}|${state.contact?.time}`;
+  if (key !== gapLayerKey || !a) {
+    drawGapLayer();
+    gapLayer.width = c.width;
+    gapLayer.height = c.height;
+    /** @type {CanvasRenderingContext2D} */ (gapLayer.getContext('2d')).drawImage(c, 0, 0);
+    gapLayerKey = a ? key : '';
+  }
+  const g = /** @type {CanvasRenderingContext2D} */ (c.getContext('2d'));
+  g.setTransform(1, 0, 0, 1, 0, 0);
+  g.drawImage(gapLayer, 0, 0);
+  if (!a || a.error || !a.gaps.length) return;
+  const dpr = window.devicePixelRatio || 1;
+  g.setTransform(dpr, 0, 0, dpr, 0, 0);
+  const x = 46 + ((state.t - a.t0) / (a.t1 - a.t0 || 1)) * (c.clientWidth - 54);
+  g.strokeStyle = theme().text;
+  g.lineWidth = 1;
+  g.beginPath(); g.moveTo(x, 18); g.lineTo(x, c.clientHeight - 16); g.stroke();
+}
+
+/** The gap chart without the moment. */
+function drawGapLayer() {
   const a = state.answers.gaps;
   const { g, w, h, th } = chartContext('gap-chart');
   const L = 46, R = 8, T = 18, B = 16;
@@ -985,8 +1017,6 @@ function drawGapChart() {
     g.beginPath(); g.moveTo(X(state.contact.time), T); g.lineTo(X(state.contact.time), h - B); g.stroke();
     g.setLineDash([]);
   }
-  g.strokeStyle = th.text;
-  g.beginPath(); g.moveTo(X(state.t), T); g.lineTo(X(state.t), h - B); g.stroke();
 }
 
 // ---------------------------------------------------------------------------------------------

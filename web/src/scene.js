@@ -205,12 +205,12 @@ function drawChain(ctx, w, h, cam, th, d, say) {
     const [sx, sy] = toScreen(cam, w, h, d.contact.x, d.contact.y);
     ctx.beginPath();
     ctx.arc(sx, sy, 9, 0, 2 * Math.PI);
-    ctx.strokeStyle = th.collision;
+    ctx.strokeStyle = atContact ? th.contact : th.collision;  // the touching benches are in the collision colour
     ctx.lineWidth = atContact ? 2.5 : 1.5;
     ctx.setLineDash(atContact ? [] : [3, 3]);
     ctx.stroke();
     ctx.setLineDash([]);
-    label(ctx, [sx - 14, sy + 28], say('first_contact'), th.collision, th.background, 'right');
+    label(ctx, [sx + 6, sy + 30], say('first_contact'), th.collision, th.background);  // below: the head's label is above
   }
   // The followed bench's nearest neighbour.
   if (d.selected > 0 && d.nearest && d.nearest.bench > 0) {
