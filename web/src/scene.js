@@ -140,6 +140,8 @@ function drawChain(ctx, w, h, cam, th, d, say) {
   const outline = d.speedColours ? th.outline : th.outline;
   ctx.lineWidth = cam.k > 40 ? 1 : 0.6;
   ctx.lineJoin = 'miter';
+  ctx.font = '600 13px system-ui, "Noto Sans CJK SC", sans-serif';
+  ctx.textBaseline = 'middle';
   // Tail first, so the head is drawn on top where benches cross.
   for (let k = d.benches; k >= 1; --k) {
     const o = hb + 6 * (k - 1);
@@ -182,12 +184,6 @@ function drawChain(ctx, w, h, cam, th, d, say) {
     }
     ctx.fill();
   }
-  // Head and tail named.
-  ctx.font = '600 13px system-ui, "Noto Sans CJK SC", sans-serif';
-  ctx.textBaseline = 'middle';
-  label(ctx, toScreen(cam, w, h, data[0], data[1]), say('head'), th.head, th.background);
-  const n = d.handles - 1;
-  if (n > 1) label(ctx, toScreen(cam, w, h, data[3 * n], data[3 * n + 1]), say('tail'), th.tail, th.background);
   // The overlap past the first contact, each pair's deepest point.
   if (d.gaps) {
     ctx.strokeStyle = th.contact;
@@ -212,6 +208,10 @@ function drawChain(ctx, w, h, cam, th, d, say) {
     ctx.setLineDash([]);
     label(ctx, [sx + 6, sy + 30], say('first_contact'), th.collision, th.background);  // below: the head's label is above
   }
+  // Head and tail named (over the contact's ring).
+  label(ctx, toScreen(cam, w, h, data[0], data[1]), say('head'), th.head, th.background);
+  const n = d.handles - 1;
+  if (n > 1) label(ctx, toScreen(cam, w, h, data[3 * n], data[3 * n + 1]), say('tail'), th.tail, th.background);
   // The followed bench's nearest neighbour.
   if (d.selected > 0 && d.nearest && d.nearest.bench > 0) {
     const o = hb + 6 * (d.selected - 1);
