@@ -331,6 +331,29 @@ public:
         }
     }
 
+    // One cell of a minimum-pitch map: Q3 for this scenario with another width and body length,
+    // searched over [lo, hi] on a first scan of `grid` (as `dragon sweep --measure min-pitch`):
+    // {pitch (NaN when the range holds no change), below, above}, or {error}.
+    val min_pitch_cell(double width, double body_length, double lo, double hi, double grid) const {
+        dragon::Scenario s = sim_->scenario();
+        s.path.kind = dragon::PathKind::spiral;
+        s.bench.width = width;
+        s.bench.body_length = body_length;
+        val out = val::object();
+        try {
+            dragon::MinPitchOptions options;
+            options.grid = grid;
+            options.executor = &here();
+            const dragon::MinPitch m = dragon::min_pitch(s, lo, hi, options);
+            out.set("pitch", m.pitch);
+            out.set("below", m.below_range);
+            out.set("above", m.above_range);
+        } catch (const std::exception& e) {
+            out.set("error", std::string(e.what()));
+        }
+        return out;
+    }
+
 private:
     static val jam_val(const std::optional<dragon::Jam>& j) {
         if (!j) return val::null();
@@ -370,5 +393,6 @@ EMSCRIPTEN_BINDINGS(dragon_engine) {
         .function("pathPoints", &Engine::path_points)
         .function("sCurve", &Engine::s_curve)
         .function("gapCurve", &Engine::gap_curve)
-        .function("answer", &Engine::answer);
+        .function("answer", &Engine::answer)
+        .function("minPitchCell", &Engine::min_pitch_cell);
 }

@@ -94,6 +94,7 @@ function applyScenario(keys, field) {
   state.range = engine.range();
   setTimeRange();
   runAnswers();  // first: the worker searches while this thread prepares the scene
+  mapFollow();
   buildPath();
   state.contact = null;
   if (state.fitted) fit();
@@ -332,6 +333,7 @@ function postRun() {
 /** @param {MessageEvent} e */
 function onWorkerMessage(e) {
   const m = e.data;
+  if (m.type === 'cell' || m.type === 'mapdone') return onMapMessage(m);
   if (m.type === 'done' && current && e.target === current.worker) busy = false;
   if (m.id !== runId) return;
   if (m.type === 'progress') {
@@ -659,6 +661,109 @@ function fallbackCopy(text, done) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// The minimum-pitch map (assets/sweeps/min_pitch_map.toml's grid): on demand, in a worker of its
+// own, cell by cell; started again when a value it depends on changes.
+
+const linspace = (/** @type {number} */ a, /** @type {number} */ b, /** @type {number} */ n) =>
+  Array.from({ length: n }, (_, i) => +(a + ((b - a) * i) / (n - 1)).toFixed(10));
+const MAP = { widths: linspace(0.2, 0.4, 21), lengths: linspace(1.6, 2.8, 25), lo: 0.09, hi: 0.25, grid: 0.005 };
+const map = {
+  /** @type {{ worker: Worker, ready: Promise<void> } | null} */ worker: null,
+  id: 0,
+  key: '',
+  /** @type {(number | null)[]} */ cells: [],
+  done: 0,
+  started: 0,
+  seconds: 0,
+};
+
+/** The values a map's cells depend on (not the pitch, width, body length, speed or turnaround's). */
+function mapKey() {
+  return ['bench-count', 'head-length', 'hole-offset', 'start-turn', 'turn-radius'].map((f) => state.keys[f]).join('|');
+}
+
+function startMap() {
+  map.worker?.worker.terminate();
+  map.worker = spawnWorker();
+  map.id += 1;
+  map.key = mapKey();
+  map.cells = new Array(MAP.widths.length * MAP.lengths.length).fill(null);
+  map.done = 0;
+  map.started = performance.now();
+  const msg = { type: 'map', id: map.id, keys: { ...engineKeys(state.keys), path: 'spiral' }, ...MAP };
+  const w = map.worker;
+  w.ready.then(() => w.worker.postMessage(msg), (e) => showEngineError(e));
+  $('map-start').textContent = say('map_restart');
+  drawMap();
+}
+
+/** @param {any} m */
+function onMapMessage(m) {
+  if (m.id !== map.id) return;
+  if (m.type === 'cell') {
+    map.cells[m.i * MAP.lengths.length + m.j] = m.error || Number.isNaN(m.pitch) ? NaN : m.pitch;
+    map.done += 1;
+  } else {
+    map.seconds = (performance.now() - map.started) / 1000;
+    map.worker?.worker.terminate();
+    map.worker = null;
+  }
+  drawMap();
+}
+
+let mapTimer = 0;
+/** A change of the scenario: a map of other values is computed again, once the changes pause. */
+function mapFollow() {
+  if (!map.cells.length || map.key === mapKey()) return drawMap();
+  clearTimeout(mapTimer);
+  mapTimer = window.setTimeout(startMap, 400);
+}
+
+function drawMap() {
+  const c = /** @type {HTMLCanvasElement} */ (document.getElementById('map-chart'));
+  if (!c || !c.clientWidth) return;
+  const { g, w, h, th } = chartContext('map-chart');
+  const nw = MAP.widths.length, nl = MAP.lengths.length, total = nw * nl;
+  $('map-status').textContent = !map.cells.length ? '' : map.done < total ? say('map_status', map.done, total)
+    : say('map_done', total, map.seconds.toFixed(1));
+  $('map-axes').textContent = say('map_axes', MAP.widths[0], MAP.widths[nw - 1], MAP.lengths[0], MAP.lengths[nl - 1]);
+  const L = 44, R = 70, T = 6, B = 6;
+  const cw = (w - L - R) / nw, ch = (h - T - B) / nl;
+  const vals = /** @type {number[]} */ (map.cells.filter((v) => v !== null && !Number.isNaN(v)));
+  const lo = vals.length ? Math.min(...vals) : 0, hi = vals.length ? Math.max(...vals) : 1;
+  for (let i = 0; i < nw; ++i) for (let j = 0; j < nl; ++j) {
+    const v = map.cells[i * nl + j];
+    g.fillStyle = v === null || v === undefined ? th.grid : Number.isNaN(v) ? th.guide : rampColour(DRAGON_THEMES.light.speed_ramp, (v - lo) / (hi - lo || 1));
+    g.fillRect(L + i * cw, h - B - (j + 1) * ch, Math.ceil(cw), Math.ceil(ch));
+  }
+  // This scenario's place on the map.
+  const wi = (state.keys.width - MAP.widths[0]) / (MAP.widths[1] - MAP.widths[0]);
+  const lj = (state.keys['body-length'] - MAP.lengths[0]) / (MAP.lengths[1] - MAP.lengths[0]);
+  if (wi > -0.5 && wi < nw - 0.5 && lj > -0.5 && lj < nl - 0.5) {
+    g.strokeStyle = th.text;
+    g.lineWidth = 2;
+    g.strokeRect(L + Math.round(wi) * cw, h - B - (Math.round(lj) + 1) * ch, cw, ch);
+  }
+  g.fillStyle = th.text;
+  g.fillText(`${MAP.lengths[nl - 1]}`, 4, T + 10);
+  g.fillText(`${MAP.lengths[0]}`, 4, h - B);
+  if (vals.length) {
+    g.fillText(`${hi.toFixed(4)} m`, w - R + 6, T + 10);
+    g.fillText(`${lo.toFixed(4)} m`, w - R + 6, h - B);
+  }
+}
+
+/** A click on the map loads that cell's width and body length. @param {MouseEvent} e */
+function onMapClick(e) {
+  const c = /** @type {HTMLCanvasElement} */ (e.currentTarget);
+  const nw = MAP.widths.length, nl = MAP.lengths.length;
+  const i = Math.floor(((e.offsetX - 44) / (c.clientWidth - 114)) * nw);
+  const j = Math.floor(((c.clientHeight - 6 - e.offsetY) / (c.clientHeight - 12)) * nl);
+  if (i < 0 || i >= nw || j < 0 || j >= nl) return;
+  applyScenario({ ...state.keys, width: MAP.widths[i], 'body-length': MAP.lengths[j] }, 'width');
+}
+
+// ---------------------------------------------------------------------------------------------
 // Time
 
 /** @param {number} t */
@@ -734,6 +839,7 @@ function draw() {
   if (!engine || !state.range) return;
   const t0 = performance.now();
   const { w, h, dpr } = canvasSize();
+  if (!canvas.width || !canvas.height) return;  // not laid out
   const data = engine.frame(state.t).slice();  // a copy: a view of the engine's memory ends if it grows
   const gaps = engine.gaps();
   const n = state.keys['bench-count'];
@@ -971,12 +1077,12 @@ function drawGapChart() {
     drawGapLayer();
     gapLayer.width = c.width;
     gapLayer.height = c.height;
-    /** @type {CanvasRenderingContext2D} */ (gapLayer.getContext('2d')).drawImage(c, 0, 0);
+    if (c.width && c.height) /** @type {CanvasRenderingContext2D} */ (gapLayer.getContext('2d')).drawImage(c, 0, 0);
     gapLayerKey = a ? key : '';
   }
   const g = /** @type {CanvasRenderingContext2D} */ (c.getContext('2d'));
   g.setTransform(1, 0, 0, 1, 0, 0);
-  g.drawImage(gapLayer, 0, 0);
+  if (gapLayer.width && gapLayer.height) g.drawImage(gapLayer, 0, 0);
   if (!a || a.error || !a.gaps.length) return;
   const dpr = window.devicePixelRatio || 1;
   g.setTransform(dpr, 0, 0, dpr, 0, 0);
@@ -1130,6 +1236,8 @@ function setupControls() {
   $('copy-python').addEventListener('click', (e) => copyText(pythonCall(), /** @type {HTMLElement} */ (e.currentTarget)));
   $('save-png').addEventListener('click', () => canvas.toBlob((b) => b && download(`dragon_t${+state.t.toFixed(3)}.png`, b, 'image/png')));
   $('save-toml').addEventListener('click', () => download('scenario.toml', scenarioToml(), 'application/toml'));
+  $('map-start').addEventListener('click', startMap);
+  $('map-chart').addEventListener('click', onMapClick);
   $('gap-chart').addEventListener('click', (e) => {
     const a = state.answers.gaps;
     if (!a) return;

@@ -32,6 +32,8 @@ interface DragonEngine {
   pathPoints(s0: number, s1: number, step: number): Float64Array;
   sCurve(): DragonSCurve;
   gapCurve(t0: number, t1: number, count: number): Float64Array;
+  minPitchCell(width: number, bodyLength: number, lo: number, hi: number, grid: number):
+    { pitch: number; below: boolean; above: boolean; error?: string };
   answer(command: string, progress: ((done: number, total: number) => void) | undefined): DragonAnswer | DragonRefusal;
 }
 interface DragonModule {

@@ -38,6 +38,19 @@ scope.onmessage = async (/** @type {MessageEvent} */ event) => {
     }, (e) => scope.postMessage({ type: 'error', message: String(e) }));
     return;
   }
+  if (msg.type === 'map') {
+    // A minimum-pitch map, cell by cell: width by body length, as assets/sweeps/min_pitch_map.toml.
+    const engine = await workerEngine;
+    const refused = engine.setScenario(msg.keys);
+    msg.widths.forEach((/** @type {number} */ w, /** @type {number} */ i) => {
+      msg.lengths.forEach((/** @type {number} */ len, /** @type {number} */ j) => {
+        const cell = refused ? { error: refused.error } : engine.minPitchCell(w, len, w + msg.lo, w + msg.hi, msg.grid);
+        scope.postMessage({ type: 'cell', id: msg.id, i, j, ...cell });
+      });
+    });
+    scope.postMessage({ type: 'mapdone', id: msg.id });
+    return;
+  }
   if (msg.type !== 'run') return;
   const engine = await workerEngine;
   const refused = engine.setScenario(msg.keys);
