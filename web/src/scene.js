@@ -224,7 +224,7 @@ function drawChain(ctx, w, h, cam, th, d, say) {
     ctx.setLineDash([]);
   }
   scaleBar(ctx, w, h, cam, th);
-  if (d.speedColours) speedBar(ctx, w, th, lo, hi);
+  if (d.speedColours) speedBar(ctx, w, h, th, lo, hi);
 }
 
 /**
@@ -264,11 +264,11 @@ function scaleBar(ctx, w, h, cam, th) {
 }
 
 /**
- * The speed colours' key at the top right.
- * @param {CanvasRenderingContext2D} ctx @param {number} w @param {Theme} th @param {number} lo @param {number} hi
+ * The speed colours' key at the bottom right (the view's buttons are at the top).
+ * @param {CanvasRenderingContext2D} ctx @param {number} w @param {number} h @param {Theme} th @param {number} lo @param {number} hi
  */
-function speedBar(ctx, w, th, lo, hi) {
-  const bw = 120, bh = 10, x = w - bw - 14, y = 14;
+function speedBar(ctx, w, h, th, lo, hi) {
+  const bw = 120, bh = 10, x = w - bw - 14, y = h - 36;
   const g = ctx.createLinearGradient(x, 0, x + bw, 0);
   th.speed_ramp.forEach((/** @type {string} */ c, /** @type {number} */ i) => g.addColorStop(i / (th.speed_ramp.length - 1), c));
   ctx.fillStyle = g;
