@@ -204,10 +204,24 @@ for (const hash of scenarios) {
   await page.waitForTimeout(200);
   check((await page.evaluate(() => state.selected)) === 10, 'a click selects the bench under it');
   check(((await page.textContent('#bench-info')) ?? '').startsWith('Bench 10'), 'the followed bench is described');
+  // Keys: space plays and pauses, arrows step.
+  await page.focus('#scene');
+  await page.keyboard.press('Space');
+  await page.waitForTimeout(400);
+  check(await page.evaluate(() => state.playing && state.t > 0), 'space plays');
+  await page.keyboard.press('Space');
+  const t = await page.evaluate(() => state.t);
+  check(await page.evaluate(() => !state.playing), 'space pauses');
+  await page.keyboard.press('ArrowRight');
+  check(Math.abs((await page.evaluate(() => state.t)) - (t + 1)) < 1e-9, 'the right arrow steps 1 s');
+  // A change while the answers are searched (Q4 takes the longest) ends that search.
   await page.fill('#f-start-turn', '14');
-  await page.waitForTimeout(30);
+  await page.waitForFunction(() => document.querySelector('[data-command="turnaround"].pending') !== null);
+  await page.waitForTimeout(50);
+  const before = Number(await page.evaluate(() => document.body.dataset.cancelled ?? 0));
   await page.fill('#f-start-turn', '15');
   await answersDone(page);
+  check(Number(await page.evaluate(() => document.body.dataset.cancelled ?? 0)) === before + 1, 'a change ends the running search');
   await compareWithTool(page, 'min-pitch', ['pitch'], 'after a cancelled search');
   await compareWithTool(page, 'collide', ['time'], 'after a cancelled search');
   await page.close();

@@ -309,6 +309,7 @@ function runAnswers() {
     restartTimer = window.setTimeout(() => {
       if (!busy || !current) return postRun();
       current.worker.terminate();  // cancel the running search
+      document.body.dataset.cancelled = String(Number(document.body.dataset.cancelled ?? 0) + 1);
       current = spare;
       spare = null;
       postRun();
