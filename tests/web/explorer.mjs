@@ -9,7 +9,7 @@
 // are left out, saying so, when there is no dragon tool.
 //   node tests/web/explorer.mjs [--dragon build/src/dragon]
 import { execFileSync } from 'node:child_process';
-import { existsSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { jsonLeafText, launch, pageUrl, root } from './browser.mjs';
 
@@ -225,6 +225,46 @@ for (const hash of scenarios) {
   await compareWithTool(page, 'min-pitch', ['pitch'], 'after a cancelled search');
   await compareWithTool(page, 'collide', ['time'], 'after a cancelled search');
   await page.close();
+}
+
+// 5. The scene at the first contact against a stored picture, within a tolerance (fonts and
+// anti-aliasing may move a few pixels); DRAGON_REBASELINE=1 stores it anew (look at it!).
+{
+  const page = await context.newPage();
+  await page.setViewportSize({ width: 1280, height: 900 });
+  await page.goto(pageUrl + '#t=412.473837682');
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+  await answersDone(page);
+  await page.waitForTimeout(200);
+  const shot = await page.locator('#scene').screenshot();
+  await page.close();
+  const golden = join(root, 'tests/web/golden/scene_contact.png');
+  if (process.env.DRAGON_REBASELINE === '1' || !existsSync(golden)) {
+    mkdirSync(join(root, 'tests/web/golden'), { recursive: true });
+    writeFileSync(golden, shot);
+    console.log(`NOTE: stored ${golden}`);
+  } else {
+    const blank = await context.newPage();
+    const diff = await blank.evaluate(async ([a, b]) => {
+      const pixels = async (/** @type {string} */ b64) => {
+        const bitmap = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
+        const c = new OffscreenCanvas(bitmap.width, bitmap.height);
+        const g = /** @type {OffscreenCanvasRenderingContext2D} */ (c.getContext('2d'));
+        g.drawImage(bitmap, 0, 0);
+        return g.getImageData(0, 0, bitmap.width, bitmap.height);
+      };
+      const [x, y] = [await pixels(a), await pixels(b)];
+      if (x.width !== y.width || x.height !== y.height) return { size: `${x.width}x${x.height} against ${y.width}x${y.height}`, fraction: 1 };
+      let off = 0;
+      for (let i = 0; i < x.data.length; i += 4) {
+        const d = Math.max(Math.abs(x.data[i] - y.data[i]), Math.abs(x.data[i + 1] - y.data[i + 1]), Math.abs(x.data[i + 2] - y.data[i + 2]));
+        if (d > 48) ++off;
+      }
+      return { size: '', fraction: off / (x.width * x.height) };
+    }, [shot.toString('base64'), readFileSync(golden).toString('base64')]);
+    await blank.close();
+    check(diff.fraction < 0.005, `the scene at the first contact differs from tests/web/golden/scene_contact.png: ${diff.size || `${(100 * diff.fraction).toFixed(2)} % of its pixels`}`);
+  }
 }
 
 check(problems.length === 0, `offline and quiet: ${problems.join('; ')}`);
