@@ -668,8 +668,10 @@ function fallbackCopy(text, done) {
 const linspace = (/** @type {number} */ a, /** @type {number} */ b, /** @type {number} */ n) =>
   Array.from({ length: n }, (_, i) => +(a + ((b - a) * i) / (n - 1)).toFixed(10));
 const MAP = { widths: linspace(0.2, 0.4, 21), lengths: linspace(1.6, 2.8, 25), lo: 0.09, hi: 0.25, grid: 0.005 };
+const MAP_WORKERS = Math.max(1, Math.min(4, navigator.hardwareConcurrency || 2));  // the map's cells split between them
 const map = {
-  /** @type {{ worker: Worker, ready: Promise<void> } | null} */ worker: null,
+  /** @type {{ worker: Worker, ready: Promise<void> }[]} */ workers: [],
+  running: 0,
   id: 0,
   key: '',
   /** @type {(number | null)[]} */ cells: [],
@@ -684,16 +686,21 @@ function mapKey() {
 }
 
 function startMap() {
-  map.worker?.worker.terminate();
-  map.worker = spawnWorker();
+  for (const w of map.workers) w.worker.terminate();
   map.id += 1;
   map.key = mapKey();
   map.cells = new Array(MAP.widths.length * MAP.lengths.length).fill(null);
   map.done = 0;
   map.started = performance.now();
-  const msg = { type: 'map', id: map.id, keys: { ...engineKeys(state.keys), path: 'spiral' }, ...MAP };
-  const w = map.worker;
-  w.ready.then(() => w.worker.postMessage(msg), (e) => showEngineError(e));
+  /** @type {number[][][]} */
+  const shares = Array.from({ length: MAP_WORKERS }, () => []);
+  MAP.widths.forEach((w, i) => MAP.lengths.forEach((len, j) => shares[(i * MAP.lengths.length + j) % MAP_WORKERS].push([i, j, w, len])));
+  map.workers = shares.map(() => spawnWorker());
+  map.running = map.workers.length;
+  map.workers.forEach((w, k) => {
+    const msg = { type: 'map', id: map.id, keys: { ...engineKeys(state.keys), path: 'spiral' }, cells: shares[k], lo: MAP.lo, hi: MAP.hi, grid: MAP.grid };
+    w.ready.then(() => w.worker.postMessage(msg), (e) => showEngineError(e));
+  });
   $('map-start').textContent = say('map_restart');
   drawMap();
 }
@@ -704,10 +711,10 @@ function onMapMessage(m) {
   if (m.type === 'cell') {
     map.cells[m.i * MAP.lengths.length + m.j] = m.error || Number.isNaN(m.pitch) ? NaN : m.pitch;
     map.done += 1;
-  } else {
+  } else if (--map.running === 0) {
     map.seconds = (performance.now() - map.started) / 1000;
-    map.worker?.worker.terminate();
-    map.worker = null;
+    for (const w of map.workers) w.worker.terminate();
+    map.workers = [];
   }
   drawMap();
 }

@@ -39,15 +39,14 @@ scope.onmessage = async (/** @type {MessageEvent} */ event) => {
     return;
   }
   if (msg.type === 'map') {
-    // A minimum-pitch map, cell by cell: width by body length, as assets/sweeps/min_pitch_map.toml.
+    // Cells of a minimum-pitch map, [i, j, width, body length] each (the page splits the map's
+    // cells between its map workers).
     const engine = await workerEngine;
     const refused = engine.setScenario(msg.keys);
-    msg.widths.forEach((/** @type {number} */ w, /** @type {number} */ i) => {
-      msg.lengths.forEach((/** @type {number} */ len, /** @type {number} */ j) => {
-        const cell = refused ? { error: refused.error } : engine.minPitchCell(w, len, w + msg.lo, w + msg.hi, msg.grid);
-        scope.postMessage({ type: 'cell', id: msg.id, i, j, ...cell });
-      });
-    });
+    for (const [i, j, w, len] of msg.cells) {
+      const cell = refused ? { error: refused.error } : engine.minPitchCell(w, len, w + msg.lo, w + msg.hi, msg.grid);
+      scope.postMessage({ type: 'cell', id: msg.id, i, j, ...cell });
+    }
     scope.postMessage({ type: 'mapdone', id: msg.id });
     return;
   }
