@@ -104,11 +104,11 @@ public:
 
     // The contest's values, by flag name.
     static val defaults() {
-        const dragon::Scenario s;
+        dragon::Scenario s;
         val out = val::object();
         for (const Key& k : kKeys) {
             if (k.value == dragon::value::bench_count) out.set(k.flag, s.bench.bench_count);
-            else out.set(k.flag, *slot(const_cast<dragon::Scenario&>(s), k.value));
+            else out.set(k.flag, *slot(s, k.value));
         }
         return out;
     }
@@ -217,10 +217,11 @@ public:
     val nearest_to(int k) const {
         val out = val::object();
         const int n = static_cast<int>(frame_.benches.size());
+        if (k < 1 || k > n) k = 0;  // no such bench: nothing near it
         double best = std::numeric_limits<double>::infinity();
         int who = 0;
         dragon::Vec2 at = dragon::Vec2::Zero();
-        for (int j = 1; j <= n; ++j) {
+        for (int j = 1; k > 0 && j <= n; ++j) {
             if (std::abs(j - k) < 2) continue;
             const dragon::Separation sep = dragon::separation(frame_.benches[k - 1], frame_.benches[j - 1]);
             if (sep.distance < best) {
