@@ -87,4 +87,11 @@ a trivial call's overhead, and a 100-scenario min-pitch sweep on a \`ProcessPool
 against \`dragon sweep\` (medians; a table of its own).
 
 $(bash scripts/bench-python.sh 2>/dev/null || echo "(not measured: build/ has no Python package)")
+
+## The page
+
+\`bash scripts/bench-web.sh\` (tests/web/bench.mjs): docs/explorer.html from file:// in Debian's
+chromium-headless-shell, offline; each search's own time measured in the worker (medians).
+
+$(node tests/web/bench.mjs 2>/dev/null || echo "(not measured: no browser or playwright-core: bash scripts/web.sh --test-deps)")
 EOF2

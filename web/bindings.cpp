@@ -1,0 +1,399 @@
+// The page's engine: JavaScript calls mapped onto the library's, and nothing else (embind).
+// The page sets a scenario by the CLI's flag names, asks for frames (numbers in a typed array) and
+// for the questions' answers (the same JSON text as `dragon <command> --json`, built by the same
+// functions), and reads refusals as the library's own sentences with the flags they concern.
+// Single-threaded: every search runs on the calling thread (a Web Worker, for the long ones).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include "dragon/analyses.hpp"
+#include "dragon/answers.hpp"
+#include "dragon/chain.hpp"
+#include "dragon/collision.hpp"
+#include "dragon/executor.hpp"
+#include "dragon/json.hpp"
+#include "dragon/scenario.hpp"
+#include "dragon/turnaround.hpp"
+
+using emscripten::val;
+
+namespace {
+
+// The scenario's keys as the CLI's flags name them (without dashes), and the value each sets.
+// (The library's key description, issue 28, will hold this table; until then the page's own.)
+struct Key {
+    const char* flag;
+    dragon::ScenarioValues value;
+};
+constexpr Key kKeys[] = {
+    {"pitch", dragon::value::pitch},           {"speed", dragon::value::head_speed},
+    {"bench-count", dragon::value::bench_count}, {"head-length", dragon::value::head_length},
+    {"body-length", dragon::value::body_length}, {"width", dragon::value::width},
+    {"hole-offset", dragon::value::hole_offset}, {"start-turn", dragon::value::start_turn},
+    {"turn-radius", dragon::value::turn_radius}, {"turn-pitch", dragon::value::turn_pitch},
+    {"arc-ratio", dragon::value::arc_ratio},
+};
+
+double* slot(dragon::Scenario& s, dragon::ScenarioValues v) {
+    using namespace dragon::value;
+    if (v == pitch) return &s.path.pitch;
+    if (v == head_speed) return &s.head_speed;
+    if (v == head_length) return &s.bench.head_length;
+    if (v == body_length) return &s.bench.body_length;
+    if (v == width) return &s.bench.width;
+    if (v == hole_offset) return &s.bench.hole_offset;
+    if (v == start_turn) return &s.path.start_turn;
+    if (v == turn_radius) return &s.path.turn_radius;
+    if (v == turn_pitch) return &s.path.turn_pitch;
+    if (v == arc_ratio) return &s.path.arc_ratio;
+    return nullptr;  // the bench count is a whole number
+}
+
+// The flags of a set of values, in the table's order.
+val flags_of(dragon::ScenarioValues values) {
+    val out = val::array();
+    for (const Key& k : kKeys)
+        if (values & k.value) out.call<void>("push", std::string(k.flag));
+    return out;
+}
+
+// A refusal for the page: the library's sentence, and the flags of the values it concerns.
+val refusal(const std::string& message, dragon::ScenarioValues values) {
+    val out = val::object();
+    out.set("error", message);
+    out.set("flags", flags_of(values));
+    return out;
+}
+
+// Every leaf of an answer under its key path ("first_contact.time"; arrays are leaves), as the
+// JSON text json_text writes for it: the text it has inside the whole answer.
+void add_leaves(const dragon::Json& j, const std::string& path, val& out) {
+    if (j.is_object() && !j.empty()) {
+        for (const auto& [key, value] : j.items()) add_leaves(value, path.empty() ? key : path + "." + key, out);
+        return;
+    }
+    out.set(path, dragon::json_text(j));
+}
+
+val answer_val(const dragon::Json& j) {
+    val out = val::object();
+    out.set("json", dragon::json_text(j));
+    val leaves = val::object();
+    add_leaves(j, "", leaves);
+    out.set("leaves", leaves);
+    return out;
+}
+
+// The executor every search runs on: this thread.
+dragon::InlineExecutor& here() {
+    static dragon::InlineExecutor ex;
+    return ex;
+}
+
+class Engine {
+public:
+    Engine() { dragon::set_default_workers(1); }
+
+    // The contest's values, by flag name.
+    static val defaults() {
+        dragon::Scenario s;
+        val out = val::object();
+        for (const Key& k : kKeys) {
+            if (k.value == dragon::value::bench_count) out.set(k.flag, s.bench.bench_count);
+            else out.set(k.flag, *slot(s, k.value));
+        }
+        return out;
+    }
+
+    // Sets the scenario from {flag: number} and "path" ("spiral" or "turnaround"), checked for
+    // what the scene shows on that path (its values and the turning space). Returns null, or a
+    // refusal ({error, flags}) and keeps the scenario it had.
+    val set_scenario(val keys) {
+        dragon::Scenario s;
+        const std::string kind = keys["path"].isString() ? keys["path"].as<std::string>() : "spiral";
+        s.path.kind = kind == "turnaround" ? dragon::PathKind::turnaround : dragon::PathKind::spiral;
+        for (const Key& k : kKeys) {
+            const val v = keys[k.flag];
+            if (v.isUndefined() || v.isNull()) continue;
+            const double x = v.as<double>();
+            if (k.value == dragon::value::bench_count) {
+                if (!(x == std::floor(x)) || !(x >= 1 && x <= 1000000))
+                    return refusal("bench count " + dragon::error_value(x) +
+                                       " is not allowed: the chain needs 1 to 1000000 benches",
+                                   dragon::value::bench_count);
+                s.bench.bench_count = static_cast<int>(x);
+            } else {
+                *slot(s, k.value) = x;
+            }
+        }
+        try {
+            dragon::validate(s, dragon::values_read(s.path.kind) | dragon::value::turn_radius);
+            sim_.emplace(s);
+            range_ = sim_->valid_range();
+        } catch (const dragon::ScenarioError& e) {
+            return refusal(e.what(), e.values);
+        } catch (const dragon::InputError& e) {
+            return refusal(e.what(), 0);
+        }
+        return val::null();
+    }
+
+    // The valid motion: {from, to, from_travel, to_travel} (s, m; infinite ends as +-Infinity)
+    // and the jams that end it ({time, handle, sentence}, or null).
+    val range() const {
+        val out = val::object();
+        out.set("from", range_.from);
+        out.set("to", range_.to);
+        out.set("from_travel", range_.from_travel);
+        out.set("to_travel", range_.to_travel);
+        out.set("before", jam_val(range_.before));
+        out.set("after", jam_val(range_.after));
+        out.set("end_time", sim_->end_time());
+        return out;
+    }
+
+    // The chain at time t into a buffer: per handle x, y, speed (N + 1 of them), then per bench
+    // centre x, y, axis x, y, half length, half width (N). A view of the engine's memory, valid
+    // until the next call. Throws (to JS) for a t outside the valid motion.
+    val frame(double t) {
+        sim_->frame_into(t, frame_);
+        const std::size_t h = frame_.handles.size(), b = frame_.benches.size();
+        buffer_.resize(3 * h + 6 * b);
+        double* p = buffer_.data();
+        for (const dragon::Handle& x : frame_.handles) {
+            *p++ = x.pos.x();
+            *p++ = x.pos.y();
+            *p++ = x.speed;
+        }
+        for (const dragon::Rect& r : frame_.benches) {
+            *p++ = r.centre.x();
+            *p++ = r.centre.y();
+            *p++ = r.axis.x();
+            *p++ = r.axis.y();
+            *p++ = r.half_length;
+            *p++ = r.half_width;
+        }
+        return val(emscripten::typed_memory_view(buffer_.size(), buffer_.data()));
+    }
+
+    // The last frame's head arc position, m.
+    double head_arc() const { return frame_.head_arc; }
+    double head_arc_at(double t) const { return sim_->head_arc(t); }
+
+    // The last frame's nearest non-adjacent pair {distance, a, b, x, y} and its overlapping pairs
+    // [{a, b, depth, x, y}] (past the first contact).
+    val gaps() const {
+        val out = val::object();
+        const dragon::Clearance c = dragon::clearance(frame_);
+        out.set("distance", c.distance);
+        out.set("a", c.bench_a);
+        out.set("b", c.bench_b);
+        out.set("x", c.point.x());
+        out.set("y", c.point.y());
+        val list = val::array();
+        if (c.distance < 0)
+            for (const dragon::Overlap& o : dragon::overlaps(frame_)) {
+                val v = val::object();
+                v.set("a", o.bench_a);
+                v.set("b", o.bench_b);
+                v.set("depth", o.depth);
+                v.set("x", o.point.x());
+                v.set("y", o.point.y());
+                list.call<void>("push", v);
+            }
+        out.set("overlaps", list);
+        return out;
+    }
+
+    // Bench k's nearest other non-adjacent bench in the last frame: {bench, distance, x, y}.
+    val nearest_to(int k) const {
+        val out = val::object();
+        const int n = static_cast<int>(frame_.benches.size());
+        if (k < 1 || k > n) k = 0;  // no such bench: nothing near it
+        double best = std::numeric_limits<double>::infinity();
+        int who = 0;
+        dragon::Vec2 at = dragon::Vec2::Zero();
+        for (int j = 1; k > 0 && j <= n; ++j) {
+            if (std::abs(j - k) < 2) continue;
+            const dragon::Separation sep = dragon::separation(frame_.benches[k - 1], frame_.benches[j - 1]);
+            if (sep.distance < best) {
+                best = sep.distance;
+                who = j;
+                at = sep.point;
+            }
+        }
+        out.set("bench", who);
+        out.set("distance", best);
+        out.set("x", at.x());
+        out.set("y", at.y());
+        return out;
+    }
+
+    // Points of the path every `step` metres of arc from s0 to s1 (cut to the path), x, y pairs.
+    val path_points(double s0, double s1, double step) {
+        const dragon::Path& p = sim_->path();
+        s0 = std::max(s0, p.s_min());
+        s1 = std::min(s1, p.s_max());
+        points_.clear();
+        if (s1 > s0 && step > 0) {
+            const int n = static_cast<int>(std::min(2e5, std::ceil((s1 - s0) / step)));
+            for (int i = 0; i <= n; ++i) {
+                const dragon::Located l = p.at_arc(s0 + (s1 - s0) * i / n);
+                points_.push_back(l.pos.x());
+                points_.push_back(l.pos.y());
+            }
+        }
+        return val(emscripten::typed_memory_view(points_.size(), points_.data()));
+    }
+
+    // The nearest gap between non-adjacent benches at `count` moments evenly over [t0, t1]
+    // (negative: overlapping, past the first contact), m; gaps wider than 1 m are given as 1 m.
+    val gap_curve(double t0, double t1, int count) {
+        gaps_.assign(static_cast<std::size_t>(std::max(count, 0)), 0.0);
+        dragon::Frame f;
+        dragon::BroadPhase scratch;
+        for (int i = 0; i < count; ++i) {
+            sim_->frame_into(count > 1 ? t0 + (t1 - t0) * i / (count - 1) : t0, f);
+            gaps_[i] = std::min(1.0, dragon::clearance(f, 1.0, scratch).distance);
+        }
+        return val(emscripten::typed_memory_view(gaps_.size(), gaps_.data()));
+    }
+
+    // The S-curve of the turnaround path: {c1x, c1y, r1, c2x, c2y, r2, ax, ay, bx, by, jx, jy}.
+    val s_curve() const {
+        const dragon::SCurve d = dragon::design_s_curve(sim_->scenario());
+        val out = val::object();
+        out.set("c1x", d.c1.x());
+        out.set("c1y", d.c1.y());
+        out.set("r1", d.r1);
+        out.set("c2x", d.c2.x());
+        out.set("c2y", d.c2.y());
+        out.set("r2", d.r2);
+        out.set("ax", d.entry.x());
+        out.set("ay", d.entry.y());
+        out.set("bx", d.exit.x());
+        out.set("by", d.exit.y());
+        out.set("jx", d.joint.x());
+        out.set("jy", d.joint.y());
+        out.set("length", d.length);
+        return out;
+    }
+
+    // One question's answer for this scenario as its command computes it with default options
+    // ("collide", "min-pitch", "turnaround", "max-speed"): {json, leaves}, or a refusal
+    // ({error, flags}). `progress` (a function or undefined) hears (done, total) of the long scans.
+    val answer(const std::string& command, val progress) const {
+        dragon::Scenario s = sim_->scenario();
+        const dragon::WorkProgress report = [progress](std::int64_t done, std::int64_t total) {
+            if (progress.typeOf().as<std::string>() == "function")
+                progress(static_cast<double>(done), static_cast<double>(total));
+        };
+        try {
+            if (command == "collide") {
+                const dragon::Simulation sim(s);
+                return answer_val(dragon::collide_answer(
+                    dragon::collide(sim, dragon::default_window(s.path.kind), &here()), true));
+            }
+            if (command == "min-pitch") {
+                s.path.kind = dragon::PathKind::spiral;
+                dragon::validate(s, dragon::value::bench | dragon::value::head_speed | dragon::value::start_turn |
+                                        dragon::value::turn_radius);
+                dragon::MinPitchOptions options;
+                options.progress = report;
+                options.executor = &here();
+                return answer_val(dragon::min_pitch_answer(dragon::min_pitch(s, 0.35, 0.55, options), s.path.turn_radius));
+            }
+            if (command == "turnaround") {
+                s.path.kind = dragon::PathKind::turnaround;
+                dragon::validate(s);
+                const dragon::TurnaroundStudy st = dragon::study_turnaround(s);
+                const dragon::RunClearance clear = dragon::min_clearance(s, dragon::kTurnaroundWindow, report, &here());
+                return answer_val(dragon::turnaround_answer(st.design, st.design_jam, clear, &st));
+            }
+            if (command == "max-speed") {
+                s.path.kind = dragon::PathKind::turnaround;
+                dragon::validate(s);
+                return answer_val(dragon::max_speed_answer(
+                    dragon::max_head_speed(s, 2.0, dragon::kTurnaroundWindow, &here()), 2.0));
+            }
+            return refusal("no such question: " + command, 0);
+        } catch (const dragon::ScenarioError& e) {
+            return refusal(e.what(), e.values);
+        } catch (const std::exception& e) {  // InputError (a window past the motion, say), SolverError
+            return refusal(e.what(), 0);
+        }
+    }
+
+    // One cell of a minimum-pitch map: Q3 for this scenario with another width and body length,
+    // searched over [lo, hi] on a first scan of `grid` (as `dragon sweep --measure min-pitch`):
+    // {pitch (NaN when the range holds no change), below, above}, or {error}.
+    val min_pitch_cell(double width, double body_length, double lo, double hi, double grid) const {
+        dragon::Scenario s = sim_->scenario();
+        s.path.kind = dragon::PathKind::spiral;
+        s.bench.width = width;
+        s.bench.body_length = body_length;
+        val out = val::object();
+        try {
+            dragon::MinPitchOptions options;
+            options.grid = grid;
+            options.executor = &here();
+            const dragon::MinPitch m = dragon::min_pitch(s, lo, hi, options);
+            out.set("pitch", m.pitch);
+            out.set("below", m.below_range);
+            out.set("above", m.above_range);
+        } catch (const std::exception& e) {
+            out.set("error", std::string(e.what()));
+        }
+        return out;
+    }
+
+private:
+    static val jam_val(const std::optional<dragon::Jam>& j) {
+        if (!j) return val::null();
+        val out = val::object();
+        out.set("time", j->time);
+        out.set("travel", j->travel);
+        out.set("handle", j->handle);
+        out.set("kind", std::string(dragon::to_string(j->kind)));
+        out.set("ahead", j->ahead);
+        out.set("x", j->point.x());
+        out.set("y", j->point.y());
+        out.set("sentence", dragon::jam_sentence(*j));
+        return out;
+    }
+
+    std::optional<dragon::Simulation> sim_;
+    dragon::ValidRange range_;
+    dragon::Frame frame_;
+    std::vector<double> buffer_;
+    std::vector<double> points_;
+    std::vector<double> gaps_;
+};
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(dragon_engine) {
+    emscripten::class_<Engine>("Engine")
+        .constructor<>()
+        .class_function("defaults", &Engine::defaults)
+        .function("setScenario", &Engine::set_scenario)
+        .function("range", &Engine::range)
+        .function("frame", &Engine::frame)
+        .function("headArc", &Engine::head_arc)
+        .function("headArcAt", &Engine::head_arc_at)
+        .function("gaps", &Engine::gaps)
+        .function("nearestTo", &Engine::nearest_to)
+        .function("pathPoints", &Engine::path_points)
+        .function("sCurve", &Engine::s_curve)
+        .function("gapCurve", &Engine::gap_curve)
+        .function("answer", &Engine::answer)
+        .function("minPitchCell", &Engine::min_pitch_cell);
+}
