@@ -29,7 +29,9 @@ from __future__ import annotations
 import io
 import json
 import os
+import sys
 import threading
+import time
 from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
 
 from . import _benchdragon as _core
@@ -315,23 +317,72 @@ def _as_times(times: Iterable[float]):
 # ---- Progress --------------------------------------------------------------------------------
 
 
+# As the tool draws its progress line: nothing before half a second (quick calls show nothing),
+# then at most ten redraws a second.
+_PROGRESS_FIRST = 0.5
+_PROGRESS_EVERY = 0.1
+
+
+def _in_jupyter() -> bool:
+    """Whether this is a Jupyter kernel (whose front end shows the bar), not a plain interpreter."""
+    ipython = sys.modules.get("IPython")
+    shell = ipython.get_ipython() if ipython is not None else None
+    return shell is not None and getattr(shell, "kernel", None) is not None
+
+
+def _widgets_shown() -> bool:
+    """Whether a Jupyter front end can show ipywidgets: version 7 on, whose messages today's front
+    ends and nbconvert read (version 6, Debian 12's, opens its widgets in a form neither reads)."""
+    try:
+        import ipywidgets
+    except ImportError:
+        return False
+    try:
+        return int(str(ipywidgets.__version__).split(".")[0]) >= 7
+    except ValueError:
+        return False
+
+
+def _progress_shown() -> bool:
+    """Where the tool would show progress: stderr a terminal, or a Jupyter kernel. Never on a
+    stderr redirected to a file or a pipe (a log would fill with redraws)."""
+    if _in_jupyter():
+        return True
+    try:
+        return sys.stderr is not None and sys.stderr.isatty()
+    except (AttributeError, ValueError):  # no stderr, or a closed one
+        return False
+
+
 def _progress(progress, unit: str, description: str):
     """A (callback, closer) pair: the callback hears (done, total). progress=True shows a tqdm
-    bar when tqdm is installed; a callable is called as is; False or None shows nothing."""
+    bar as the tool shows its progress line: only on a terminal or in Jupyter, not in the first
+    half second, redrawn at most ten times a second (None is given to the library otherwise, so
+    nothing is called); a callable is called as is, with every update; False or None shows
+    nothing."""
     if callable(progress):
         return progress, lambda: None
-    if not progress:
+    if not progress or not _progress_shown():
         return None, lambda: None
     try:
-        from tqdm.auto import tqdm
+        if _in_jupyter() and _widgets_shown():
+            from tqdm.notebook import tqdm
+        else:  # a terminal, or a kernel with no widgets: tqdm's text line (Jupyter honours its \r)
+            from tqdm import tqdm
     except ImportError:
         return None, lambda: None
     bar = None
+    started = time.monotonic()
+    drawn = 0.0
 
     def update(done: int, total: int) -> None:
-        nonlocal bar
+        nonlocal bar, drawn
+        now = time.monotonic()
+        if now - started < _PROGRESS_FIRST or now - drawn < _PROGRESS_EVERY:
+            return
+        drawn = now
         if bar is None:
-            bar = tqdm(total=total, unit=unit, desc=description, leave=False)
+            bar = tqdm(total=total, unit=unit, desc=description, leave=False, mininterval=_PROGRESS_EVERY)
         bar.n = done
         bar.refresh()
 
