@@ -482,8 +482,9 @@ class Picture:
         return self._pixels()
 
     def save(self, path: Union[str, os.PathLike]) -> None:
-        """Writes the picture to `path` as the tool writes its files: all new or as it was."""
-        _core._save_bytes(self.data, os.fspath(path))
+        """Writes the picture to `path` as the tool writes its files: all new or as it was. The
+        name's extension is the picture's format (``.png`` for a PNG); InputError otherwise."""
+        _core._save_bytes(self.data, os.fspath(path), self.format)
 
     def __bytes__(self) -> bytes:
         return self.data
