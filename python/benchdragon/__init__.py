@@ -223,6 +223,11 @@ class Frame:
         for k in self.__slots__:
             setattr(self, k, d[k])
 
+    def __eq__(self, other: object) -> bool:
+        return type(other) is type(self) and _same_slots(self, other)
+
+    __hash__ = None  # holds arrays: equal by value, not hashable
+
     def __repr__(self) -> str:
         return f"<Frame t={self.time:g} s: {len(self.speeds)} handles>"
 
@@ -235,11 +240,30 @@ class Frames:
     def __init__(self, times, positions, speeds) -> None:
         self.times, self.positions, self.speeds = times, positions, speeds
 
+    def __eq__(self, other: object) -> bool:
+        return type(other) is type(self) and _same_slots(self, other)
+
+    __hash__ = None
+
     def __len__(self) -> int:
         return len(self.times)
 
     def __repr__(self) -> str:
         return f"<Frames: {self.positions.shape[0]} times x {self.positions.shape[1]} handles>"
+
+
+def _same_slots(a: Any, b: Any) -> bool:
+    """Every slot of `a` and `b` equal, arrays element by element (NaN equal to NaN)."""
+    import numpy as np
+
+    for k in type(a).__slots__:
+        x, y = getattr(a, k), getattr(b, k)
+        if isinstance(x, np.ndarray) or isinstance(y, np.ndarray):
+            if not (np.shape(x) == np.shape(y) and np.array_equal(x, y, equal_nan=True)):
+                return False
+        elif x != y and not (x != x and y != y):  # NaN (an unbounded window's end) equals NaN
+            return False
+    return True
 
 
 class ValidRange:
@@ -254,6 +278,11 @@ class ValidRange:
         self.from_travel, self.to_travel = d["from_travel"], d["to_travel"]
         self.before, self.after = _jam(d["before"]), _jam(d["after"])
 
+    def __eq__(self, other: object) -> bool:
+        return type(other) is type(self) and _same_slots(self, other)
+
+    __hash__ = None
+
     def __repr__(self) -> str:
         return f"<ValidRange {self.from_:g} .. {self.to:g} s>"
 
@@ -263,7 +292,8 @@ class Simulation:
     (Q4, Q5; t = 0 where the head enters the S-curve).
 
     Moments past the end of the dragon's valid motion (where a handle would have to jump) raise
-    ``InputError`` with ``.jam``. A Simulation may be shared by threads.
+    ``InputError`` with ``.jam``. A Simulation may be shared by threads; it pickles (as its
+    scenario and path: another process makes it anew) and compares equal by both.
     """
 
     def __init__(self, scenario: Optional[Scenario] = None, path: str = "spiral") -> None:
@@ -303,6 +333,15 @@ class Simulation:
     def time_of(self, travel: float) -> float:
         """The time (s) at which the head has travelled `travel` metres from its place at t = 0."""
         return self._sim.time_of(float(travel))
+
+    def __reduce__(self):
+        return (Simulation, (self.scenario, self.path))
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Simulation) and (self.scenario, self.path) == (other.scenario, other.path)
+
+    def __hash__(self) -> int:
+        return hash((self.scenario, self.path))
 
     def __repr__(self) -> str:
         return f"Simulation({self.scenario!r}, path={self.path!r})"
@@ -462,14 +501,26 @@ def solve(scenario: Optional[Scenario] = None, out: Union[None, str, os.PathLike
 class Picture:
     """A moment drawn as ``dragon render`` draws it: the file's bytes in ``data`` (``format`` is
     "png", "svg" or "pdf"), shown inline by Jupyter, written by :meth:`save` all-or-nothing.
-    ``time`` is the moment drawn (s)."""
+    ``time`` is the moment drawn (s), ``size`` (width, height) in pixels. Pictures pickle and
+    compare equal by their bytes, format, moment and size."""
 
-    def __init__(self, data: bytes, format: str, time: float, size: tuple, pixels: Callable[[], Any]) -> None:
+    def __init__(self, data: bytes, format: str, time: float, size: tuple, drawing: tuple) -> None:
         self.data = data
         self.format = format
         self.time = time
         self.size = size
-        self._pixels = pixels
+        # What render() drew (the simulation and its keywords): to_numpy() draws it again as pixels.
+        self._drawing = drawing
+
+    def __reduce__(self):
+        return (Picture, (self.data, self.format, self.time, self.size, self._drawing))
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Picture) and (self.data, self.format, self.time, tuple(self.size)) == (
+            other.data, other.format, other.time, tuple(other.size))
+
+    def __hash__(self) -> int:
+        return hash((self.data, self.format, self.time))
 
     def _repr_png_(self) -> Optional[bytes]:
         return self.data if self.format == "png" else None
@@ -479,7 +530,8 @@ class Picture:
 
     def to_numpy(self):
         """The picture's pixels as a (height, width, 4) uint8 RGBA array (opaque: alpha 255)."""
-        return self._pixels()
+        sim, when, collision, width, height, look, printed = self._drawing
+        return _core._render_rgba(sim._sim, when, collision, width, height, look, printed, ASSETS)
 
     def save(self, path: Union[str, os.PathLike]) -> None:
         """Writes the picture to `path` as the tool writes its files: all new or as it was. The
@@ -533,8 +585,7 @@ def render(sim: Union[Simulation, Scenario, None] = None, t: Optional[float] = N
     printed = {"print_size": print_size, "width_in": width_in, "width_cm": width_cm, "font_pt": font_pt, "dpi": dpi}
     data, time, drawn_w, drawn_h = _core._render(sim._sim, when, bool(collision), width, height, format, look,
                                                  printed, ASSETS)
-    return Picture(data, format, time, (drawn_w, drawn_h),
-                   lambda: _core._render_rgba(sim._sim, when, bool(collision), width, height, look, printed, ASSETS))
+    return Picture(data, format, time, (drawn_w, drawn_h), (sim, when, bool(collision), width, height, look, printed))
 
 
 def video(scenario: Optional[Scenario] = None, out: Union[str, os.PathLike] = "dragon.mp4", *, path: str = "spiral",
