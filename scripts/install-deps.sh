@@ -3,6 +3,10 @@
 #   install-deps.sh run   what the tool needs to build and run (scripts/run.sh)
 #   install-deps.sh       that, plus what the tests, the API reference, the Python package and the
 #                         notebook need
+# It says what it does in a few lines: what is missing, that it installs it, and how many packages
+# that came to. apt's and dpkg's own output (a thousand lines of unpacking on a fresh machine) goes
+# to a log it names, build/install-deps.log beside this checkout (/tmp if that cannot be written); on a failure the log's last lines
+# are printed too.
 set -euo pipefail
 run_packages=(
   build-essential cmake ninja-build pkg-config
@@ -32,11 +36,31 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-if ((${#missing[@]})); then
-  echo "install-deps: installing ${missing[*]}"
-  export DEBIAN_FRONTEND=noninteractive
-  apt-get update -qq
-  apt-get install -y -qq --no-install-recommends "${missing[@]}"
-else
+if ((${#missing[@]} == 0)); then
   echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
 fi
+
+log_dir="$(cd "$(dirname "$0")/.." && pwd)/build"
+mkdir -p "$log_dir" 2>/dev/null && [[ -w $log_dir ]] || log_dir=${TMPDIR:-/tmp}  # a read-only checkout
+log=$log_dir/install-deps.log
+: >"$log"
+echo "install-deps: ${#missing[@]} of ${#packages[@]} packages missing: ${missing[*]}"
+echo "install-deps: installing them with their dependencies (apt's output in $log)"
+start=$SECONDS
+# Runs one apt step with its output in the log; on a failure, says which and shows the log's end.
+step() {
+  echo "+ $*" >>"$log"
+  local status=0
+  "$@" >>"$log" 2>&1 </dev/null || status=$?
+  if ((status != 0)); then
+    echo "install-deps: $1 $2 failed (exit $status); the last lines of $log:" >&2
+    tail -n 25 "$log" | sed 's/^/  | /' >&2
+    exit "$status"
+  fi
+}
+export DEBIAN_FRONTEND=noninteractive
+step apt-get update
+step apt-get install -y --no-install-recommends "${missing[@]}"
+set_up=$(grep -c '^Setting up ' "$log" || true)
+echo "install-deps: done in $((SECONDS - start)) s: ${#missing[@]} packages, $set_up set up with their dependencies"

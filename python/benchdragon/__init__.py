@@ -29,7 +29,9 @@ from __future__ import annotations
 import io
 import json
 import os
+import sys
 import threading
+import time
 from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
 
 from . import _benchdragon as _core
@@ -223,6 +225,11 @@ class Frame:
         for k in self.__slots__:
             setattr(self, k, d[k])
 
+    def __eq__(self, other: object) -> bool:
+        return type(other) is type(self) and _same_slots(self, other)
+
+    __hash__ = None  # holds arrays: equal by value, not hashable
+
     def __repr__(self) -> str:
         return f"<Frame t={self.time:g} s: {len(self.speeds)} handles>"
 
@@ -235,11 +242,30 @@ class Frames:
     def __init__(self, times, positions, speeds) -> None:
         self.times, self.positions, self.speeds = times, positions, speeds
 
+    def __eq__(self, other: object) -> bool:
+        return type(other) is type(self) and _same_slots(self, other)
+
+    __hash__ = None
+
     def __len__(self) -> int:
         return len(self.times)
 
     def __repr__(self) -> str:
         return f"<Frames: {self.positions.shape[0]} times x {self.positions.shape[1]} handles>"
+
+
+def _same_slots(a: Any, b: Any) -> bool:
+    """Every slot of `a` and `b` equal, arrays element by element (NaN equal to NaN)."""
+    import numpy as np
+
+    for k in type(a).__slots__:
+        x, y = getattr(a, k), getattr(b, k)
+        if isinstance(x, np.ndarray) or isinstance(y, np.ndarray):
+            if not (np.shape(x) == np.shape(y) and np.array_equal(x, y, equal_nan=True)):
+                return False
+        elif x != y and not (x != x and y != y):  # NaN (an unbounded window's end) equals NaN
+            return False
+    return True
 
 
 class ValidRange:
@@ -254,6 +280,11 @@ class ValidRange:
         self.from_travel, self.to_travel = d["from_travel"], d["to_travel"]
         self.before, self.after = _jam(d["before"]), _jam(d["after"])
 
+    def __eq__(self, other: object) -> bool:
+        return type(other) is type(self) and _same_slots(self, other)
+
+    __hash__ = None
+
     def __repr__(self) -> str:
         return f"<ValidRange {self.from_:g} .. {self.to:g} s>"
 
@@ -263,7 +294,8 @@ class Simulation:
     (Q4, Q5; t = 0 where the head enters the S-curve).
 
     Moments past the end of the dragon's valid motion (where a handle would have to jump) raise
-    ``InputError`` with ``.jam``. A Simulation may be shared by threads.
+    ``InputError`` with ``.jam``. A Simulation may be shared by threads; it pickles (as its
+    scenario and path: another process makes it anew) and compares equal by both.
     """
 
     def __init__(self, scenario: Optional[Scenario] = None, path: str = "spiral") -> None:
@@ -304,6 +336,15 @@ class Simulation:
         """The time (s) at which the head has travelled `travel` metres from its place at t = 0."""
         return self._sim.time_of(float(travel))
 
+    def __reduce__(self):
+        return (Simulation, (self.scenario, self.path))
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Simulation) and (self.scenario, self.path) == (other.scenario, other.path)
+
+    def __hash__(self) -> int:
+        return hash((self.scenario, self.path))
+
     def __repr__(self) -> str:
         return f"Simulation({self.scenario!r}, path={self.path!r})"
 
@@ -317,23 +358,72 @@ def _as_times(times: Iterable[float]):
 # ---- Progress --------------------------------------------------------------------------------
 
 
+# As the tool draws its progress line: nothing before half a second (quick calls show nothing),
+# then at most ten redraws a second.
+_PROGRESS_FIRST = 0.5
+_PROGRESS_EVERY = 0.1
+
+
+def _in_jupyter() -> bool:
+    """Whether this is a Jupyter kernel (whose front end shows the bar), not a plain interpreter."""
+    ipython = sys.modules.get("IPython")
+    shell = ipython.get_ipython() if ipython is not None else None
+    return shell is not None and getattr(shell, "kernel", None) is not None
+
+
+def _widgets_shown() -> bool:
+    """Whether a Jupyter front end can show ipywidgets: version 7 on, whose messages today's front
+    ends and nbconvert read (version 6, Debian 12's, opens its widgets in a form neither reads)."""
+    try:
+        import ipywidgets
+    except ImportError:
+        return False
+    try:
+        return int(str(ipywidgets.__version__).split(".")[0]) >= 7
+    except ValueError:
+        return False
+
+
+def _progress_shown() -> bool:
+    """Where the tool would show progress: stderr a terminal, or a Jupyter kernel. Never on a
+    stderr redirected to a file or a pipe (a log would fill with redraws)."""
+    if _in_jupyter():
+        return True
+    try:
+        return sys.stderr is not None and sys.stderr.isatty()
+    except (AttributeError, ValueError):  # no stderr, or a closed one
+        return False
+
+
 def _progress(progress, unit: str, description: str):
     """A (callback, closer) pair: the callback hears (done, total). progress=True shows a tqdm
-    bar when tqdm is installed; a callable is called as is; False or None shows nothing."""
+    bar as the tool shows its progress line: only on a terminal or in Jupyter, not in the first
+    half second, redrawn at most ten times a second (None is given to the library otherwise, so
+    nothing is called); a callable is called as is, with every update; False or None shows
+    nothing."""
     if callable(progress):
         return progress, lambda: None
-    if not progress:
+    if not progress or not _progress_shown():
         return None, lambda: None
     try:
-        from tqdm.auto import tqdm
+        if _in_jupyter() and _widgets_shown():
+            from tqdm.notebook import tqdm
+        else:  # a terminal, or a kernel with no widgets: tqdm's text line (Jupyter honours its \r)
+            from tqdm import tqdm
     except ImportError:
         return None, lambda: None
     bar = None
+    started = time.monotonic()
+    drawn = 0.0
 
     def update(done: int, total: int) -> None:
-        nonlocal bar
+        nonlocal bar, drawn
+        now = time.monotonic()
+        if now - started < _PROGRESS_FIRST or now - drawn < _PROGRESS_EVERY:
+            return
+        drawn = now
         if bar is None:
-            bar = tqdm(total=total, unit=unit, desc=description, leave=False)
+            bar = tqdm(total=total, unit=unit, desc=description, leave=False, mininterval=_PROGRESS_EVERY)
         bar.n = done
         bar.refresh()
 
@@ -417,14 +507,26 @@ def solve(scenario: Optional[Scenario] = None, out: Union[None, str, os.PathLike
 class Picture:
     """A moment drawn as ``dragon render`` draws it: the file's bytes in ``data`` (``format`` is
     "png", "svg" or "pdf"), shown inline by Jupyter, written by :meth:`save` all-or-nothing.
-    ``time`` is the moment drawn (s)."""
+    ``time`` is the moment drawn (s), ``size`` (width, height) in pixels. Pictures pickle and
+    compare equal by their bytes, format, moment and size."""
 
-    def __init__(self, data: bytes, format: str, time: float, size: tuple, pixels: Callable[[], Any]) -> None:
+    def __init__(self, data: bytes, format: str, time: float, size: tuple, drawing: tuple) -> None:
         self.data = data
         self.format = format
         self.time = time
         self.size = size
-        self._pixels = pixels
+        # What render() drew (the simulation and its keywords): to_numpy() draws it again as pixels.
+        self._drawing = drawing
+
+    def __reduce__(self):
+        return (Picture, (self.data, self.format, self.time, self.size, self._drawing))
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Picture) and (self.data, self.format, self.time, tuple(self.size)) == (
+            other.data, other.format, other.time, tuple(other.size))
+
+    def __hash__(self) -> int:
+        return hash((self.data, self.format, self.time))
 
     def _repr_png_(self) -> Optional[bytes]:
         return self.data if self.format == "png" else None
@@ -434,11 +536,13 @@ class Picture:
 
     def to_numpy(self):
         """The picture's pixels as a (height, width, 4) uint8 RGBA array (opaque: alpha 255)."""
-        return self._pixels()
+        sim, when, collision, width, height, look, printed = self._drawing
+        return _core._render_rgba(sim._sim, when, collision, width, height, look, printed, ASSETS)
 
     def save(self, path: Union[str, os.PathLike]) -> None:
-        """Writes the picture to `path` as the tool writes its files: all new or as it was."""
-        _core._save_bytes(self.data, os.fspath(path))
+        """Writes the picture to `path` as the tool writes its files: all new or as it was. The
+        name's extension is the picture's format (``.png`` for a PNG); InputError otherwise."""
+        _core._save_bytes(self.data, os.fspath(path), self.format)
 
     def __bytes__(self) -> bytes:
         return self.data
@@ -487,8 +591,7 @@ def render(sim: Union[Simulation, Scenario, None] = None, t: Optional[float] = N
     printed = {"print_size": print_size, "width_in": width_in, "width_cm": width_cm, "font_pt": font_pt, "dpi": dpi}
     data, time, drawn_w, drawn_h = _core._render(sim._sim, when, bool(collision), width, height, format, look,
                                                  printed, ASSETS)
-    return Picture(data, format, time, (drawn_w, drawn_h),
-                   lambda: _core._render_rgba(sim._sim, when, bool(collision), width, height, look, printed, ASSETS))
+    return Picture(data, format, time, (drawn_w, drawn_h), (sim, when, bool(collision), width, height, look, printed))
 
 
 def video(scenario: Optional[Scenario] = None, out: Union[str, os.PathLike] = "dragon.mp4", *, path: str = "spiral",

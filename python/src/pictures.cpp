@@ -214,14 +214,27 @@ void bind_pictures(py::module_& m) {
           py::arg("look"), py::arg("print"), py::arg("assets"));
 
     m.def("_save_bytes",
-          [](const py::bytes& data, const std::string& path) {
+          [](const py::bytes& data, const std::string& path, const std::string& format) {
+              // The name says the format, as the tool's --out does: a picture is not written under
+              // another format's extension (an SVG's bytes in y.png).
+              const std::string ext = extension_of(path);
+              if (ext != "." + format) {
+                  const bool picture = ext == ".png" || ext == ".svg" || ext == ".pdf";
+                  throw InputError("path", fmt::format("'{}'", path),
+                                   fmt::format("the picture is {0}: give a name ending in .{0}{1}", format,
+                                               picture ? fmt::format(" (for {} render with format=\"{}\")", ext,
+                                                                     ext.substr(1))
+                                                       : ""));
+              }
               std::string text = data;
               py::gil_scoped_release release;
               AtomicFile file(path);
               write_text_file(file, text);
               file.commit();
           },
-          "Writes the bytes all-or-nothing, as the tool writes its files.", py::arg("data"), py::arg("path"));
+          "Writes a picture's bytes all-or-nothing, as the tool writes its files, to a name ending in its "
+          "format's extension.",
+          py::arg("data"), py::arg("path"), py::arg("format"));
 
     m.def("_video",
           [](const py::dict& scenario, const std::string& path, const std::string& out, const py::object& from,

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_run.hpp"
+#include "support/param_name.hpp"
 #include "support/scratch.hpp"
 
 namespace fs = std::filesystem;
@@ -33,7 +34,7 @@ struct BadCase {
     std::string word;  // the error line must name this
 };
 
-// Shown by gtest in test names and failures, instead of the object's bytes.
+// Shown by gtest in failures, instead of the object's bytes.
 void PrintTo(const BadCase& c, std::ostream* os) { *os << c.args; }
 
 class BadInput : public ::testing::TestWithParam<BadCase> {};
@@ -136,7 +137,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"simulate --digits 3 -o @OUT.xlsx", "--digits 3 is not allowed with .xlsx"},
         BadCase{"collide --digits 3", "--digits 3 is not allowed without -o"},
         // A target that cannot be written: named (not the hidden temporary file), and why.
-        BadCase{"simulate --to 1 -o /proc/x.csv", "output path '/proc/x.csv' is not writable: no file can be made in '/proc'"}));
+        BadCase{"simulate --to 1 -o /proc/x.csv", "output path '/proc/x.csv' is not writable: no file can be made in '/proc'"}),
+    [](const auto& info) { return dragon_test::param_name(info.index, info.param.args); });
 
 TEST(Cli, MalformedScenarioFileIsRefused) {
     const fs::path bad = scratch() / "bad.toml", unknown = scratch() / "unknown.toml";

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/param_name.hpp"
 #include "sweep_support.hpp"
 
 namespace fs = std::filesystem;
@@ -186,7 +187,7 @@ INSTANTIATE_TEST_SUITE_P(
                       std::pair{"--vary width=0.3 --measure collide", "--plot"},
                       std::pair{"--vary width=0.3,0.4 --measure collide --plot @DIR/map.jpg", "use .png, .svg or .pdf"},
                       std::pair{"--vary width=0.3,0.4 --measure collide --workers 0", "--workers 0"}),
-    [](const auto& info) { return "case" + std::to_string(info.index); });
+    [](const auto& info) { return dragon_test::param_name(info.index, info.param.first); });
 
 TEST(CliSweep, JsonRowsAndASweepFileSayWhatTheFlagsSay) {
     const fs::path dir = dragon_test::scratch_dir();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dragon/sweep.hpp"
+#include "support/param_name.hpp"
 
 using namespace dragon;
 
@@ -57,7 +58,8 @@ INSTANTIATE_TEST_SUITE_P(Specs, SweepAxisBad,
                                            "width=0.2:0.4:0", "width=0.2:0.4:2.5", "width=0.2:0.4:1", "width=a,b",
                                            "width=0.2,,0.3", "width=nan", "width=inf,1", "width=0.2,0.2",
                                            "width=0.3:0.3:3", "bench-count=1:2:3", "bench-count=1.5", "width=1:2:1e9",
-                                           "width=1::3", "width=1:2:3:4"));
+                                           "width=1::3", "width=1:2:3:4"),
+                         [](const auto& info) { return dragon_test::param_name(info.index, info.param); });
 
 TEST(SweepGrid, EveryCombinationOnceFirstAxisSlowest) {
     const SweepGrid g({parse_axis("width=0.2,0.3"), parse_axis("body-length=1.6:2.0:3"), parse_axis("speed=1,2")});

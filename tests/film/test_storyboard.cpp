@@ -1,6 +1,8 @@
 // Storyboards read into data, and every kind of bad input named by its shot and key.
 #include <gtest/gtest.h>
 
+#include <ostream>
+
 #include "dragon/film.hpp"
 
 using namespace dragon;
@@ -80,6 +82,8 @@ struct Bad {
     std::string toml;
     std::string says;  // the message must contain this
 };
+// Shown by gtest in failures, instead of the object's bytes.
+void PrintTo(const Bad& c, std::ostream* os) { *os << c.name; }
 
 class BadStoryboard : public ::testing::TestWithParam<Bad> {};
 

@@ -148,3 +148,22 @@ def test_print_sizes_as_the_tool_draws_them(dragon, tmp_path, flags, kwargs):
     with pytest.raises(bd.InputError) as e:
         bd.render(t=300, font_pt=0.5)
     assert e.value.field == "font_pt"
+
+
+@pytest.mark.parametrize("format", ["png", "svg", "pdf"])
+def test_save_refuses_a_name_of_another_format(tmp_path, format):
+    # As the tool refuses `render -o y.png` for anything but a PNG: the name says the format.
+    pic = bd.render(t=10, format=format, size=(64, 48))
+    for ext in ["png", "svg", "pdf", "jpg", ""]:
+        if ext == format:
+            continue
+        name = tmp_path / (f"y.{ext}" if ext else "y")
+        with pytest.raises(bd.InputError) as e:
+            pic.save(name)
+        assert e.value.field == "path"
+        assert str(name) in e.value.value
+        assert f".{format}" in e.value.allowed
+        assert "\n" not in str(e.value)
+        assert not name.exists() and list(tmp_path.iterdir()) == []
+    pic.save(tmp_path / f"y.{format.upper()}")  # extensions are matched as the tool matches them
+    assert (tmp_path / f"y.{format.upper()}").read_bytes() == pic.data

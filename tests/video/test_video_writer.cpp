@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <ostream>
 #include <string>
 
 #include <fmt/format.h>
@@ -54,6 +55,8 @@ struct Case {
     const char* codec;
     double min_psnr;  // dB
 };
+// Shown by gtest in failures, instead of the object's bytes.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.file; }
 
 class RoundTrip : public ::testing::TestWithParam<Case> {};
 
