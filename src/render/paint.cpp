@@ -45,6 +45,12 @@ void log_placed(cairo_t* cr, LayoutItem::Kind kind, double x0, double y0, double
     double dx = size, dy = 0;
     cairo_user_to_device_distance(cr, &dx, &dy);
     p.size = std::hypot(dx, dy);
+    if (kind == LayoutItem::Kind::text) {  // a text the clip cuts (a panel's, a plot's frame)
+        double c0 = 0, c1 = 0, c2 = 0, c3 = 0;
+        cairo_clip_extents(cr, &c0, &c1, &c2, &c3);
+        const double slack = 0.5 * (x1 - x0 > 0 ? 1.0 : 0.0);
+        p.clipped = x0 < c0 - slack || y0 < c1 - slack || x1 > c2 + slack || y1 > c3 + slack;
+    }
     recording->push_back(std::move(p));
 }
 

@@ -2,7 +2,7 @@
 // frames), in English and Chinese, at every print size and at the smallest sizes accepted, run
 // in-process through the tool's own commands with the renderer's layout log on (render/paint.hpp:
 // every line of text, legend and mark it placed, in the page's units). On every picture:
-//   - no text leaves the page;
+//   - no text leaves the page, nor the clip it is drawn in (a plot's frame, a panel);
 //   - no text overlaps another;
 //   - a legend covers no mark it explains (a touching bench, a plotted point) and no text of
 //     its picture but its own;
@@ -100,6 +100,7 @@ std::vector<std::string> faults(const Picture& pic, double floor, double max_hei
     if (texts.empty()) out.push_back("no text was recorded");
     for (const LayoutItem* t : texts) {
         if (!inside(*t, page, slack)) out.push_back("off the page: " + where(*t));
+        else if (t->clipped) out.push_back("cut by the clip it is drawn in: " + where(*t));
         if (t->size < floor * (1 - 1e-6))
             out.push_back(fmt::format("under the floor ({:.2f} < {:.2f}): {}", t->size, floor, where(*t)));
     }

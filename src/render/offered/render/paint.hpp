@@ -67,6 +67,7 @@ struct LayoutItem {
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // the box, device units
     double size = 0;                         // text: its size (em), device units
     std::string text;                        // text: what it says; legend, mark: what it is
+    bool clipped = false;                    // text: part of it lies outside the clip it is drawn in
 };
 // Records every placement drawn on this thread while alive (one at a time per thread).
 class LayoutRecording {
