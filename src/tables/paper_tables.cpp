@@ -277,7 +277,7 @@ std::string latex(const PaperTable& t) {
         spec += fmt::format("S[table-format={}{}.{}]", widest.negative ? "-" : "", widest.integer, widest.decimals);
     }
     std::string out = fmt::format(
-        "% {} (dragon solve --tables latex): needs \\usepackage{{booktabs,siunitx}}{}\n"
+        "% {} (benchdragon): needs \\usepackage{{booktabs,siunitx}}{}\n"
         "\\begin{{table}}[htbp]\n  \\centering\n  \\small\n  \\caption{{{}}}\n  \\label{{{}}}\n"
         "  \\begin{{tabular}}{{{}}}\n    \\toprule\n",
         t.id, "; Chinese: xeCJK or ctex (xelatex)", latex_escape(t.caption), t.label, spec);
