@@ -67,40 +67,39 @@ void expect_speeds(const std::vector<std::vector<std::string>>& t, const dragon:
     }
 }
 
+// Each test solves into its own scratch folder (ctest runs the tests in parallel, a process each).
 class SolveTables : public ::testing::Test {
 protected:
-    static void SetUpTestSuite() {
-        dir_ = new fs::path(fs::path(DRAGON_TEST_TMP) / "SolveTables");
-        fs::remove_all(*dir_);
+    void SetUp() override {
+        dir_ = dragon_test::fresh_dir("solved");
         for (const char* f : {"csv", "latex", "markdown"}) {
-            const auto r = run_dragon(fmt::format("solve --only q1,q2,q4 --tables {} -q -o {}/{}", f, dir_->string(), f));
+            const auto r = run_dragon(fmt::format("solve --only q1,q2,q4 --tables {} -q -o {}/{}", f, dir_.string(), f));
             ASSERT_EQ(r.code, 0) << r.err;
         }
-        const auto zh = run_dragon(fmt::format("solve --only q1,q2,q4 --tables latex --lang zh -q -o {}/zh", dir_->string()));
+        const auto zh = run_dragon(fmt::format("solve --only q1,q2,q4 --tables latex --lang zh -q -o {}/zh", dir_.string()));
         ASSERT_EQ(zh.code, 0) << zh.err;
     }
-    static fs::path* dir_;
+    fs::path dir_;
 };
-fs::path* SolveTables::dir_ = nullptr;
 
 TEST_F(SolveTables, Q1AndQ4TablesHoldTheHandlesAtTheContestsMoments) {
     dragon::Scenario s;
     const dragon::Simulation spiral(s);
-    expect_positions(read_csv(*dir_ / "csv/table_q1_positions.csv"), spiral, {0, 60, 120, 180, 240, 300});
-    expect_speeds(read_csv(*dir_ / "csv/table_q1_speeds.csv"), spiral, {0, 60, 120, 180, 240, 300});
+    expect_positions(read_csv(dir_ / "csv/table_q1_positions.csv"), spiral, {0, 60, 120, 180, 240, 300});
+    expect_speeds(read_csv(dir_ / "csv/table_q1_speeds.csv"), spiral, {0, 60, 120, 180, 240, 300});
     // The published values (PROBLEM.md): handle 1 at t = 0.
-    EXPECT_EQ(read_csv(*dir_ / "csv/table_q1_positions.csv")[3][1], "8.363824");
+    EXPECT_EQ(read_csv(dir_ / "csv/table_q1_positions.csv")[3][1], "8.363824");
     s.path.kind = dragon::PathKind::turnaround;
     const dragon::Simulation turn(s);
-    expect_positions(read_csv(*dir_ / "csv/table_q4_positions.csv"), turn, {-100, -50, 0, 50, 100});
-    expect_speeds(read_csv(*dir_ / "csv/table_q4_speeds.csv"), turn, {-100, -50, 0, 50, 100});
+    expect_positions(read_csv(dir_ / "csv/table_q4_positions.csv"), turn, {-100, -50, 0, 50, 100});
+    expect_speeds(read_csv(dir_ / "csv/table_q4_speeds.csv"), turn, {-100, -50, 0, 50, 100});
 }
 
 TEST_F(SolveTables, Q2TableAndTheAnswersHoldTheFirstContact) {
     const dragon::Simulation sim{dragon::Scenario{}};
     const dragon::CollideAnswer a = dragon::collide(sim, {dragon::Along::metres(0), dragon::Along::metres(430)});
     ASSERT_TRUE(a.contact);
-    const auto t = read_csv(*dir_ / "csv/table_q2_contact.csv");
+    const auto t = read_csv(dir_ / "csv/table_q2_contact.csv");
     ASSERT_EQ(t.size(), 1 + std::size(kHandles));
     for (std::size_t i = 0; i < std::size(kHandles); ++i) {
         const auto& h = a.contact->frame.handles[static_cast<std::size_t>(kHandles[i])];
@@ -108,7 +107,7 @@ TEST_F(SolveTables, Q2TableAndTheAnswersHoldTheFirstContact) {
         EXPECT_EQ(t[1 + i][2], six(h.pos.y()));
         EXPECT_EQ(t[1 + i][3], six(h.speed));
     }
-    const std::string answers = slurp(*dir_ / "csv/table_answers.csv");
+    const std::string answers = slurp(dir_ / "csv/table_answers.csv");
     EXPECT_NE(answers.find("412.47383768"), std::string::npos) << answers;
     EXPECT_NE(answers.find("13.621245"), std::string::npos) << answers;
 }
@@ -136,23 +135,23 @@ std::vector<std::string> numbers_in_csv(const fs::path& p) {
 
 TEST_F(SolveTables, LatexAndMarkdownHoldTheCsvsNumbersWithRulesCaptionsAndLabels) {
     for (const char* id : {"q1_positions", "q1_speeds", "q2_contact", "q4_positions", "q4_speeds", "answers"}) {
-        const std::vector<std::string> csv = numbers_in_csv(*dir_ / fmt::format("csv/table_{}.csv", id));
+        const std::vector<std::string> csv = numbers_in_csv(dir_ / fmt::format("csv/table_{}.csv", id));
         ASSERT_FALSE(csv.empty()) << id;
-        const std::string tex = slurp(*dir_ / fmt::format("latex/table_{}.tex", id));
+        const std::string tex = slurp(dir_ / fmt::format("latex/table_{}.tex", id));
         EXPECT_EQ(numbers_in(tex), csv) << id;
         for (const char* part : {"\\toprule", "\\midrule", "\\bottomrule", "\\caption{", "S[table-format="})
             EXPECT_NE(tex.find(part), std::string::npos) << id << " lacks " << part;
         EXPECT_NE(tex.find(fmt::format("\\label{{tab:dragon-{}}}", std::regex_replace(id, std::regex("_"), "-"))),
                   std::string::npos) << tex;
-        const std::string md = slurp(*dir_ / fmt::format("markdown/table_{}.md", id));
+        const std::string md = slurp(dir_ / fmt::format("markdown/table_{}.md", id));
         EXPECT_EQ(numbers_in(md), csv) << id;
         EXPECT_NE(md.find("\nTable: "), std::string::npos) << md;
         EXPECT_NE(md.find("---:|"), std::string::npos) << md;  // numbers right-aligned
     }
-    const std::string zh = slurp(*dir_ / "zh/table_q1_positions.tex");
+    const std::string zh = slurp(dir_ / "zh/table_q1_positions.tex");
     EXPECT_NE(zh.find("第101节龙身x (m)"), std::string::npos) << zh;
     EXPECT_NE(zh.find("龙尾（后）y (m)"), std::string::npos) << zh;
-    EXPECT_EQ(numbers_in(zh), numbers_in_csv(*dir_ / "csv/table_q1_positions.csv"));
+    EXPECT_EQ(numbers_in(zh), numbers_in_csv(dir_ / "csv/table_q1_positions.csv"));
 }
 
 // xelatex with ctex (Chinese) and booktabs and siunitx: every table, in English and in Chinese,
@@ -165,7 +164,7 @@ TEST_F(SolveTables, LatexCompilesWithXelatex) {
     if (std::system("kpsewhich ctexart.cls >/dev/null 2>&1") != 0 || std::system("kpsewhich siunitx.sty >/dev/null 2>&1") != 0)
         GTEST_SKIP() << "ctex or siunitx is not installed (Debian: texlive-lang-chinese, texlive-science)";
     for (const char* lang : {"latex", "zh"}) {
-        const fs::path d = *dir_ / lang;
+        const fs::path d = dir_ / lang;
         std::string doc = "\\documentclass[a4paper]{ctexart}\n\\usepackage[margin=2.5cm]{geometry}\n"
                           "\\usepackage{booktabs,siunitx}\n\\begin{document}\n";
         for (const char* id : {"q1_positions", "q1_speeds", "q2_contact", "q4_positions", "q4_speeds", "answers"})
