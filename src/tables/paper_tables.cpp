@@ -274,7 +274,9 @@ std::string latex(const PaperTable& t) {
             widest.integer = std::max(widest.integer, n.integer);
             widest.decimals = std::max(widest.decimals, n.decimals);
         }
-        spec += fmt::format("S[table-format={}{}.{}]", widest.negative ? "-" : "", widest.integer, widest.decimals);
+        // Digits ungrouped, as the workbooks and the contest print them (8.800000, not 8.800 000).
+        spec += fmt::format("S[table-format={}{}.{},group-digits=false]", widest.negative ? "-" : "", widest.integer,
+                            widest.decimals);
     }
     std::string out = fmt::format(
         "% {} (benchdragon): needs \\usepackage{{booktabs,siunitx}}{}\n"
