@@ -25,6 +25,7 @@ test_packages=(
   # and pip install . offline (setuptools and wheel from Debian).
   python3-dev pybind11-dev python3-numpy python3-pandas python3-pytest python3-hypothesis
   python3-distributed python3-tqdm python3-venv python3-pip python3-setuptools python3-wheel
+  python3-xarray python3-netcdf4   # Simulation.frames(...).to_xarray() and its netCDF files
   jupyter-nbconvert python3-nbformat python3-ipykernel python3-ipywidgets
 )
 case "${1:-all}" in

@@ -235,12 +235,42 @@ class Frame:
 
 
 class Frames:
-    """Frames at several moments: ``times`` (T,), ``positions`` (T, H, 2), ``speeds`` (T, H)."""
+    """Frames at several moments: ``times`` (T,), ``positions`` (T, H, 2), ``speeds`` (T, H);
+    ``scenario`` and ``path`` of the simulation they come from."""
 
-    __slots__ = ("times", "positions", "speeds")
+    __slots__ = ("times", "positions", "speeds", "scenario", "path")
 
-    def __init__(self, times, positions, speeds) -> None:
+    def __init__(self, times, positions, speeds, scenario: Optional["Scenario"] = None, path: str = "spiral") -> None:
         self.times, self.positions, self.speeds = times, positions, speeds
+        self.scenario, self.path = scenario, path
+
+    def to_xarray(self):
+        """An ``xarray.Dataset`` over dimensions time x handle x coordinate: ``position`` (m) and
+        ``speed`` (m/s, signed along the path), coordinates ``time`` (s), ``handle`` (0..H-1) and
+        ``coordinate`` ("x", "y"); the units in each variable's ``units`` attribute, the scenario's
+        values as attributes ``scenario_<name>`` and the path as ``path``. ``.to_netcdf(file)``
+        writes it (with python3-netcdf4 or scipy installed)."""
+        import numpy as np
+        import xarray as xr
+
+        t_count, h_count = self.speeds.shape
+        attrs = {"title": "Bench Dragon handles (benchdragon)", "path": self.path}
+        if self.scenario is not None:
+            attrs.update({f"scenario_{k}": v for k, v in self.scenario.to_dict().items()})
+        return xr.Dataset(
+            {
+                "position": (("time", "handle", "coordinate"), self.positions,
+                             {"units": "m", "long_name": "handle centre position"}),
+                "speed": (("time", "handle"), self.speeds,
+                          {"units": "m/s", "long_name": "handle speed, signed along the path"}),
+            },
+            coords={
+                "time": ("time", np.asarray(self.times), {"units": "s", "long_name": "time"}),
+                "handle": ("handle", np.arange(h_count), {"long_name": "handle (0: head front)"}),
+                "coordinate": ("coordinate", np.array(["x", "y"])),
+            },
+            attrs=attrs,
+        )
 
     def __eq__(self, other: object) -> bool:
         return type(other) is type(self) and _same_slots(self, other)
@@ -314,7 +344,7 @@ class Simulation:
 
     def frames(self, times: Iterable[float]) -> Frames:
         """The chain at each of `times` (s), computed in parallel straight into numpy arrays."""
-        return Frames(*self._sim.frames(_as_times(times)))
+        return Frames(*self._sim.frames(_as_times(times)), scenario=self.scenario, path=self.path)
 
     def to_pandas(self, times: Iterable[float]):
         """The frames at `times` in the tool's CSV layout: one row per handle per time, columns

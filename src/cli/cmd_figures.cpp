@@ -44,7 +44,7 @@ void register_figures(CLI::App& app, Registry& reg) {
                                              "text selectable: for papers)")
         ->excludes(list);
     sub->add_option("--theme", opt->theme, "Colour theme: light, dark or a .toml file (default light)")->excludes(list);
-    sub->add_option("--scale", opt->scale, "Pixel size relative to the gallery's ~1000 px (0.25..8, default 1)")
+    sub->add_option("--scale", opt->scale, "Pixel size relative to the gallery's ~1000 px (0.65..8, default 1)")
         ->excludes(list);
     sub->add_option("--only", opt->only, "Make only these figures, e.g. fig1_link_geometry,plot_speeds (as --list "
                                          "names them)")
@@ -87,7 +87,7 @@ void register_figures(CLI::App& app, Registry& reg) {
         ProgressLine progress("figures", opt->quiet);
         write_figures(opt->out, opt->scenario.resolve(), fo, [&](const FigureInfo&, const std::string& path) {
             status(opt->quiet, "wrote {}", path);  // said once the run's files are in place
-            progress.update(++done, total);
+            if (!path.ends_with(".csv")) progress.update(++done, total);  // a figure, not its data
         });
         return 0;
     };

@@ -11,6 +11,8 @@
 #include "wording.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/atomic_file.hpp"
+#include "dragon/language.hpp"
+#include "dragon/paper_tables.hpp"
 #include "dragon/tables.hpp"
 
 namespace dragon::cli {
@@ -22,8 +24,13 @@ struct SimulateOptions {
     double step = 1.0;
     std::string out;
     std::optional<int> digits;
+    std::string table;  // latex, markdown or csv: the paper-style tables of the frames instead
+    std::string lang = "en";
     bool quiet = false;
 };
+
+// The most frames a paper-style table shows: one column each.
+constexpr std::size_t kMaxTableFrames = 20;
 }  // namespace
 
 void register_simulate(CLI::App& app, Registry& reg) {
@@ -43,10 +50,30 @@ void register_simulate(CLI::App& app, Registry& reg) {
                     "Output file: .csv (long form), .json, or .xlsx (the contest's result1 layout); "
                     "CSV on stdout if omitted");
     sub->add_option("--digits", opt->digits, "Decimals of every number in CSV and JSON (t without trailing zeros), 0 to 17 (default 6)");
+    sub->add_option("--table", opt->table,
+                    "Instead of every handle, the paper-style tables of handles 0, 1, 51, 101, 151, 201 and the "
+                    "tail's rear handle, a column per frame (at most 20: choose --step), positions then speeds: latex "
+                    "(booktabs, siunitx), markdown (pandoc) or csv; on stdout, or -o FILE.tex, .md or .csv");
+    sub->add_option("--lang", opt->lang, "With --table, the language of its headers and captions: en (default) or zh");
     add_quiet_flag(sub, opt->quiet);
     reg["simulate"] = [opt](Executor& ex) {
         const std::string ext = opt->out.empty() ? ".csv" : extension_of(opt->out);
-        if (!opt->out.empty() && ext != ".csv" && ext != ".json" && ext != ".xlsx")
+        std::optional<TableFormat> table;
+        if (!opt->table.empty()) {
+            if (opt->table != "latex" && opt->table != "markdown" && opt->table != "csv")
+                throw InputError(fmt::format("--table {} is not allowed: use latex, markdown or csv", opt->table));
+            table = parse_table_format(opt->table);
+            if (!opt->out.empty() && ext != table_extension(*table))
+                throw InputError(fmt::format("--out {} has extension '{}': --table {} writes {}", opt->out, ext,
+                                             opt->table, table_extension(*table)));
+            if (opt->digits)
+                throw InputError(fmt::format("--digits {} is not allowed with --table: the tables hold 6 decimals, "
+                                             "as the workbooks", *opt->digits));
+        } else if (opt->lang != "en") {
+            throw InputError(fmt::format("--lang {} is not used: only --table has words in a language", opt->lang));
+        }
+        const Language lang = parse_language(opt->lang);
+        if (!table && !opt->out.empty() && ext != ".csv" && ext != ".json" && ext != ".xlsx")
             throw InputError(fmt::format("--out {} has extension '{}': use .csv, .json or .xlsx", opt->out, ext));
         if (opt->digits && ext == ".xlsx")
             throw InputError(fmt::format("--digits {} is not allowed with .xlsx: the contest's workbooks hold 6 "
@@ -73,6 +100,31 @@ void register_simulate(CLI::App& app, Registry& reg) {
         if (ext == ".xlsx" && frames.size() > kMaxWorkbookFrames)
             throw InputError(fmt::format("{} frames do not fit in one worksheet (at most {} "
                                          "columns): use a larger --step or .csv", frames.size(), kMaxWorkbookFrames));
+        if (table) {
+            if (frames.size() > kMaxTableFrames)
+                throw InputError(fmt::format("--table is not allowed with {} frames: a table shows at most {} "
+                                             "(a column each): use a larger --step", frames.size(), kMaxTableFrames));
+            PaperTable pos = positions_table(frames, lang), speeds = speeds_table(frames, lang);
+            pos.id = "positions", speeds.id = "speeds";
+            pos.label = "tab:dragon-positions", speeds.label = "tab:dragon-speeds";
+            std::string text;
+            if (*table == TableFormat::csv) {
+                // One CSV: the speeds' rows under the positions', the same columns.
+                pos.rows.insert(pos.rows.end(), speeds.rows.begin(), speeds.rows.end());
+                text = format_table(pos, *table);
+            } else {
+                text = format_table(pos, *table) + "\n" + format_table(speeds, *table);
+            }
+            if (opt->out.empty()) {
+                fmt::print("{}", text);
+                return 0;
+            }
+            AtomicFile out(opt->out);
+            write_text_file(out, text);
+            out.commit();
+            status(opt->quiet, "wrote {} ({})", opt->out, count_of(static_cast<long long>(frames.size()), "frame"));
+            return 0;
+        }
         if (opt->out.empty()) {
             print_csv(frames, stdout, digits);
             return 0;

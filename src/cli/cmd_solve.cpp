@@ -25,6 +25,8 @@
 #include "wording.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/contest.hpp"
+#include "dragon/language.hpp"
+#include "dragon/paper_tables.hpp"
 #include "dragon/tables.hpp"
 
 namespace dragon::cli {
@@ -39,6 +41,8 @@ struct SolveOptions {
     double grid = kDefaultPitchGrid;
     double limit = 2.0;
     WindowFlags window;
+    std::string tables;  // latex, markdown or csv: the paper's tables as files beside the workbooks
+    std::string lang = "en";
     bool quiet = false;
 };
 
@@ -94,8 +98,24 @@ void register_solve(CLI::App& app, Registry& reg) {
     sub->add_option("--limit", opt->limit, "Q5: handle speed limit, m/s (default 2)");
     opt->window.add_to(sub, "Q4's table and Q5's search from here (default -100m: 100 s before the turn at 1 m/s)",
                        "Q4's table and Q5's search up to here (default 100m)");
+    sub->add_option("--tables", opt->tables,
+                    "Also write the paper's tables beside the workbooks, one file a table (table_q1_positions, "
+                    "table_q1_speeds, table_q2_contact, table_q4_positions, table_q4_speeds, table_answers): latex "
+                    "(.tex: booktabs, siunitx), markdown (.md, for pandoc) or csv");
+    sub->add_option("--lang", opt->lang, "Language of the tables' headers and captions: en (default) or zh (the "
+                                         "workbooks' words: 龙头x (m), 第1节龙身 (m/s))");
     add_quiet_flag(sub, opt->quiet);
     reg["solve"] = [opt](Executor& ex) {
+        std::optional<TableFormat> table_format;
+        if (!opt->tables.empty()) {
+            if (opt->tables != "latex" && opt->tables != "markdown" && opt->tables != "csv")
+                throw InputError(fmt::format("--tables {} is not allowed: use latex, markdown or csv", opt->tables));
+            table_format = parse_table_format(opt->tables);
+        }
+        const Language lang = parse_language(opt->lang);
+        if (opt->lang != "en" && !table_format)
+            throw InputError(fmt::format("--lang {} is not used: only the tables of --tables have words in a "
+                                         "language (the workbooks' are the contest's)", opt->lang));
         const std::set<std::string> all{"q1", "q2", "q3", "q4", "q5"};
         ContestOptions contest;
         if (!opt->only.empty()) contest.questions.clear();
@@ -129,7 +149,7 @@ void register_solve(CLI::App& app, Registry& reg) {
         // place together at the end, so the set is all new or all old.
         std::vector<std::unique_ptr<AtomicFile>> files;
         std::vector<std::string> written;
-        const auto target = [&](bool needed, const char* name) -> AtomicFile* {
+        const auto target = [&](bool needed, const std::string& name) -> AtomicFile* {
             if (!needed) return nullptr;
             files.push_back(std::make_unique<AtomicFile>((fs::path(opt->dir) / name).string()));
             written.push_back(name);
@@ -139,6 +159,21 @@ void register_solve(CLI::App& app, Registry& reg) {
         AtomicFile* result2 = target(contest.asks(Question::q2), "result2.xlsx");
         AtomicFile* result4 = target(contest.asks(Question::q4), "result4.xlsx");
         AtomicFile* summary_json = target(true, "summary.json");
+        // The paper's tables, one file each, for the questions asked.
+        std::vector<std::pair<std::string, AtomicFile*>> table_files;
+        if (table_format) {
+            const auto table_target = [&](bool needed, const std::string& id) {
+                if (!needed) return;
+                table_files.emplace_back(id, target(true, "table_" + id + table_extension(*table_format)));
+            };
+            table_target(contest.asks(Question::q1), "q1_positions");
+            table_target(contest.asks(Question::q1), "q1_speeds");
+            table_target(contest.asks(Question::q2), "q2_contact");
+            table_target(contest.asks(Question::q4), "q4_positions");
+            table_target(contest.asks(Question::q4), "q4_speeds");
+            table_target(contest.asks(Question::q2) || contest.asks(Question::q3) || contest.asks(Question::q4) ||
+                             contest.asks(Question::q5), "answers");
+        }
         // The long workbooks (most of the time: libxlsxwriter formats and deflates every cell)
         // are written as soon as their tables are ready, while the other questions are answered.
         // (Nothing is written on stderr meanwhile: libxlsxwriter's closing mutes it.)
@@ -225,6 +260,13 @@ void register_solve(CLI::App& app, Registry& reg) {
                            v.max_head_speed, v.ratio, v.handle, v.time);
         }
         write_text_file(*summary_json, json_text(contest_summary(a, contest), 2) + "\n");
+        if (table_format) {
+            const std::vector<PaperTable> tables = contest_tables(a, lang);
+            for (auto& [id, file] : table_files) {
+                const auto t = std::find_if(tables.begin(), tables.end(), [&](const PaperTable& p) { return p.id == id; });
+                write_text_file(*file, t != tables.end() ? format_table(*t, *table_format) : "");
+            }
+        }
         std::vector<AtomicFile*> set;
         for (const auto& f : files) set.push_back(f.get());
         require_stdout_written();  // the tables all printed, or no file changes

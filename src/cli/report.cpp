@@ -7,17 +7,12 @@
 
 #include <fmt/format.h>
 
+#include "dragon/paper_tables.hpp"
 #include "dragon/tables.hpp"
 
 namespace dragon::cli {
 
-std::vector<int> summary_handles(int handle_count) {
-    std::vector<int> out;
-    for (int h : {0, 1, 51, 101, 151, 201})
-        if (h < handle_count - 1) out.push_back(h);
-    out.push_back(handle_count - 1);
-    return out;
-}
+std::vector<int> summary_handles(int handle_count) { return paper_handles(handle_count); }
 
 std::string handle_name(int handle, int handle_count) {
     if (handle == 0) return "head";

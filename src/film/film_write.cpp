@@ -24,7 +24,7 @@ void write_film_frame(const Film& film, double at, const std::string& path, doub
     const int index = std::min(film.frame_count() - 1, static_cast<int>(std::floor(at * fps + 1e-9)));
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, film.settings().width, film.settings().height));
     {
-        cairo::Context cr(cairo_create(surface.get()));
+        cairo::Context cr = cairo::make_context(surface.get());
         film.paint(index, cr.get());
     }
     // A palette PNG, as the gallery's: a third of the bytes, no visible change to a drawing.

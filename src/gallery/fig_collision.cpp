@@ -31,6 +31,10 @@ int others(int bench, int n) { return n - 1 - (bench > 1) - (bench < n); }
 // The height on the page of a picture w x h px that is as wide as the print size asks, in.
 double opt_height_in(const PrintSize& print, int w, int h) { return print.width_in * h / w; }
 
+// The tallest figure a page's text block holds, pt: US letter less 1 in margins, 9 in (A4 less
+// 2.5 cm margins is 700 pt).
+constexpr double kTextBlockHeightPt = 648.0;
+
 }  // namespace
 
 void broad_phase(const Context& c, const std::string& path) {
@@ -269,37 +273,51 @@ void pitch_states(const Context& c, const std::string& path) {
     c.tell(title);
     for (const auto& caption : captions) c.tell(caption);
 
-    // Three panels a row; two at a print size, where a third of a column is too narrow for a
-    // caption at the text size asked. There the captions wrap at that size instead of shrinking.
+    // Three panels a row on screen. At a print size two, where a third of a column is too
+    // narrow for a caption at the text size asked (the captions wrap at that size instead of
+    // shrinking), unless two a row make the figure taller than a page's text block: then three
+    // (a page's or an A4's width: two rows of panels a third of it wide).
     const bool print = c.print();
     const double text = print ? c.size(1000, 1000).text_px : 0.0;
-    const int cols = print ? 2 : 3, rows = 6 / cols;
-    const int gap = print ? std::max(2, static_cast<int>(std::lround(0.3 * text))) : 6;
-    const int w = print ? c.size(1000, 1000).w : cols * c.px(440) + (cols + 1) * gap;
-    const int pw = (w - (cols + 1) * gap) / cols, ph = pw;
     const double title_size = print ? 1.2 * text : 18.0 * c.opt.scale;
     const double inner = print ? 0.4 * text : 8.0;  // the title's indent beyond the gap
+    const int gap = print ? std::max(2, static_cast<int>(std::lround(0.3 * text))) : 6;
+    struct Layout {
+        int cols = 3, rows = 2, w = 0, pw = 0, ph = 0, caption_h = 0, title_top = 0, title_h = 0, h = 0;
+        render::FittedText title;  // no lines: no title
+    };
     // The title and captions wrap rather than run off the picture: measured on a scratch
     // surface first, because the picture's height depends on them.
-    render::FittedText fitted;  // no lines: no title
-    int caption_h = c.px(24);
-    {
+    const auto layout = [&](int cols) {
+        Layout l;
+        l.cols = cols, l.rows = (6 + cols - 1) / cols;
+        l.w = print ? c.size(1000, 1000).w : cols * c.px(440) + (cols + 1) * gap;
+        l.pw = (l.w - (cols + 1) * gap) / cols, l.ph = l.pw;
+        l.caption_h = c.px(24);
         cairo::Surface scratch(cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1));
         cairo::Context m = cairo::make_context(scratch.get());
-        if (c.titles()) fitted = render::fit_text(m.get(), th.font, title_size, title, w - 2.0 * (gap + inner), true, 2, print);
+        if (c.titles()) l.title = render::fit_text(m.get(), th.font, title_size, title, l.w - 2.0 * (gap + inner), true, 2, print);
         if (print) {
             std::size_t lines = 1;
             for (const auto& caption : captions)
-                lines = std::max(lines, render::fit_text(m.get(), th.font, text, caption, pw - 0.6 * text, false, 1, true)
+                lines = std::max(lines, render::fit_text(m.get(), th.font, text, caption, l.pw - 0.6 * text, false, 1, true)
                                             .lines.size());
-            caption_h = static_cast<int>(std::ceil((1.3 * static_cast<double>(lines) + 0.5) * text));
+            l.caption_h = static_cast<int>(std::ceil((1.3 * static_cast<double>(lines) + 0.5) * text));
         }
-    }
-    for (Scene& p : panels) p.text_px = text;
+        const double line_h = 1.3 * l.title.size;
+        l.title_top = !c.titles() ? 0 : print ? static_cast<int>(std::ceil(2.2 * title_size)) : c.px(40);
+        l.title_h = l.title.lines.empty() ? 0
+                                          : l.title_top + static_cast<int>(std::ceil(line_h * (static_cast<double>(l.title.lines.size()) - 1)));
+        l.h = l.rows * (l.ph + l.caption_h) + (l.rows + 1) * gap + l.title_h;
+        return l;
+    };
+    Layout l = layout(print ? 2 : 3);
+    if (print && opt_height_in(*c.opt.print, l.w, l.h) * 72.0 > kTextBlockHeightPt) l = layout(3);
+    const int cols = l.cols, w = l.w, pw = l.pw, ph = l.ph, caption_h = l.caption_h, title_top = l.title_top,
+              title_h = l.title_h, h = l.h;
+    const render::FittedText& fitted = l.title;
     const double line_h = 1.3 * fitted.size;
-    const int title_top = !c.titles() ? 0 : print ? static_cast<int>(std::ceil(2.2 * title_size)) : c.px(40);
-    const int title_h = fitted.lines.empty() ? 0 : title_top + static_cast<int>(std::ceil(line_h * (static_cast<double>(fitted.lines.size()) - 1)));
-    const int h = rows * (ph + caption_h) + (rows + 1) * gap + title_h;
+    for (Scene& p : panels) p.text_px = text;
     Page page;
     if (print) {
         const double height_in = opt_height_in(*c.opt.print, w, h);
@@ -316,7 +334,7 @@ void pitch_states(const Context& c, const std::string& path) {
         for (std::size_t i = 0; i < fitted.lines.size(); ++i)
             render::text(cr, th.font, fitted.size, gap + inner, title_top * 0.7 + line_h * static_cast<double>(i),
                          fitted.lines[i], 0.0, 0.0, true);
-    }, page);
+    }, page, &th);
     write_data(c, path, data);
 }
 

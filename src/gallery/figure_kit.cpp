@@ -128,6 +128,7 @@ void write_data(const Context& c, const std::string& figure_path, const FigureDa
         throw out.write_error(std::strerror(errno));
     if (std::fclose(f.release()) != 0) throw out.write_error(std::strerror(errno));
     out.commit();
+    if (c.data_files) c.data_files->push_back(path.string());
 }
 
 SceneOptions Context::scene_options() const {
@@ -143,8 +144,18 @@ Context::Size Context::size(double gallery_w, double gallery_h) const {
     return {l.width_px, l.height_px, l.text_px, l.page};
 }
 
+std::vector<std::uint32_t> role_colours(const Theme& th) {
+    std::vector<std::uint32_t> out;
+    // As Cairo sets an opaque colour on an image surface: 16 bits truncated, then the top 8.
+    const auto byte = [](double v) { return static_cast<std::uint32_t>(std::clamp(v, 0.0, 1.0) * (65536.0 - 1e-5)) >> 8; };
+    for (const Rgba* c : {&th.background, &th.text, &th.head, &th.body, &th.tail, &th.collision, &th.highlight,
+                          &th.outline, &th.handle, &th.contact, &th.guide, &th.guide_out, &th.s_curve, &th.turning_space})
+        out.push_back(byte(c->r) << 16 | byte(c->g) << 8 | byte(c->b));
+    return out;
+}
+
 void write_picture(int w, int h, const std::string& path, int colours, const std::function<void(cairo_t*)>& paint,
-                   const Page& page) {
+                   const Page& page, const Theme* theme) {
     const render::PictureFormat format = render::picture_format(path);
     if (format != render::PictureFormat::png) {
         render::write_vector(path, format, w, h, paint, page);
@@ -156,7 +167,7 @@ void write_picture(int w, int h, const std::string& path, int colours, const std
         cairo::Context cr = cairo::make_context(surface.get());
         paint(cr.get());
     }
-    render::write_png8(surface.get(), path, colours, page.dpi);
+    render::write_png8(surface.get(), path, colours, page.dpi, theme ? role_colours(*theme) : std::vector<std::uint32_t>{});
 }
 
 void Context::tell(const std::string& text) const {
@@ -182,7 +193,7 @@ void write_scene(const Context& c, Scene scene, double gallery_w, double gallery
     if (!c.titles()) scene.annotation.clear();
     const Context::Size z = c.size(gallery_w, gallery_h);
     scene.text_px = z.text_px;
-    write_picture(z.w, z.h, path, colours, [&](cairo_t* cr) { draw(cr, scene, z.w, z.h); }, z.page);
+    write_picture(z.w, z.h, path, colours, [&](cairo_t* cr) { draw(cr, scene, z.w, z.h); }, z.page, &scene.theme);
 }
 
 void write_plot(const Context& c, Plot plot, double gallery_w, double gallery_h, const std::string& path) {
@@ -190,7 +201,7 @@ void write_plot(const Context& c, Plot plot, double gallery_w, double gallery_h,
     if (!c.titles()) plot.title.clear(), plot.note.clear();
     const Context::Size z = c.size(gallery_w, gallery_h);
     plot.text_px = z.text_px;
-    write_picture(z.w, z.h, path, 64, [&](cairo_t* cr) { draw_plot(cr, plot, 0, 0, z.w, z.h); }, z.page);
+    write_picture(z.w, z.h, path, 64, [&](cairo_t* cr) { draw_plot(cr, plot, 0, 0, z.w, z.h); }, z.page, &plot.theme);
 }
 
 }  // namespace dragon::fig

@@ -21,6 +21,7 @@ struct Context {
     FigureOptions opt;
     std::shared_ptr<Answers> answers;  // the scenario's answers, shared by the run's figures
     std::string figure;                // the file stem of the figure being made
+    std::vector<std::string>* data_files = nullptr;  // where write_data lists the files it wrote
     int px(double gallery_px) const { return static_cast<int>(gallery_px * opt.scale + 0.5) & ~1; }
     // A figure the gallery draws gallery_w x gallery_h px at scale 1: its pixels, its text size
     // (0 on screen) and its page, at the scale or at the print size asked.
@@ -75,8 +76,13 @@ void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, const std::vecto
 // A picture of w x h px painted by `paint`, in the figures' format by the path's extension: a
 // palette PNG (64 colours suit flat drawings; speed-coloured pictures need 256 so the colour
 // map stays smooth), an SVG or a PDF.
+// `theme`: its role colours (role_colours) stay exact in a palette PNG, so a legend's tail is
+// the tail's blue in every format.
 void write_picture(int w, int h, const std::string& path, int colours, const std::function<void(cairo_t*)>& paint,
-                   const Page& page = {});
+                   const Page& page = {}, const Theme* theme = nullptr);
+// The colours of the theme's roles (ground, text, head, body, tail, touching, singled out,
+// outline, handles, contact, paths, turning space) as 0xRRGGBB: what a palette keeps exactly.
+std::vector<std::uint32_t> role_colours(const Theme& theme);
 // One scene or one plot as the whole picture, its texts told first, drawn gallery_w x
 // gallery_h px at scale 1 (Context::size: scaled, or at the print size).
 void write_scene(const Context& c, Scene scene, double gallery_w, double gallery_h, const std::string& path,

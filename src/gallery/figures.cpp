@@ -52,8 +52,9 @@ void write_figures(const std::string& dir, const Scenario& base, const FigureOpt
     }
     if (opt.format != "png" && opt.format != "svg" && opt.format != "pdf")
         throw InputError(fmt::format("figure format \"{}\" is unknown: use png, svg or pdf", opt.format));
-    if (!(opt.scale >= 0.25 && opt.scale <= 8))
-        throw InputError(fmt::format("figure scale {} is not allowed: use 0.25..8", opt.scale));
+    if (!(opt.scale >= kMinFigureScale && opt.scale <= 8))
+        throw InputError(fmt::format("figure scale {} is not allowed: use {}..8 (smaller, the plots' text would fall "
+                                     "under the {:g} px floor)", opt.scale, kMinFigureScale, kMinTextPx));
     if (!make_output_folder(dir)) throw InputError(fmt::format("cannot create the figure folder {}", dir));
     fig::Context ctx{base, opt, nullptr, ""};
     ctx.base.path.kind = PathKind::spiral;
@@ -62,8 +63,13 @@ void write_figures(const std::string& dir, const Scenario& base, const FigureOpt
         if (!opt.only.empty() && std::find(opt.only.begin(), opt.only.end(), e.info.name) == opt.only.end()) continue;
         const std::string path = (std::filesystem::path(dir) / (e.info.name + "." + opt.format)).string();
         ctx.figure = e.info.name;
+        std::vector<std::string> data_files;
+        ctx.data_files = &data_files;
         e.make(ctx, path);
-        if (done) done(e.info, path);
+        if (done) {
+            done(e.info, path);
+            for (const std::string& d : data_files) done(e.info, d);
+        }
     }
 }
 

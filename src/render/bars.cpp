@@ -33,7 +33,9 @@ Box draw_scale_bar(cairo_t* cr, const Scene& s, const Units& un, double px_per_m
     cairo_line_to(cr, x0 + len, y0 - tick);
     cairo_stroke(cr);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
-    if (s.show_text) text(cr, s.theme.font, size, x0 + 0.5 * len, y0 - 4 * u - 4 * un.ut, scale_label(metres), 0.5);
+    // Centred over the bar, or, wider than it, from its left end (inside its backdrop).
+    if (s.show_text)
+        text(cr, s.theme.font, size, x0 + 0.5 * std::max(len, label_w), y0 - 4 * u - 4 * un.ut, scale_label(metres), 0.5);
     return {{x0 - 6 * u, y0 + 6 * u - box_h}, {x0 - 6 * u + box_w, y0 + 6 * u}};
 }
 

@@ -135,6 +135,12 @@ bool on_screen(const View& v, const Rect& r, double w, double h) {
     return c.x() + reach >= 0 && c.x() - reach <= w && c.y() + reach >= 0 && c.y() - reach <= h;
 }
 
+// A bench's corners in pixels, in order around it (rear right, front right, front left, rear left).
+std::vector<Vec2> corners_px(const View& v, const Rect& r) {
+    const Vec2 a = r.half_length * r.axis, c = r.half_width * Vec2{-r.axis.y(), r.axis.x()};
+    return {v.px(r.centre - a - c), v.px(r.centre + a - c), v.px(r.centre + a + c), v.px(r.centre - a + c)};
+}
+
 Rect inset(Rect r, double by) {
     r.half_length = std::max(0.0, r.half_length - by);
     r.half_width = std::max(0.0, r.half_width - by);
@@ -188,6 +194,17 @@ void draw_benches(cairo_t* cr, const Scene& s, const View& v, double u, bool vec
     for (const auto& b : s.benches) {
         if (b.style != Scene::Style::collision && b.style != Scene::Style::highlight) continue;
         rect_path(cr, v, b.rect);
+        if (render::layout_recording()) {
+            // The touching benches, nothing may cover them: logged as a grid of points over the
+            // board, 16 along and 3 across (a slanted board's box would claim the corners beside it).
+            const std::vector<Vec2> q = corners_px(v, b.rect);
+            for (int k = 0; k < 16; ++k)
+                for (int j = 0; j < 3; ++j) {
+                    const double f = (k + 0.5) / 16.0, g = (j + 0.5) / 3.0;
+                    const Vec2 m = (1 - g) * (q[0] + f * (q[1] - q[0])) + g * (q[3] + f * (q[2] - q[3]));
+                    render::log_placed(cr, render::LayoutItem::Kind::mark, m.x(), m.y(), m.x(), m.y(), "touching bench");
+                }
+        }
         set_colour(cr, style_colour(s, b));
         cairo_fill_preserve(cr);
         set_colour(cr, s.theme.outline);
@@ -279,8 +296,17 @@ void draw_scene(cairo_t* cr, const Scene& s, int width_px, int height_px, render
     const render::Box shown = world_box(v, w - right, h, 0.0);
     const render::Box inset = render::draw_inset(cr, s, un, w - right, shown.lo, shown.hi);
     // A title band spans the picture; an annotation over the drawing keeps clear of the clock.
-    const render::Box note = render::draw_annotation(cr, s, un, s.title_band ? w : clock.lo.x());
-    const render::Box legend = render::draw_legend(cr, s, un, std::max(note.hi.y(), 2 * u));
+    // Beside the clock where it leaves room for a line of some words; else under the clock, across
+    // the picture (a narrow frame: a film's split view).
+    const bool under_clock = !s.title_band && clock.lo.x() < 0.55 * w && clock.hi.y() > clock.lo.y();
+    const render::Box note = render::draw_annotation(cr, s, un, s.title_band || under_clock ? w - right : clock.lo.x(),
+                                                     under_clock ? clock.hi.y() : 0.0);
+    // What the legend explains and must not cover: the touching (and singled-out) benches.
+    std::vector<std::vector<Vec2>> marks;
+    for (const auto& b : s.benches)
+        if (b.style == Scene::Style::collision || b.style == Scene::Style::highlight) marks.push_back(corners_px(v, b.rect));
+    const render::Box legend = render::draw_legend(cr, s, un, std::max(note.hi.y(), 2 * u), marks, {bar, clock, inset},
+                                                   w - right);
     const render::Box strip{{w - right, 0}, {w, h}};
     render::draw_labels(cr, s, un, [&v](const Vec2& p) { return v.px(p); }, {bar, clock, inset, note, legend, strip},
                         {{0, top}, {w, h}});

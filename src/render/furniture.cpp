@@ -55,22 +55,22 @@ double annotation_height(cairo_t* cr, const Scene& s, const Units& un, double ri
     return 8 * un.u + th + 14 * un.ut;
 }
 
-Box draw_annotation(cairo_t* cr, const Scene& s, const Units& un, double right) {
-    if (!s.show_text || s.annotation.empty()) return {{0, 0}, {0, 0}};
+Box draw_annotation(cairo_t* cr, const Scene& s, const Units& un, double right, double top) {
+    if (!s.show_text || s.annotation.empty()) return {{0, top}, {0, top}};
     const std::vector<FittedText> blocks = annotation_blocks(cr, s, un, right);
     double tw = 0;
     for (const auto& b : blocks)
         for (const auto& line : b.lines) tw = std::max(tw, text_width(cr, s.theme.font, b.size, line));
-    const double bottom = annotation_height(cr, s, un, right);
-    backdrop(cr, s.theme, 8 * un.u, 8 * un.u, tw + 16 * un.ut, bottom - 8 * un.u);
+    const double bottom = top + annotation_height(cr, s, un, right);
+    backdrop(cr, s.theme, 8 * un.u, top + 8 * un.u, tw + 16 * un.ut, bottom - top - 8 * un.u);
     set_colour(cr, s.theme.text);
-    double y = 8 * un.u + 7 * un.ut;
+    double y = top + 8 * un.u + 7 * un.ut;
     for (const auto& b : blocks)
         for (const auto& line : b.lines) {
             text(cr, s.theme.font, b.size, 8 * un.u + 8 * un.ut, y + 0.5 * b.size, line, 0.0, 0.5);
             y += b.size + gap(un);
         }
-    return {{8 * un.u, 8 * un.u}, {8 * un.u + tw + 16 * un.ut, bottom}};
+    return {{8 * un.u, top + 8 * un.u}, {8 * un.u + tw + 16 * un.ut, bottom}};
 }
 
 namespace {
@@ -175,13 +175,45 @@ double left_furniture(cairo_t* cr, const Scene& s, const Units& un, double right
     return legend_box(cr, s, un, below).hi.x();
 }
 
-Box draw_legend(cairo_t* cr, const Scene& s, const Units& un, double top) {
-    const Box box = legend_box(cr, s, un, top);
+namespace {
+bool meets(const Box& a, const Box& b) {
+    return a.lo.x() < b.hi.x() && b.lo.x() < a.hi.x() && a.lo.y() < b.hi.y() && b.lo.y() < a.hi.y();
+}
+}  // namespace
+
+Box draw_legend(cairo_t* cr, const Scene& s, const Units& un, double top, const std::vector<std::vector<Vec2>>& marks,
+                const std::vector<Box>& taken, double right) {
+    Box box = legend_box(cr, s, un, top);
     if (box.hi.x() <= box.lo.x()) return box;
+    // Top left, unless it would cover what it explains (a touching bench): then the first other
+    // corner clear of those and of the furniture already there (clock, scale bar, inset).
+    const auto clear = [&](const Box& b) {
+        if (b.lo.x() < 0 || b.lo.y() < top || b.hi.x() > right || b.hi.y() > un.h) return false;
+        const auto hit = [&](const Box& m) { return meets(b, m); };
+        const auto covers = [&](const std::vector<Vec2>& m) { return clip_polygon(m, b.grown(3 * un.u)).size() >= 3; };
+        return std::none_of(marks.begin(), marks.end(), covers) && std::none_of(taken.begin(), taken.end(), hit);
+    };
+    if (!clear(box)) {
+        const Vec2 size = box.hi - box.lo;
+        const double m = 8 * un.u;
+        double bottom = un.h;  // above the furniture at the bottom left (the scale bar)
+        for (const Box& t : taken)
+            if (t.hi.x() > t.lo.x() && t.lo.x() < 0.5 * un.w && t.hi.y() > 0.5 * un.h) bottom = std::min(bottom, t.lo.y());
+        const std::vector<Vec2> corners{{right - m - size.x(), box.lo.y()}, {m, bottom - m - size.y()},
+                                        {right - m - size.x(), un.h - m - size.y()}};
+        for (const Vec2& c : corners) {
+            const Box b{c, c + size};
+            if (clear(b)) {
+                box = b;
+                break;
+            }
+        }
+    }
     const std::vector<Entry> entries = legend_entries(s);
     const double size = un.text(12), row = 1.5 * size, sw = 1.6 * size, sh = 0.6 * size, pad = 8 * un.ut;
     const double x = box.lo.x(), y = box.lo.y(), bw = box.hi.x() - x, bh = box.hi.y() - y;
     backdrop(cr, s.theme, x, y, bw, bh);
+    log_placed(cr, LayoutItem::Kind::legend, x, y, x + bw, y + bh, "legend");
     double cy = y + pad + 0.5 * size;
     for (const auto& e : entries) {
         draw_swatch(cr, s, e, x + pad, cy - 0.5 * sh, sw, sh, un.u);

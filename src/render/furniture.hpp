@@ -3,6 +3,8 @@
 // and says where it ended, so the next one can keep clear of it.
 #pragma once
 
+#include <vector>
+
 #include <cairo.h>
 
 #include "dragon/render.hpp"
@@ -36,10 +38,14 @@ double left_furniture(cairo_t* cr, const Scene& s, const Units& un, double right
 // Each returns the box it covers, px (an empty box at its corner when it drew nothing).
 // The clock, top right, its right edge at `right`.
 Box draw_clock(cairo_t* cr, const Scene& s, const Units& un, double right);
-// The annotation top left, wrapped short of `right` (the clock).
-Box draw_annotation(cairo_t* cr, const Scene& s, const Units& un, double right);
-// The legend below `top`.
-Box draw_legend(cairo_t* cr, const Scene& s, const Units& un, double top);
+// The annotation top left (below `top`: under the clock in a narrow picture), wrapped short of
+// `right` (the clock, or the picture's edge).
+Box draw_annotation(cairo_t* cr, const Scene& s, const Units& un, double right, double top = 0.0);
+// The legend below `top`, at the top left; or, where it would cover one of `marks` (what it
+// explains: the touching benches' corners, px), in the first other corner left of `right` clear of them
+// and of the furniture `taken` (the clock, the scale bar, the inset).
+Box draw_legend(cairo_t* cr, const Scene& s, const Units& un, double top, const std::vector<std::vector<Vec2>>& marks = {},
+                const std::vector<Box>& taken = {}, double right = 1e300);
 
 // The scale bar, bottom left: its length in metres read at `px_per_m`.
 Box draw_scale_bar(cairo_t* cr, const Scene& s, const Units& un, double px_per_m);

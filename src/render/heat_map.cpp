@@ -194,6 +194,7 @@ struct Mark {
     double x, y;
     bool left;  // the label to the left of the mark (where it would leave the frame on the right)
     Box box;
+    double text_x = 0, text_y = 0;  // the label's start and baseline
 };
 std::optional<Mark> place_mark(cairo_t* cr, const SweepMap& map, const PlotArea& a, double u) {
     const auto T = [&](double n) { return text_size(n, u, map.text_px); };
@@ -202,8 +203,19 @@ std::optional<Mark> place_mark(cairo_t* cr, const SweepMap& map, const PlotArea&
     if (mx < a.x0 || mx > a.x1 || my < a.y0 || my > a.y1) return std::nullopt;
     const double tw = text_width(cr, map.theme.font, T(13), map.mark_label);
     const bool left = mx + 12 * u + tw > a.x1;
-    const double x0 = left ? mx - 16 * u - tw : mx - 9 * u, x1 = left ? mx + 9 * u : mx + 16 * u + tw;
-    return Mark{mx, my, left, {x0, my - 10 * u, x1, my + 10 * u}};
+    if (!left || mx - 12 * u - tw >= a.x0) {
+        const double x0 = left ? mx - 16 * u - tw : mx - 9 * u, x1 = left ? mx + 9 * u : mx + 16 * u + tw;
+        return Mark{mx, my, left, {x0, my - 10 * u, x1, my + 10 * u}, left ? mx - 12 * u - tw : mx + 12 * u, my + 4.5 * u};
+    }
+    // Room on neither side (a narrow map at a print size): under the mark, or over it near the
+    // bottom, centred on it as far as the frame allows.
+    const double size = T(13);
+    const double tx = std::max(a.x0 + 3 * u, std::min(mx - 0.5 * tw, a.x1 - 3 * u - tw));
+    const bool below = my + 9 * u + 1.2 * size <= a.y1;
+    const double ty = below ? my + 9 * u + 0.8 * size : my - 9 * u - 0.25 * size;
+    const double top = ty - 0.8 * size, bottom = ty + 0.25 * size;
+    return Mark{mx, my, false, {std::min(tx, mx - 9 * u), std::min(top, my - 10 * u), std::max(tx + tw, mx + 9 * u),
+                                std::max(bottom, my + 10 * u)}, tx, ty};
 }
 
 void draw_mark(cairo_t* cr, const SweepMap& map, const Mark& m, double u) {
@@ -217,8 +229,7 @@ void draw_mark(cairo_t* cr, const SweepMap& map, const Mark& m, double u) {
     cairo_stroke(cr);
     cairo_arc(cr, m.x, m.y, 2.2 * u, 0, 2 * std::numbers::pi);
     cairo_fill(cr);
-    halo_text(cr, map.theme.font, T(13), m.x + (m.left ? -12 : 12) * u, m.y + 4.5 * u, map.mark_label,
-              {0.05, 0.05, 0.07}, {1, 1, 1}, 3.5 * u, m.left ? 1.0 : 0.0);
+    halo_text(cr, map.theme.font, T(13), m.text_x, m.text_y, map.mark_label, {0.05, 0.05, 0.07}, {1, 1, 1}, 3.5 * u, 0.0);
 }
 
 }  // namespace

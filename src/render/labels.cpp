@@ -97,7 +97,10 @@ struct Placed {
 
 double cost_of(const Box& b, const Label& l, const Obstacles& o, const Box& world, double moved) {
     const double a = std::max(area(b), 1.0);
-    double c = 1000.0 * (1.0 - overlap(b, world) / a);
+    // Any part off the picture costs more than everything else together: a label crossing many
+    // lines inside is still read, one cut at the edge is not.
+    const double off = 1.0 - overlap(b, world) / a;
+    double c = off > 1e-9 ? 1e4 + 1000.0 * off : 0.0;
     // Text over text (another label, the legend, the clock) reads as neither: nearly as bad as
     // leaving the picture.
     for (const Box& t : o.boxes) c += 400.0 * overlap(b, t) / a;
@@ -128,9 +131,17 @@ void draw_labels(cairo_t* cr, const Scene& s, const Units& un, const std::functi
         if (!world.grown(un.w + un.h).holds(p)) continue;  // far outside the picture: none of it could show
         // A point under the furniture (the inset, the legend) cannot be seen: nor can its label.
         if (std::any_of(taken.begin(), taken.end(), [&](const Box& b) { return b.holds(p); })) continue;
-        const double size = un.text(l.size_px), tw = text_width(cr, s.theme.font, size, l.text);
-        const double asc = 0.76 * size, desc = 0.24 * size, pad = 2 * un.u;
-        // A box with its baseline's left end at (x, y).
+        const double size = un.text(l.size_px);
+        // Wider than the picture (a long name in Chinese at a column's width): wrapped, at its size.
+        const double room = std::max(0.0, world.hi.x() - world.lo.x() - 8 * un.u);
+        const std::vector<std::string> lines =
+            text_width(cr, s.theme.font, size, l.text) <= room ? std::vector<std::string>{l.text}
+                                                               : fit_text(cr, s.theme.font, size, l.text, room, false, 2, true).lines;
+        double tw = 0;
+        for (const std::string& line : lines) tw = std::max(tw, text_width(cr, s.theme.font, size, line));
+        const double lh = 1.25 * size, more = lh * static_cast<double>(lines.size() - 1);
+        const double asc = 0.76 * size, desc = 0.24 * size + more, pad = 2 * un.u;
+        // A box with its first baseline's left end at (x, y).
         const auto at = [&](double x, double y) { return Box{{x - pad, y - asc - pad}, {x + tw + pad, y + desc + pad}}; };
         const Vec2 want{p.x() + l.dx_px * un.u, p.y() + l.dy_px * un.u};
         Placed best{at(want.x(), want.y()), std::numeric_limits<double>::infinity()};
@@ -152,6 +163,9 @@ void draw_labels(cairo_t* cr, const Scene& s, const Units& un, const std::functi
             consider(p.x() + e, p.y() + e + asc);                 // below right
             consider(p.x() - e - tw, p.y() + e + asc);            // below left
         }
+        // The wanted place moved in from the picture's edges, where it would leave the picture.
+        consider(std::clamp(want.x(), world.lo.x() + pad, std::max(world.lo.x() + pad, world.hi.x() - pad - tw)),
+                 std::clamp(want.y(), world.lo.y() + pad + asc, std::max(world.lo.y() + pad + asc, world.hi.y() - pad - desc)));
         const Box& b = best.box;
         // A leader line when the label sits away from its point.
         const Vec2 near{std::clamp(p.x(), b.lo.x(), b.hi.x()), std::clamp(p.y(), b.lo.y(), b.hi.y())};
@@ -168,8 +182,9 @@ void draw_labels(cairo_t* cr, const Scene& s, const Units& un, const std::functi
         // Where no clear place was near enough, a backdrop under the text keeps it legible on
         // whatever it covers (a red name on purple benches).
         if (best.cost >= 1.0) backdrop(cr, s.theme, b.lo.x(), b.lo.y(), b.hi.x() - b.lo.x(), b.hi.y() - b.lo.y(), 0.85);
-        halo_text(cr, s.theme.font, size, b.lo.x() + pad, b.hi.y() - desc - pad, l.text, l.colour, s.theme.background,
-                  3.0 * un.ut);
+        for (std::size_t i = 0; i < lines.size(); ++i)
+            halo_text(cr, s.theme.font, size, b.lo.x() + pad, b.lo.y() + pad + asc + lh * static_cast<double>(i), lines[i],
+                      l.colour, s.theme.background, 3.0 * un.ut);
         o.boxes.push_back(b);
     }
 }

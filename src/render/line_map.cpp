@@ -27,8 +27,15 @@ void draw_line_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
     // The line needs no legend (the axis names it); the markers' legend goes under the plot.
     p.legend = Plot::Legend::none;
     PlotSeries values{panel.quantity, {}, series_colour(th, 0), 1.8, true, false, true, 3.0};
+    // A refused value (a pitch of -1) sets no axis: the x axis spans the scenarios that ran, and
+    // a refused one outside them is marked at the strip's edge on its side.
+    double x_lo = INFINITY, x_hi = -INFINITY;
+    for (std::size_t i : order)
+        if (panel.cells[i] != MapCell::refused) x_lo = std::min(x_lo, map.x.values[i]), x_hi = std::max(x_hi, map.x.values[i]);
+    const auto outside = [&](std::size_t i) { return x_hi >= x_lo && (map.x.values[i] < x_lo || map.x.values[i] > x_hi); };
     double lo = INFINITY, hi = -INFINITY;
     for (std::size_t i : order) {
+        if (outside(i)) continue;
         const bool ok = panel.cells[i] == MapCell::value && std::isfinite(panel.values[i]);
         values.points.push_back({map.x.values[i], ok ? panel.values[i] : NAN});  // NaN: the line breaks
         if (ok) lo = std::min(lo, panel.values[i]), hi = std::max(hi, panel.values[i]);
@@ -46,7 +53,9 @@ void draw_line_panel(cairo_t* cr, const SweepMap& map, const MapPanel& panel, do
             for (std::size_t i : order) {
                 if (panel.cells[i] == MapCell::value) continue;
                 const CellStyle st = cell_style(th, panel.cells[i], panel, map.language);
-                draw_cell_marker(c, panel.cells[i], st, band.px(map.x.values[i]), 0.5 * (band.y0 + band.y1), 4.5 * su);
+                const double r = 4.5 * su;
+                const double mx = std::clamp(band.px(map.x.values[i]), band.x0 + 1.5 * r, band.x1 - 1.5 * r);
+                draw_cell_marker(c, panel.cells[i], st, mx, 0.5 * (band.y0 + band.y1), r);
             }
         };
     }

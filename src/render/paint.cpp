@@ -1,4 +1,5 @@
 #include "render/paint.hpp"
+#include "render/cairo_handles.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -23,6 +24,56 @@ Rgba ramp_colour(const std::vector<Rgba>& stops, double t) {
 }
 
 namespace {
+thread_local std::vector<LayoutItem>* recording = nullptr;
+}  // namespace
+
+LayoutRecording::LayoutRecording() { recording = &placed_; }
+LayoutRecording::~LayoutRecording() { recording = nullptr; }
+bool layout_recording() { return recording != nullptr; }
+
+void log_placed(cairo_t* cr, LayoutItem::Kind kind, double x0, double y0, double x1, double y1, const std::string& what,
+                double size) {
+    if (!recording) return;
+    // The box's corners in device space (the transformation may scale: a PDF page in points).
+    double xs[4] = {x0, x1, x0, x1}, ys[4] = {y0, y0, y1, y1};
+    LayoutItem p{kind, 1e300, 1e300, -1e300, -1e300, 0, what};
+    for (int i = 0; i < 4; ++i) {
+        cairo_user_to_device(cr, &xs[i], &ys[i]);
+        p.x0 = std::min(p.x0, xs[i]), p.y0 = std::min(p.y0, ys[i]);
+        p.x1 = std::max(p.x1, xs[i]), p.y1 = std::max(p.y1, ys[i]);
+    }
+    double dx = size, dy = 0;
+    cairo_user_to_device_distance(cr, &dx, &dy);
+    p.size = std::hypot(dx, dy);
+    if (kind == LayoutItem::Kind::text) {  // a text the clip cuts (a panel's, a plot's frame)
+        double c0 = 0, c1 = 0, c2 = 0, c3 = 0;
+        cairo_clip_extents(cr, &c0, &c1, &c2, &c3);
+        const double slack = 0.5 * (x1 - x0 > 0 ? 1.0 : 0.0);
+        p.clipped = x0 < c0 - slack || y0 < c1 - slack || x1 > c2 + slack || y1 > c3 + slack;
+    }
+    recording->push_back(std::move(p));
+}
+
+}  // namespace dragon::render
+
+void dragon::cairo::log_new_surface(cairo_surface_t* target) {
+    if (render::layout_recording() && cairo_surface_get_type(target) == CAIRO_SURFACE_TYPE_IMAGE)
+        render::log_picture(cairo_image_surface_get_width(target), cairo_image_surface_get_height(target));
+}
+
+namespace dragon::render {
+
+void log_picture(double w, double h, const std::string& what) {
+    if (recording) recording->push_back({LayoutItem::Kind::picture, 0, 0, w, h, 0, what});
+}
+
+namespace {
+// A line of text as the log holds it: from its start to its advance, 0.8 em above the baseline
+// (capitals, accents and CJK ideographs) to 0.2 em below it.
+void log_text(cairo_t* cr, double x, double baseline, double width, double size_px, const std::string& s) {
+    if (recording) log_placed(cr, LayoutItem::Kind::text, x, baseline - 0.8 * size_px, x + width, baseline + 0.2 * size_px, s, size_px);
+}
+
 void select_font(cairo_t* cr, const std::string& font, double size_px, bool bold) {
     cairo_select_font_face(cr, font.c_str(), CAIRO_FONT_SLANT_NORMAL,
                            bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
@@ -156,6 +207,7 @@ void text(cairo_t* cr, const std::string& font, double size_px, double x, double
     const double cap = 0.73 * size_px;
     cairo_move_to(cr, x - align * width, y + valign * cap);
     set_runs(cr, runs, size_px, bold, false);
+    log_text(cr, x - align * width, y + valign * cap, width, size_px, s);
     cairo_new_path(cr);
 }
 
@@ -175,6 +227,7 @@ void halo_text(cairo_t* cr, const std::string& font, double size_px, double x, d
     set_colour(cr, colour);
     cairo_move_to(cr, x - align * width, y);
     set_runs(cr, runs, size_px, false, false);
+    log_text(cr, x - align * width, y, width, size_px, s);
     cairo_new_path(cr);
 }
 
@@ -256,13 +309,18 @@ FittedText fit_text(cairo_t* cr, const std::string& font, double size, const std
                     int max_lines, bool keep_size) {
     if (s.empty()) return {size, {}};
     if (keep_size) return {size, fits(cr, font, size, {s}, room, bold) ? std::vector<std::string>{s} : wrap(cr, font, size, s, room, bold)};
+    // Never under the floor (a 13 px label at kMinTextPx: the smallest text, 11 px at 800 px,
+    // at 9.3 px), nor smaller than asked when that is already under it.
+    const double least = std::min(size, kMinTextPx * 11.0 / 13.0);
     // One line, down to 88 % of the size: reads better than a second line holding one word.
-    for (double k = 1.0; k >= 0.875; k -= 0.025)
+    for (double k = 1.0; k >= 0.875 && k * size >= least; k -= 0.025)
         if (fits(cr, font, k * size, {s}, room, bold)) return {k * size, {s}};
-    // Wrapped, then smaller until every line fits (a fifth of the size at the least).
+    // Wrapped, then smaller until every line fits; at the floor, wrapped into as many lines as
+    // it takes.
     double k = 1.0;
     std::vector<std::string> lines = wrap(cr, font, size, s, room, bold);
-    while (k > 0.2 && (static_cast<int>(lines.size()) > max_lines || !fits(cr, font, k * size, lines, room, bold))) {
+    while (k * 0.95 * size >= least &&
+           (static_cast<int>(lines.size()) > max_lines || !fits(cr, font, k * size, lines, room, bold))) {
         k *= 0.95;
         lines = wrap(cr, font, k * size, s, room, bold);
     }

@@ -8,6 +8,7 @@
 
 #include "picture_checks.hpp"
 #include "render/cairo_handles.hpp"
+#include "render/paint.hpp"
 #include "render/png8.hpp"
 #include "render/vector_out.hpp"
 
@@ -54,6 +55,8 @@ std::string vector_bytes(PictureFormat format, int w, int h, const std::function
     else cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "benchdragon");
     {
         cairo::Context cr = cairo::make_context(surface.get());
+        render::log_picture(format == PictureFormat::pdf || printed ? page_w : w,
+                            format == PictureFormat::pdf || printed ? page_h : h);
         if (format == PictureFormat::pdf || printed) cairo_scale(cr.get(), page_w / w, page_h / h);
         paint(cr.get());
         check_cairo(cairo_status(cr.get()), "drawing");

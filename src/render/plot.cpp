@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <optional>
 #include <cstring>
 #include <limits>
 #include <numbers>
@@ -88,6 +89,11 @@ void set_dash(cairo_t* cr, bool dashed, double u) {
 
 void draw_series(cairo_t* cr, const Frame2& f, const PlotSeries& s, double u) {
     set_colour(cr, s.colour);
+    if (render::layout_recording() && !s.label.empty())  // the points a legend entry explains
+        for (Vec2 q : s.points)
+            if (std::isfinite(q.x()) && std::isfinite(q.y()))
+                render::log_placed(cr, render::LayoutItem::Kind::mark, f.px(q.x()), f.py(q.y()), f.px(q.x()), f.py(q.y()),
+                                   s.label);
     if (s.line && s.points.size() > 1) {
         bool pen = false;
         for (Vec2 q : s.points) {
@@ -173,21 +179,52 @@ void draw_legend_rows(cairo_t* cr, const Plot& p, const LegendRows& rows, double
     }
 }
 
-void draw_legend(cairo_t* cr, const Plot& p, const Frame2& f, double u) {
+// The in-frame legend's size, px.
+Vec2 legend_size(cairo_t* cr, const Plot& p, double u) {
     const std::vector<const PlotSeries*> entries = legend_entries(p);
-    if (entries.empty() || p.text_px > 0) return;  // at a print size: legend_rows, above the frame
     const double size = render::text_size(12, u, p.text_px), row = 18 * u, sample = 24 * u, pad = 8 * u;
     double tw = 0;
     for (auto* s : entries) tw = std::max(tw, render::text_width(cr, p.theme.font, size, s->label));
-    const double bw = pad + sample + 6 * u + tw + pad, bh = pad + row * entries.size() + 2 * u;
-    const bool left = p.legend == Plot::Legend::top_left || p.legend == Plot::Legend::bottom_left;
-    const bool top = p.legend == Plot::Legend::top_left || p.legend == Plot::Legend::top_right;
-    const double bx = left ? f.x0 + 10 * u : f.x1 - 10 * u - bw;
-    const double by = top ? f.y0 + 10 * u : f.y1 - 10 * u - bh;
+    return {pad + sample + 6 * u + tw + pad, pad + row * static_cast<double>(entries.size()) + 2 * u};
+}
+
+// The corner for the in-frame legend: the one asked for, or the first other (round the frame)
+// where it covers none of the points it explains; none when it would cover some in every one
+// (it then goes above the frame, as at a print size).
+std::optional<Vec2> legend_corner(cairo_t* cr, const Plot& p, const Frame2& f, double u) {
+    const std::vector<const PlotSeries*> entries = legend_entries(p);
+    const Vec2 size = legend_size(cr, p, u);
+    const double bw = size.x(), bh = size.y();
+    const bool left0 = p.legend == Plot::Legend::top_left || p.legend == Plot::Legend::bottom_left;
+    const bool top0 = p.legend == Plot::Legend::top_left || p.legend == Plot::Legend::top_right;
+    for (const auto [left, top] : {std::pair{left0, top0}, std::pair{!left0, top0}, std::pair{left0, !top0},
+                                   std::pair{!left0, !top0}}) {
+        const double x = left ? f.x0 + 10 * u : f.x1 - 10 * u - bw, y = top ? f.y0 + 10 * u : f.y1 - 10 * u - bh;
+        bool clear = true;
+        for (const PlotSeries* s : entries)
+            for (Vec2 q : s->points)
+                if (clear && std::isfinite(q.x()) && std::isfinite(q.y())) {
+                    const double qx = f.px(q.x()), qy = f.py(q.y());
+                    clear = !(qx >= x - 2 * u && qx <= x + bw + 2 * u && qy >= y - 2 * u && qy <= y + bh + 2 * u);
+                }
+        if (clear) return Vec2{x, y};
+    }
+    return std::nullopt;
+}
+
+void draw_legend(cairo_t* cr, const Plot& p, const Frame2& f, double u) {
+    const std::vector<const PlotSeries*> entries = legend_entries(p);
+    if (entries.empty() || p.text_px > 0) return;  // at a print size: legend_rows, above the frame
+    const std::optional<Vec2> corner = legend_corner(cr, p, f, u);
+    if (!corner) return;  // above the frame
+    const double size = render::text_size(12, u, p.text_px), row = 18 * u, sample = 24 * u, pad = 8 * u;
+    const Vec2 box = legend_size(cr, p, u);
+    const double bw = box.x(), bh = box.y(), bx = corner->x(), by = corner->y();
     Rgba bg = p.theme.background;
     bg.a = 0.88;
     set_colour(cr, bg);
     cairo_rectangle(cr, bx, by, bw, bh);
+    render::log_placed(cr, render::LayoutItem::Kind::legend, bx, by, bx + bw, by + bh, "legend");
     cairo_fill_preserve(cr);
     set_colour(cr, p.theme.grid);
     cairo_set_line_width(cr, 1 * u);
@@ -250,11 +287,20 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
     double top = title_y.empty() && note_y.empty() ? y + 16 * u
                  : note_y.empty()                  ? title_y.back() + 16 * u
                                                    : note_y.back() + 14 * u;
-    const LegendRows rows = p.text_px > 0 ? legend_rows(cr, p, x1 - x0, u) : LegendRows{};
+    LegendRows rows = p.text_px > 0 ? legend_rows(cr, p, x1 - x0, u) : LegendRows{};
     const double legend_y = top - (title_y.empty() && note_y.empty() ? 10 * u : 4 * u);
-    if (rows.height > 0) top = legend_y + rows.height + 6 * u;
-    Frame2 f{x0, top, x1, y + h - (p.x_label.empty() ? 30 : 52) * u - (banded ? band_gap + band_h : 0.0), xr, yr};
-    if (p.equal_aspect) equalise(f);
+    const auto frame = [&] {
+        Frame2 out{x0, rows.height > 0 ? legend_y + rows.height + 6 * u : top, x1,
+                   y + h - (p.x_label.empty() ? 30 : 52) * u - (banded ? band_gap + band_h : 0.0), xr, yr};
+        if (p.equal_aspect) equalise(out);
+        return out;
+    };
+    Frame2 f = frame();
+    // On screen, a legend that would cover its data in every corner goes above the frame.
+    if (rows.height == 0 && !legend_entries(p).empty() && !legend_corner(cr, p, f, u)) {
+        rows = legend_rows(cr, p, x1 - x0, u);
+        f = frame();
+    }
     const auto xt = render::nice_ticks(f.xr.lo, f.xr.hi, std::max(3, static_cast<int>((f.x1 - f.x0) / (90 * u))));
     const auto yt = render::nice_ticks(f.yr.lo, f.yr.hi, std::max(3, static_cast<int>((f.y1 - f.y0) / (60 * u))));
 
@@ -289,10 +335,12 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
         if (!r.label.empty()) {
             if (r.vertical) {
                 // Right of the line, or left of it when it would run past the frame.
+                // Either way it stays inside the frame (a line near an edge: over the line).
                 const double lw = render::text_width(cr, th.font, T(11), r.label);
                 const bool left = f.px(r.value) + 4 * u + lw > f.x1;
-                render::text(cr, th.font, T(11), f.px(r.value) + (left ? -4 : 4) * u, f.y0 + 14 * u, r.label,
-                             left ? 1.0 : 0.0);
+                const double start = left ? f.px(r.value) - 4 * u - lw : f.px(r.value) + 4 * u;
+                render::text(cr, th.font, T(11), std::max(f.x0 + 3 * u, std::min(start, f.x1 - 3 * u - lw)),
+                             f.y0 + 14 * u, r.label);
             }
             else
                 render::text(cr, th.font, T(11), f.x1 - 6 * u, f.py(r.value) - 5 * u, r.label, 1.0);
@@ -363,8 +411,8 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
     soft.a = 0.75;
     set_colour(cr, soft);
     for (std::size_t i = 0; i < note.lines.size(); ++i) render::text(cr, th.font, note.size, x0, note_y[i], note.lines[i]);
-    draw_legend(cr, p, f, u);
     if (rows.height > 0) draw_legend_rows(cr, p, rows, x0, legend_y, u);
+    else draw_legend(cr, p, f, u);
     cairo_restore(cr);
     return area;
 }

@@ -23,9 +23,21 @@ int channel(std::uint32_t rgb, int c) { return static_cast<int>((rgb >> (16 - 8 
 // Median cut on the image's exact colours, each weighing its pixel count (render/median_cut.hpp).
 // Each box's colour is its most frequent member, not its mean, so the flat colours of a drawing
 // (background, boards) stay exact.
-std::vector<std::uint32_t> palette_of(std::vector<ColourCount> colours, std::size_t max_colours) {
+// `keep`: colours the picture holds that are entries of their own (a role's colour: the tail's
+// swatch in a legend covers a few hundred pixels, and a box of median cut would give it its
+// neighbour's grey); the cut shares out the rest.
+std::vector<std::uint32_t> palette_of(std::vector<ColourCount> colours, std::size_t max_colours,
+                                      const std::vector<std::uint32_t>& keep) {
     std::vector<std::uint32_t> palette;
-    for (const ColourBox& b : median_cut(colours, max_colours, CutWeight::pixels, BoxOrder::lower_in_place)) {
+    for (std::uint32_t k : keep)
+        if (palette.size() + 2 <= max_colours && std::find(palette.begin(), palette.end(), k) == palette.end() &&
+            std::any_of(colours.begin(), colours.end(), [&](const ColourCount& c) { return c.rgb == k; }))
+            palette.push_back(k);
+    if (!palette.empty())
+        std::erase_if(colours, [&](const ColourCount& c) {
+            return std::find(palette.begin(), palette.end(), c.rgb) != palette.end();
+        });
+    for (const ColourBox& b : median_cut(colours, max_colours - palette.size(), CutWeight::pixels, BoxOrder::lower_in_place)) {
         auto best = std::max_element(colours.begin() + static_cast<std::ptrdiff_t>(b.begin),
                                      colours.begin() + static_cast<std::ptrdiff_t>(b.end),
                                      [](const ColourCount& x, const ColourCount& y) { return x.pixels < y.pixels; });
@@ -74,7 +86,8 @@ std::string encode_png(int w, int h, const std::vector<png_bytep>& rows, const s
 
 }  // namespace
 
-void write_png8(cairo_surface_t* surface, const std::string& path, int max_colours, double dpi) {
+void write_png8(cairo_surface_t* surface, const std::string& path, int max_colours, double dpi,
+                const std::vector<std::uint32_t>& keep) {
     cairo_surface_flush(surface);
     const int w = cairo_image_surface_get_width(surface), h = cairo_image_surface_get_height(surface);
     const int stride = cairo_image_surface_get_stride(surface);
@@ -88,7 +101,7 @@ void write_png8(cairo_surface_t* surface, const std::string& path, int max_colou
     colours.reserve(histogram.size());
     for (auto [rgb, n] : histogram) colours.push_back({rgb, n});
     const std::vector<std::uint32_t> palette =
-        palette_of(std::move(colours), static_cast<std::size_t>(std::clamp(max_colours, 2, 256)));
+        palette_of(std::move(colours), static_cast<std::size_t>(std::clamp(max_colours, 2, 256)), keep);
 
     std::unordered_map<std::uint32_t, std::uint8_t> index;
     for (auto& [rgb, n] : histogram) {

@@ -176,7 +176,7 @@ const std::vector<Hostile> kCases = {
      [](const fs::path& d) {
          fs::create_directories(d / "figs");
          write(d / "figs" / "plot_s_curve.png", "[dragon]\nwidth = 0.3\n");
-         return std::vector<std::string>{"figures", "--only", "plot_s_curve", "--scale", "0.25", "--scenario",
+         return std::vector<std::string>{"figures", "--only", "plot_s_curve", "--scale", "0.65", "--scenario",
                                          (d / "figs" / "plot_s_curve.png").string(), "-o", (d / "figs").string()};
      },
      "is the scenario file '@/figs/plot_s_curve.png' this run reads"},

@@ -61,7 +61,7 @@ TEST(CliOutputs, StatusGoesToStderrAndQuietSilencesIt) {
         {"collide --from 400 -o " + (dir / "c.json").string(), "c.json"},
         {"render --time 1 --size 64x64 -o " + (dir / "r.png").string(), "r.png"},
         {"turnaround --no-clearance -o " + (dir / "study.csv").string(), "study.csv"},
-        {"figures --only plot_s_curve,fig1_link_geometry --scale 0.25 -o " + dir.string(), "plot_s_curve.png"},
+        {"figures --only plot_s_curve,fig1_link_geometry --scale 0.65 -o " + dir.string(), "plot_s_curve.png"},
         {"video --size 64x48 --fps 5 --to 1 -o " + (dir / "v.gif").string(), "v.gif"},
         {"solve --only q1 -o " + dir.string(), "result1.xlsx"},
     };

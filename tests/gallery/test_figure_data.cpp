@@ -44,7 +44,7 @@ protected:
     static void SetUpTestSuite() {
         dir_ = new fs::path(dragon_test::scratch_dir() / "data");
         FigureOptions fo;
-        fo.scale = 0.3;
+        fo.scale = kMinFigureScale;
         fo.data = true;
         write_figures(dir_->string(), Scenario{}, fo);
     }

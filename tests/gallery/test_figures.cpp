@@ -25,7 +25,7 @@ namespace {
 std::map<std::string, std::string> figure_texts(const Scenario& s, const std::vector<std::string>& only) {
     std::map<std::string, std::string> said;
     FigureOptions o;
-    o.scale = 0.4;  // small pictures: the texts are the same
+    o.scale = kMinFigureScale;  // small pictures: the texts are the same
     o.only = only;
     o.on_text = [&](const std::string& figure, const std::string& text) { said[figure] += text + "\n"; };
     write_figures(dragon_test::scratch_dir().string(), s, o);

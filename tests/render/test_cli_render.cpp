@@ -82,7 +82,7 @@ TEST_F(CliRender, BadInputExitsTwoWithNoFile) {
 TEST_F(CliRender, FiguresListAndOne) {
     EXPECT_EQ(run("figures --list"), 0);
     const auto figs = dir / "figs";
-    ASSERT_EQ(run("figures --scale 0.5 --only plot_speeds plot_s_curve -o " + figs.string()), 0);
+    ASSERT_EQ(run("figures --scale 0.65 --only plot_speeds plot_s_curve -o " + figs.string()), 0);
     EXPECT_TRUE(fs::exists(figs / "plot_speeds.png"));
     EXPECT_TRUE(fs::exists(figs / "plot_s_curve.png"));
     EXPECT_EQ(run("figures --only no_such_figure -o " + figs.string()), 2);

@@ -13,6 +13,10 @@
 
 namespace dragon {
 
+// The smallest FigureOptions::scale: the plots' smallest text (11 px at 800 px) stays at the
+// floor, kMinTextPx * 11 / 13 (tests/paper/test_layout.cpp checks every figure at it).
+inline constexpr double kMinFigureScale = 0.65;
+
 struct FigureOptions {
     Theme theme;            // light by default
     std::string asset_dir;  // where named themes are (find_asset_dir's hint; "": its default)
@@ -51,7 +55,8 @@ std::vector<FigureInfo> figure_list();
 // a figure prints, and the times and pitches it shows, come from that scenario's own answers
 // (its first contact, its minimum pitch); remarks about the contest's paper appear only for the
 // contest's own scenario (is_contest_default). Calls `done` after each file. Throws InputError
-// for an unknown name in opt.only or an unknown format.
+// for an unknown name in opt.only or an unknown format. `done` hears of every file written: each
+// figure, then its data file (FigureOptions::data) under the same FigureInfo.
 void write_figures(const std::string& dir, const Scenario& base, const FigureOptions& opt,
                    const std::function<void(const FigureInfo&, const std::string& path)>& done = {});
 

@@ -17,7 +17,14 @@ struct ContextDeleter {
 using Surface = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
 using Context = std::unique_ptr<cairo_t, ContextDeleter>;
 
+// Starts a picture in the layout log (render/paint.hpp) when one records: an image surface's
+// pixels (a vector surface's page is logged by whoever knows it).
+void log_new_surface(cairo_surface_t* target);
+
 // A context on a surface (cairo_create references the surface, so either may go first).
-inline Context make_context(cairo_surface_t* target) { return Context(cairo_create(target)); }
+inline Context make_context(cairo_surface_t* target) {
+    log_new_surface(target);
+    return Context(cairo_create(target));
+}
 
 }  // namespace dragon::cairo

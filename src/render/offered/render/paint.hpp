@@ -51,6 +51,45 @@ inline double text_size(double nominal, double unit, double body_px) {
     return body_px > 0 ? body_px * (nominal > 14 ? 1.2 : 1.0) : nominal * unit;
 }
 
+// The layout log: what the renderer placed on a picture, in the picture's device units (a PNG's
+// or a frame's pixels, a PDF's points), for a check that reads the layout rather than pixels
+// (tests/render/test_layout.cpp): no text off the page, none over another, a legend clear of the
+// marks it explains, no text under the floor. Off (and free) unless a LayoutRecording is alive
+// on the thread that draws.
+struct LayoutItem {
+    enum class Kind {
+        picture,  // a new picture: its page (every entry up to the next picture is on it)
+        text,     // one line of text: its box and its size
+        legend,   // a legend's box
+        mark,     // something a legend explains and nothing may cover: a touching bench, a contact
+    };
+    Kind kind = Kind::text;
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // the box, device units
+    double size = 0;                         // text: its size (em), device units
+    std::string text;                        // text: what it says; legend, mark: what it is
+    bool clipped = false;                    // text: part of it lies outside the clip it is drawn in
+};
+// Records every placement drawn on this thread while alive (one at a time per thread).
+class LayoutRecording {
+public:
+    LayoutRecording();
+    ~LayoutRecording();
+    LayoutRecording(const LayoutRecording&) = delete;
+    LayoutRecording& operator=(const LayoutRecording&) = delete;
+    const std::vector<LayoutItem>& placed() const { return placed_; }
+    void clear() { placed_.clear(); }
+
+private:
+    std::vector<LayoutItem> placed_;
+};
+// Whether a LayoutRecording is alive on this thread.
+bool layout_recording();
+// A placement in cr's user space, recorded (in device units) when recording; a no-op otherwise.
+void log_placed(cairo_t* cr, LayoutItem::Kind kind, double x0, double y0, double x1, double y1, const std::string& what = {},
+                double size = 0);
+// A new picture of w x h device units (its page), when recording.
+void log_picture(double w, double h, const std::string& what = {});
+
 // Tick positions for [lo, hi]: about `target` steps of 1, 2 or 5 times a power of ten.
 struct Ticks {
     double step = 1.0;

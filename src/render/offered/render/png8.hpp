@@ -2,7 +2,9 @@
 // blends, so 256 colours chosen by median cut look the same and take a third of the bytes.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include <cairo.h>
 
@@ -13,7 +15,10 @@ namespace dragon::render {
 // Writes an image surface (RGB24 or opaque ARGB32) as an 8-bit palette PNG, all-or-nothing.
 // At most `max_colours` (2..256) palette entries.
 // `dpi` > 0: the resolution stated in the file (its pHYs chunk), for a picture at a print size.
-void write_png8(cairo_surface_t* surface, const std::string& path, int max_colours = 256, double dpi = 0);
+// `keep` (0xRRGGBB): colours kept exactly, each an entry of its own, where the picture holds
+// them (the theme's role colours: role_colours).
+void write_png8(cairo_surface_t* surface, const std::string& path, int max_colours = 256, double dpi = 0,
+                const std::vector<std::uint32_t>& keep = {});
 
 // An image surface (RGB24 or opaque ARGB32) as a 24-bit PNG's bytes, stating `dpi` (> 0) as
 // its resolution. Throws SolverError if libpng fails.
