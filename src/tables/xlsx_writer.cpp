@@ -137,7 +137,7 @@ std::string cell_name(std::uint32_t row, std::uint32_t col) {
 
 // ---- Sheet --------------------------------------------------------------------------------
 
-void Sheet::open_cell(std::uint32_t row, std::uint32_t col) {
+void Sheet::check_cell(std::uint32_t row, std::uint32_t col) const {
     if (row >= kMaxRows || col >= kMaxColumns)
         throw std::out_of_range(fmt::format("the cell at row {}, column {} is past a sheet's {} rows and {} columns",
                                             row + 1, col + 1, kMaxRows, kMaxColumns));
@@ -145,6 +145,10 @@ void Sheet::open_cell(std::uint32_t row, std::uint32_t col) {
         throw std::invalid_argument(fmt::format("sheet '{}': the cell {} comes after {}: cells are written row by row, "
                                                 "left to right",
                                                 name_, cell_name(row, col), cell_name(row_, col_)));
+}
+
+void Sheet::open_cell(std::uint32_t row, std::uint32_t col) {
+    check_cell(row, col);
     if (!any_ || row != row_) {
         if (row_open_) rows_ += "</row>";
         fmt::format_to(std::back_inserter(rows_), "<row r=\"{}\">", row + 1);
@@ -162,7 +166,8 @@ void Sheet::open_cell(std::uint32_t row, std::uint32_t col) {
 }
 
 void Sheet::write_string(std::uint32_t row, std::uint32_t col, std::string_view text) {
-    const std::uint32_t id = book_->string_index(text);  // checks the text before the cell is opened
+    check_cell(row, col);  // a refused cell or text leaves the sheet and the strings as they were
+    const std::uint32_t id = book_->string_index(text);
     open_cell(row, col);
     fmt::format_to(std::back_inserter(rows_), " t=\"s\"><v>{}</v></c>", id);
 }
@@ -219,9 +224,12 @@ Sheet& Workbook::add_sheet(std::string_view name) {
 }
 
 std::uint32_t Workbook::string_index(std::string_view text) {
-    ++string_uses_;
-    const auto found = string_ids_.find(std::string(text));
-    if (found != string_ids_.end()) return found->second;
+    std::string key(text);
+    const auto found = string_ids_.find(key);
+    if (found != string_ids_.end()) {
+        ++string_uses_;
+        return found->second;
+    }
     std::string si = "<si><t";
     if (needs_preserve(text)) si += " xml:space=\"preserve\"";
     si += '>';
@@ -229,7 +237,8 @@ std::uint32_t Workbook::string_index(std::string_view text) {
     si += "</t></si>";
     strings_ += si;
     const auto id = static_cast<std::uint32_t>(string_ids_.size());
-    string_ids_.emplace(std::string(text), id);
+    string_ids_.emplace(std::move(key), id);
+    ++string_uses_;
     return id;
 }
 

@@ -42,6 +42,7 @@ public:
 private:
     friend class Workbook;
     Sheet(std::string name, Workbook& book) : name_(std::move(name)), book_(&book) {}
+    void check_cell(std::uint32_t row, std::uint32_t col) const;  // throws unless the cell may come next
     void open_cell(std::uint32_t row, std::uint32_t col);
     std::string head() const;  // the XML before the rows (with the sheet's dimension)
     std::string_view tail() const;

@@ -448,15 +448,18 @@ TEST(XlsxWriter, RefusesWhatASheetCannotHold) {
     EXPECT_THROW(s.write_number(0, 5, 2.0), std::invalid_argument);  // a row before
     EXPECT_THROW(s.write_string(1, 2, "\xff bad UTF-8"), std::invalid_argument);
     EXPECT_THROW(s.write_string(1, 2, "\xe9\xbe"), std::invalid_argument);  // cut short
+    EXPECT_THROW(s.write_string(0, 9, "kept?"), std::invalid_argument);  // a row before: the text is not kept
     s.write_number(1, 2, 3.0);  // still writable after the refusals
+    s.write_string(1, 3, "ok");
     EXPECT_THROW(book.add_sheet(""), std::invalid_argument);
     EXPECT_THROW(book.add_sheet("S"), std::invalid_argument);  // names differ only in case
     EXPECT_THROW(book.add_sheet("a/b"), std::invalid_argument);
     EXPECT_THROW(book.add_sheet(std::string(32, 'x')), std::invalid_argument);
     EXPECT_NO_THROW(book.add_sheet(std::string(31, 'x')));
     EXPECT_NO_THROW(book.add_sheet("龙头龙头龙头龙头龙头龙头龙头龙头龙头龙头龙头龙头龙头龙头龙头龙"));  // 31 characters
-    const auto cells = cells_of(parts_of(book.bytes(1)), 1);
-    EXPECT_EQ(cells, (std::map<std::string, std::string>{{"B2", "1"}, {"C2", "3"}}));
+    const auto parts = parts_of(book.bytes(1));
+    EXPECT_EQ(cells_of(parts, 1), (std::map<std::string, std::string>{{"B2", "1"}, {"C2", "3"}, {"D2", "ok"}}));
+    EXPECT_NE(parts.at("xl/sharedStrings.xml").find("count=\"1\" uniqueCount=\"1\""), std::string::npos);
 }
 
 TEST(XlsxWriter, SameCellsSameBytes) {
