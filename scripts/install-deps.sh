@@ -10,7 +10,7 @@
 set -euo pipefail
 run_packages=(
   build-essential cmake ninja-build pkg-config
-  libeigen3-dev libfmt-dev libtomlplusplus-dev libcli11-dev libxlsxwriter-dev nlohmann-json3-dev
+  libeigen3-dev libfmt-dev libtomlplusplus-dev libcli11-dev zlib1g-dev nlohmann-json3-dev
   libcairo2-dev fonts-dejavu-core
   fonts-noto-cjk          # Chinese (and Japanese, Korean) glyphs: the pictures' fallback font
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The core component alone: configures build-core/ with the answers, tables, render and video
-# components left out (no nlohmann-json, Cairo, FFmpeg or libxlsxwriter needed), builds it and
+# components left out (no nlohmann-json, Cairo, FFmpeg or zlib needed), builds it and
 # runs the core's tests there.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -174,9 +174,8 @@ void register_solve(CLI::App& app, Registry& reg) {
             table_target(contest.asks(Question::q2) || contest.asks(Question::q3) || contest.asks(Question::q4) ||
                              contest.asks(Question::q5), "answers");
         }
-        // The long workbooks (most of the time: libxlsxwriter formats and deflates every cell)
+        // The long workbooks (most of the time: every cell formatted, then deflated)
         // are written as soon as their tables are ready, while the other questions are answered.
-        // (Nothing is written on stderr meanwhile: libxlsxwriter's closing mutes it.)
         if (result1) contest.on_q1_table = [result1](const std::vector<Frame>& t) { write_result_xlsx(t, *result1, kWorkbooks); };
         if (result4) contest.on_q4_table = [result4](const std::vector<Frame>& t) { write_result_xlsx(t, *result4, kWorkbooks); };
         contest.executor = &ex;

@@ -12,9 +12,8 @@
 
 namespace dragon::cli {
 
-// The tool owns its stderr, and says a failed write in one line of its own: libxlsxwriter's
-// lines are muted while a workbook closes.
-inline constexpr WorkbookOptions kWorkbooks{true};
+// The tool's workbooks: the library's defaults (zlib level 1, see WorkbookOptions).
+inline constexpr WorkbookOptions kWorkbooks{};
 
 // The handles the paper-style tables show: 0, 1, 51, 101, 151, 201 and the tail's rear handle
 // (those that exist for a shorter chain).

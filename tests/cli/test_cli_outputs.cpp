@@ -98,7 +98,7 @@ TEST(CliOutputs, SolveWritesAllOrNothingWhenAWriteFails) {
     // result1.xlsx is ~1.4 MB: past 64 KiB, its write fails, after Q1's table was computed.
     const auto r = run_dragon("solve --only q1,q4 -o " + dir.string(), file_size_limit(64));
     EXPECT_EQ(r.code, 1);
-    EXPECT_EQ(count_lines(r.err), 1) << r.err;  // libxlsxwriter's own lines are not shown
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;  // nothing but the one line
     EXPECT_TRUE(contains(r.err, "dragon: failed: cannot write '" + (dir / "result1.xlsx").string() + "': File too large"))
         << r.err;
     EXPECT_EQ(names_in(dir), (std::vector<std::string>{"result1.xlsx", "result4.xlsx", "summary.json"}));
@@ -147,8 +147,8 @@ TEST(CliOutputs, WorkbooksAreTheSameBytesFromRunToRun) {
     EXPECT_EQ(slurp(dir / "a.xlsx"), slurp(dir / "b.xlsx"));
 }
 
-// The tool packs its workbooks at zlib's level 1 (cli/zip_level.cpp): every deflated part says
-// so in its header. tests/tables holds the library's own workbooks to the default level.
+// The tool packs its workbooks at zlib's level 1 (WorkbookOptions' default): every deflated
+// part says so in its header.
 TEST(CliOutputs, TheToolsWorkbooksAreDeflatedFast) {
     const fs::path dir = fresh_dir("out");
     ASSERT_EQ(run_dragon("solve --only q2 -q -o " + dir.string()).code, 0);

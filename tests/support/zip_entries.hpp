@@ -30,7 +30,7 @@ inline std::vector<ZipEntry> zip_entries(const std::filesystem::path& path) {
     std::vector<ZipEntry> out;
     std::size_t at = 0;
     // Local headers follow one another (PK\3\4), each with its data; sizes are in the header
-    // unless bit 3 defers them to a descriptor, which libxlsxwriter's minizip does not use.
+    // unless bit 3 defers them to a descriptor, which the workbooks' zip writer does not use.
     while (at + 30 <= b.size() && b.compare(at, 4, "PK\3\4") == 0) {
         ZipEntry e;
         e.flags = u16(at + 6);

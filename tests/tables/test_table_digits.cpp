@@ -92,7 +92,7 @@ TEST(Workbooks, SameBytesFromRunToRun) {
     const fs::path c = dragon_test::scratch_dir() / "c.xlsx", d = dragon_test::scratch_dir() / "d.xlsx";
     write_result_xlsx(frames, a.string());
     write_result2_xlsx(frames.back(), c.string());
-    // The creation time libxlsxwriter would write has one-second resolution: a second later,
+    // A creation time taken from the clock would have one-second resolution: a second later,
     // a workbook stamped with the clock would differ.
     std::this_thread::sleep_for(std::chrono::milliseconds(1100));
     write_result_xlsx(frames, b.string());
@@ -103,7 +103,7 @@ TEST(Workbooks, SameBytesFromRunToRun) {
 }
 
 // dragon solve writes its workbooks on several threads at once: each comes out byte for byte as
-// written alone, and stderr (muted while any of them closes, when asked) is back afterwards.
+// written alone (at the default level, 1, named here), and stderr is never touched.
 TEST(Workbooks, SeveralAtOnceOnThreads) {
     const Simulation sim(Scenario{});
     const std::vector<Frame> frames = simulate_table(sim, 0.0, 20.0, 1.0);
@@ -113,7 +113,7 @@ TEST(Workbooks, SeveralAtOnceOnThreads) {
     for (int k = 0; k < 4; ++k) paths.push_back(dragon_test::scratch_dir() / fmt::format("thread{}.xlsx", k));
     std::vector<std::thread> writers;
     for (const fs::path& p : paths)
-        writers.emplace_back([&frames, p] { write_result_xlsx(frames, p.string(), WorkbookOptions{true}); });
+        writers.emplace_back([&frames, p] { write_result_xlsx(frames, p.string(), WorkbookOptions{1}); });
     for (std::thread& w : writers) w.join();
     for (const fs::path& p : paths) EXPECT_EQ(bytes(p), bytes(alone)) << p;
     // File descriptor 2 is stderr again, not /dev/null.

@@ -82,18 +82,21 @@ TEST(Workbooks, Result2MatchesTheContestTemplate) {
     EXPECT_EQ(run_checker(out, "result2-template.xlsx", values), 0);
 }
 
-// The library keeps libxlsxwriter's own compression (zlib's default level: flag bits 00); only
-// the dragon executable packs faster (cli/zip_level.cpp, tested in tests/cli).
-TEST(Workbooks, TheLibraryDeflatesAtTheDefaultLevel) {
-    const fs::path out = tmp_dir() / "default-level.xlsx";
-    write_result2_xlsx(Simulation(Scenario{}).frame(412.0), out.string());
-    int deflated = 0;
-    for (const auto& e : dragon_test::zip_entries(out)) {
-        if (e.method != 8) continue;
-        ++deflated;
-        EXPECT_EQ(e.flags & 6, 0) << e.name;
+// The library deflates at zlib's level 1 unless asked (WorkbookOptions): flag bits 11, as the
+// tool's (tests/cli); zlib's default level 6 when asked for it: flag bits 00.
+TEST(Workbooks, TheLibraryDeflatesAtTheLevelAsked) {
+    for (const int level : {1, 6}) {
+        const fs::path out = tmp_dir() / "level.xlsx";
+        if (level == 1) write_result2_xlsx(Simulation(Scenario{}).frame(412.0), out.string());
+        else write_result2_xlsx(Simulation(Scenario{}).frame(412.0), out.string(), WorkbookOptions{level});
+        int deflated = 0;
+        for (const auto& e : dragon_test::zip_entries(out)) {
+            if (e.method != 8) continue;
+            ++deflated;
+            EXPECT_EQ(e.flags & 6, level == 1 ? 6 : 0) << e.name;
+        }
+        EXPECT_GT(deflated, 0);
     }
-    EXPECT_GT(deflated, 0);
 }
 
 TEST(Tables, CsvRoundTrips) {
