@@ -4,20 +4,22 @@
 // the chain's shape depends on the travel alone, so the contact found is the same, bit for bit,
 // at any head speed, and its time is travel / speed.
 //
-// Stepping: at time t every pair of benches has separation g_ij > 0 and, from the benches'
-// exact rigid-body velocity fields, a bound L_ij on how fast g_ij can shrink now. Advancing by
-//     tau = min_ij g_ij / (kSafety L_ij)
-// cannot skip a contact as long as the true closing speed stays below kSafety times the bound
-// over the step, which holds with a wide margin because the benches' velocities change slowly
-// over a step of at most kMaxTravel of head travel. Pairs within the broad phase's margin M get
-// their own bounds (and second-order ones near grazing passes, checked at the next evaluation);
-// pairs beyond it are bounded group by group (far_pairs_step); benches or groups on different
-// turns may instead take a bound from their radii about the centre, which neighbouring turns
-// sliding past each other do not shrink (radial_step). Collide-separate-collide windows
-// are therefore never stepped over, unlike one bisection over the whole run; the test
-// Q2.EveryStepDeclaredSafeIsSafe samples inside every step, on runs with such a window. Near
-// the contact a Newton probe on the closest pair brackets the root, which is then refined by
-// bisection to tol::travel.
+// Stepping: at head travel x every pair of benches has separation g_ij > 0 and, from the
+// benches' exact rigid-body velocity fields, a bound L_ij on how fast g_ij can shrink per metre
+// of travel now. The step
+//     h = min_ij g_ij / (rate_safety L_ij)    (m of head travel)
+// skips no contact as long as the true closing speed stays below rate_safety times the bound
+// over the step: an assumption, checked at the step's end (a broken bound sends the search back
+// with a shorter step), not a proof. With ContactSearchOptions::prove_steps each step is then
+// proved contact-free from the chain at its two ends (swept_proof.hpp), and one that is not is
+// taken again shorter: the rate bounds choose, the enclosures prove. Pairs within the broad
+// phase's margin get their own rate bounds (and second-order ones near grazing passes, checked at
+// the next evaluation); pairs beyond it are bounded group by group (far_pairs_step); benches or
+// groups on different turns may instead take a bound from their radii about the centre, which
+// neighbouring turns sliding past each other do not shrink (radial_step). The test
+// Q2.EveryStepDeclaredSafeIsSafe samples inside every step, on runs with a window of contact
+// that opens and closes. Near the contact a Newton probe on the closest pair brackets the root,
+// which is then refined by bisection to tol::travel.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
