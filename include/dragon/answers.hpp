@@ -33,7 +33,8 @@ void add_window(Json& answer, const Searched& w);
 // A first contact: {"time", "travel", "benches", "head_radius", "point", "tolerance"}.
 Json contact_json(const Contact& c);
 // What a first-contact search proved: {"method", "steps", "subdivisions", "unproved_steps",
-// "unproved_travel", "least_separation", "proved_travel": [from, to]}.
+// "unproved_travel", "least_separation", "covered_travel": [from, to]: the head
+// travel the accepted steps cover, proved contact-free where "method" is "enclosure"}.
 Json proof_json(const ContactProof& p);
 // collide's answer: the contact's keys (null where there is none), "evaluations", "enclosure"
 // ({"travel": [lo, hi], "time": [lo, hi]}: the first contact lies within; null without one),

@@ -66,7 +66,7 @@ Json proof_json(const ContactProof& p) {
             {"unproved_steps", p.unproved_steps},
             {"unproved_travel", p.unproved_travel},
             {"least_separation", std::isfinite(p.least_gap) ? Json(p.least_gap) : Json(nullptr)},
-            {"proved_travel", {p.proved_from, p.proved_to}}};
+            {"covered_travel", {p.proved_from, p.proved_to}}};
 }
 
 Json collide_answer(const CollideAnswer& r, bool with_handles) {

@@ -49,7 +49,12 @@ Json collide_measure(const Scenario& s, const MeasureOptions& options, std::stri
     InlineExecutor here(options.stop_source);
     const CollideAnswer search = collide(Simulation(s), options.window(s.path.kind), &here);
     if (search.jam) jam = "no contact before the end of the valid motion: " + jam_sentence(*search.jam);
-    return collide_answer(search, false);
+    // The command's keys but what it proved (its "enclosure" and "proof"): a sweep's columns stay
+    // those its files were written with.
+    Json answer = collide_answer(search, false);
+    answer.erase("enclosure");
+    answer.erase("proof");
+    return answer;
 }
 
 Json min_pitch_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {

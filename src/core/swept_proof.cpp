@@ -266,14 +266,17 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
                     for (size_t q = 0; q < axes.size(); ++q) axes[q] = rotated_back(axes[q], (q / 2) % 2 == 0 ? head[1] : head[0]);
                 double best = -INFINITY;
                 for (const Vec2& n : axes) {
-                    double gap = INFINITY;  // the least over the enclosures (both ends of theta_0)
+                    // b beyond a along n, and a beyond b: each the least over the enclosures
+                    // (both ends of theta_0: concave in it, each side on its own).
+                    double above = INFINITY, below = INFINITY;
                     for (int t = 0; t < frames; ++t) {
                         double alo, ahi, blo, bhi;
                         project(ws.benches[static_cast<size_t>(t) * nb + a], n, alo, ahi);
                         project(ws.benches[static_cast<size_t>(t) * nb + b], n, blo, bhi);
-                        gap = std::min(gap, std::max(blo - ahi, alo - bhi));
+                        above = std::min(above, blo - ahi);
+                        below = std::min(below, alo - bhi);
                     }
-                    best = std::max(best, gap);
+                    best = std::max({best, above, below});
                     if (best > radii + kProofSlack + kProofBoxMargin) break;  // enough: a sharper bound is not needed
                 }
                 proved = best - radii;
