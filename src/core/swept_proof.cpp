@@ -59,10 +59,6 @@ void enclose(const Rect& r, double d, const HandleSpan& F, const HandleSpan& R, 
     s.x0 = x0 - grow, s.x1 = x1 + grow, s.y0 = y0 - grow, s.y1 = y1 + grow;
 }
 
-Vec2 rotated_back(const Vec2& v, double angle) {  // v turned by -angle
-    const double c = std::cos(angle), s = std::sin(angle);
-    return {c * v.x() + s * v.y(), -s * v.x() + c * v.y()};
-}
 
 // Benches a < b (0-based), b >= a + 2, of the chain near each other along it: a lower bound on
 // their distance at every moment of the step that holds without enclosing them, or -inf. With
@@ -236,6 +232,13 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
         }
         ws.boxes[k] = {box.x0, box.x1, box.y0, box.y1, box.radius};
     }
+    // Axes of the fixed frame into the turned one, by -theta_0 at the end (0) or the start (1).
+    std::array<std::array<double, 2>, 2> turn{};
+    for (size_t e = 0; e < 2 && turned; ++e) turn[e] = {std::cos(head[e]), std::sin(head[e])};
+    const auto turn_back = [&](const Vec2& v, size_t e) {
+        const double c = turn[e][0], sn = turn[e][1];
+        return Vec2{c * v.x() + sn * v.y(), -sn * v.x() + c * v.y()};
+    };
     // 4. Pairs whose boxes (grown by half the margin each) meet: sweep and prune along x. Every
     // other pair's boxes are more than kProofBoxMargin apart in x or y, so are its benches.
     ws.order.resize(nb);
@@ -259,11 +262,13 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
             double proved = b >= a + 2 ? chain_gap(turning, spec, f0, a, b) : -INFINITY;
             if (!(proved > kProofSlack)) {
                 // The boards' edge normals at both ends of the step (in the turned frame there).
-                std::array<Vec2, 8> axes = {f0.benches[a].axis, perp(f0.benches[a].axis), f1.benches[a].axis,
-                                            perp(f1.benches[a].axis), f0.benches[b].axis, perp(f0.benches[b].axis),
-                                            f1.benches[b].axis, perp(f1.benches[b].axis)};
+                // The normals first: the long sides face each other in most near pairs, and the
+                // loop stops at the first axis that proves the pair.
+                std::array<Vec2, 8> axes = {perp(f0.benches[a].axis), perp(f0.benches[b].axis), perp(f1.benches[a].axis),
+                                            perp(f1.benches[b].axis), f0.benches[a].axis, f0.benches[b].axis,
+                                            f1.benches[a].axis, f1.benches[b].axis};
                 if (turned)  // the start's axes turned by its theta_0, the end's by its own
-                    for (size_t q = 0; q < axes.size(); ++q) axes[q] = rotated_back(axes[q], (q / 2) % 2 == 0 ? head[1] : head[0]);
+                    for (size_t q = 0; q < axes.size(); ++q) axes[q] = turn_back(axes[q], (q / 2) % 2 == 0 ? 1 : 0);
                 double best = -INFINITY;
                 for (const Vec2& n : axes) {
                     // b beyond a along n, and a beyond b: each the least over the enclosures
