@@ -18,50 +18,22 @@
 #include "dragon/answers.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/collision.hpp"
+#include "dragon/contest.hpp"
 #include "dragon/executor.hpp"
 #include "dragon/json.hpp"
 #include "dragon/scenario.hpp"
+#include "dragon/sweep.hpp"
 #include "dragon/turnaround.hpp"
 
 using emscripten::val;
 
 namespace {
 
-// The scenario's keys as the CLI's flags name them (without dashes), and the value each sets.
-// (The library's key description, issue 28, will hold this table; until then the page's own.)
-struct Key {
-    const char* flag;
-    dragon::ScenarioValues value;
-};
-constexpr Key kKeys[] = {
-    {"pitch", dragon::value::pitch},           {"speed", dragon::value::head_speed},
-    {"bench-count", dragon::value::bench_count}, {"head-length", dragon::value::head_length},
-    {"body-length", dragon::value::body_length}, {"width", dragon::value::width},
-    {"hole-offset", dragon::value::hole_offset}, {"start-turn", dragon::value::start_turn},
-    {"turn-radius", dragon::value::turn_radius}, {"turn-pitch", dragon::value::turn_pitch},
-    {"arc-ratio", dragon::value::arc_ratio},
-};
-
-double* slot(dragon::Scenario& s, dragon::ScenarioValues v) {
-    using namespace dragon::value;
-    if (v == pitch) return &s.path.pitch;
-    if (v == head_speed) return &s.head_speed;
-    if (v == head_length) return &s.bench.head_length;
-    if (v == body_length) return &s.bench.body_length;
-    if (v == width) return &s.bench.width;
-    if (v == hole_offset) return &s.bench.hole_offset;
-    if (v == start_turn) return &s.path.start_turn;
-    if (v == turn_radius) return &s.path.turn_radius;
-    if (v == turn_pitch) return &s.path.turn_pitch;
-    if (v == arc_ratio) return &s.path.arc_ratio;
-    return nullptr;  // the bench count is a whole number
-}
-
 // The flags of a set of values, in the table's order.
 val flags_of(dragon::ScenarioValues values) {
     val out = val::array();
-    for (const Key& k : kKeys)
-        if (values & k.value) out.call<void>("push", std::string(k.flag));
+    for (const dragon::SweepParameter& p : dragon::sweep_parameters())
+        if (values & p.value) out.call<void>("push", std::string(p.name));
     return out;
 }
 
@@ -92,24 +64,16 @@ val answer_val(const dragon::Json& j) {
     return out;
 }
 
-// The executor every search runs on: this thread.
-dragon::InlineExecutor& here() {
-    static dragon::InlineExecutor ex;
-    return ex;
-}
 
 class Engine {
 public:
-    Engine() { dragon::set_default_workers(1); }
+    Engine() = default;
 
     // The contest's values, by flag name.
     static val defaults() {
         dragon::Scenario s;
         val out = val::object();
-        for (const Key& k : kKeys) {
-            if (k.value == dragon::value::bench_count) out.set(k.flag, s.bench.bench_count);
-            else out.set(k.flag, *slot(s, k.value));
-        }
+        for (const dragon::SweepParameter& p : dragon::sweep_parameters()) out.set(p.name, dragon::get_parameter(s, p));
         return out;
     }
 
@@ -120,21 +84,17 @@ public:
         dragon::Scenario s;
         const std::string kind = keys["path"].isString() ? keys["path"].as<std::string>() : "spiral";
         s.path.kind = kind == "turnaround" ? dragon::PathKind::turnaround : dragon::PathKind::spiral;
-        for (const Key& k : kKeys) {
-            const val v = keys[k.flag];
-            if (v.isUndefined() || v.isNull()) continue;
-            const double x = v.as<double>();
-            if (k.value == dragon::value::bench_count) {
-                if (!(x == std::floor(x)) || !(x >= 1 && x <= 1000000))
-                    return refusal("bench count " + dragon::error_value(x) +
-                                       " is not allowed: the chain needs 1 to 1000000 benches",
-                                   dragon::value::bench_count);
-                s.bench.bench_count = static_cast<int>(x);
-            } else {
-                *slot(s, k.value) = x;
-            }
-        }
         try {
+            // The library's scenario keys by their flags' names, each set by the library's own
+            // setter (a bench count is checked before it becomes an int).
+            for (const dragon::SweepParameter& p : dragon::sweep_parameters()) {
+                const val v = keys[p.name];
+                if (v.isUndefined() || v.isNull()) continue;
+                const double x = v.as<double>();
+                if (p.whole && x != std::floor(x))
+                    return refusal("bench count " + dragon::error_value(x) + " is not allowed: give a whole number", p.value);
+                dragon::set_parameter(s, p, x);
+            }
             dragon::validate(s, dragon::values_read(s.path.kind) | dragon::value::turn_radius);
             sim_.emplace(s);
             range_ = sim_->valid_range();
@@ -300,7 +260,7 @@ public:
             if (command == "collide") {
                 const dragon::Simulation sim(s);
                 return answer_val(dragon::collide_answer(
-                    dragon::collide(sim, dragon::default_window(s.path.kind), &here()), true));
+                    dragon::collide(sim, dragon::default_window(s.path.kind), nullptr), true));
             }
             if (command == "min-pitch") {
                 s.path.kind = dragon::PathKind::spiral;
@@ -308,21 +268,22 @@ public:
                                         dragon::value::turn_radius);
                 dragon::MinPitchOptions options;
                 options.progress = report;
-                options.executor = &here();
-                return answer_val(dragon::min_pitch_answer(dragon::min_pitch(s, 0.35, 0.55, options), s.path.turn_radius));
+                options.executor = nullptr;
+                return answer_val(dragon::min_pitch_answer(dragon::min_pitch(s, dragon::pitch_search_range(s, std::nullopt, std::nullopt).lo,
+                                                                   dragon::pitch_search_range(s, std::nullopt, std::nullopt).hi, options), s.path.turn_radius));
             }
             if (command == "turnaround") {
                 s.path.kind = dragon::PathKind::turnaround;
                 dragon::validate(s);
                 const dragon::TurnaroundStudy st = dragon::study_turnaround(s);
-                const dragon::RunClearance clear = dragon::min_clearance(s, dragon::kTurnaroundWindow, report, &here());
+                const dragon::RunClearance clear = dragon::min_clearance(s, dragon::kTurnaroundWindow, report, nullptr);
                 return answer_val(dragon::turnaround_answer(st.design, st.design_jam, clear, &st));
             }
             if (command == "max-speed") {
                 s.path.kind = dragon::PathKind::turnaround;
                 dragon::validate(s);
                 return answer_val(dragon::max_speed_answer(
-                    dragon::max_head_speed(s, 2.0, dragon::kTurnaroundWindow, &here()), 2.0));
+                    dragon::max_head_speed(s, 2.0, dragon::kTurnaroundWindow, nullptr), 2.0));
             }
             return refusal("no such question: " + command, 0);
         } catch (const dragon::ScenarioError& e) {
@@ -344,7 +305,7 @@ public:
         try {
             dragon::MinPitchOptions options;
             options.grid = grid;
-            options.executor = &here();
+            options.executor = nullptr;
             const dragon::MinPitch m = dragon::min_pitch(s, lo, hi, options);
             out.set("pitch", m.pitch);
             out.set("below", m.below_range);

@@ -2,6 +2,7 @@
 // minimum pitch (Q3). The turnaround questions (Q4, Q5) are in turnaround.hpp.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <string>
@@ -9,6 +10,7 @@
 
 #include "dragon/chain.hpp"
 #include "dragon/collision.hpp"
+#include "dragon/constants.hpp"
 #include "dragon/executor.hpp"
 #include "dragon/progress.hpp"
 #include "dragon/window.hpp"
@@ -53,6 +55,27 @@ void require_valid_at(const Simulation& sim, const Along& at, Key field);
 void simulate_at(const Simulation& sim, const std::vector<double>& times,
                  const std::function<void(std::size_t, const Frame&)>& out, Executor* executor = nullptr);
 
+// What a first-contact search proved (docs/methods.md, section 6): each step it accepted over
+// [proved_from, proved_to] (m of head travel) was proved free of contact by enclosing every
+// bench over the whole step (core/swept_proof.hpp), except `unproved_steps` steps covering
+// `unproved_travel` m, which rest on the rate bound checked at their ends (tol::rate_safety):
+// every step when the search was not asked to prove them (ContactSearchOptions::prove_steps),
+// else those where a link turned too far over the step for the enclosures.
+struct ContactProof {
+    int proved_steps = 0;          // steps proved contact-free by enclosures
+    int subdivisions = 0;          // steps whose proof failed, taken again shorter
+    int unproved_steps = 0;        // steps accepted on the rate bound alone
+    double unproved_travel = 0.0;  // m of head travel they cover
+    double least_gap = INFINITY;   // m: the least separation the proved steps proved (at most 0.05 m)
+    double proved_from = 0.0;      // m of head travel
+    double proved_to = 0.0;        // m of head travel: no contact on [proved_from, proved_to]
+    // "enclosure" (every step proved), "rate" (none: the search was not asked to prove them) or
+    // "enclosure+rate" (some steps on the rate bound alone).
+    const char* method() const {
+        return unproved_steps == 0 ? "enclosure" : proved_steps == 0 ? "rate" : "enclosure+rate";
+    }
+};
+
 // Q2: the first moment two non-adjacent benches touch. The search runs in head travel, so the
 // contact (its benches, point, head radius, travel) is the same at any head speed and its time
 // is travel / speed.
@@ -69,6 +92,13 @@ struct Contact {
     double tolerance = 0.0;
     double travel = 0.0;            // m: the head's travel from t = 0 then
     double travel_tolerance = 0.0;  // m: how closely `travel` is known (tol::travel)
+    // The first contact lies in [enclosure_lo, enclosure_hi], m of head travel: no contact
+    // before enclosure_lo is proved (proof.proved_to), benches touch at enclosure_hi (= travel).
+    double enclosure_lo = 0.0;
+    double enclosure_hi = 0.0;
+    double enclosure_time_lo = 0.0;  // s: the same at the scenario's head speed
+    double enclosure_time_hi = 0.0;  // s
+    ContactProof proof{};  // what the search proved over the range up to the contact
 };
 // The search takes the range in stretches of head travel cut at fixed places (multiples of
 // 10 m), spread over the executor's workers: the answer, and the work it took, do not depend on
@@ -84,6 +114,20 @@ struct ContactSearchOptions {
     // anything over it (their turn of the spiral stays clear of the next); false watches every
     // bench, for checking that proof.
     bool skip_untouched_tail = true;
+    // If given, receives what the search proved over the range (also when nothing touched).
+    ContactProof* proof = nullptr;
+    // How many times the closing rates measured at a step's start the step's length allows for
+    // (tol::rate_safety): it chooses the steps. Tests set it to 1 or below to show the proof
+    // rejects the steps it makes too long.
+    double rate_safety = tol::rate_safety;
+    // Prove every accepted step by enclosures (core/swept_proof.hpp; `dragon collide --prove`).
+    // Off by default: on the contest's Q2 it takes about 4 times the evaluations (and many more
+    // near a grazing pass), beyond the speed targets; without it each step rests on the rate
+    // bounds checked at its end (ContactProof::method() "rate").
+    bool prove_steps = false;
+    // Check each step's rate bounds at its end and retry it shorter when they broke (the
+    // default). false only for tests: the rate assumption alone, to show what it misses.
+    bool check_step_ends = true;
 };
 // Both ends must lie within the valid motion (Simulation::valid_range; throws InputError
 // otherwise): clamp `t_to` to valid_range().to to search as far as the dragon can go.
@@ -109,11 +153,15 @@ struct CollideAnswer {
     // first touched before it. `overlap` says which two, and how deep.
     bool overlapping = false;
     std::optional<Overlap> overlap;
+    ContactProof proof{};  // what the search proved over the window searched
 };
 // Throws InputError as cut_window does. Benches already overlapping where the window starts are
 // a verdict, not a refusal: the answer has `overlap` set (and the contact at the start), the
 // same for every command, sweep and front end.
 CollideAnswer collide(const Simulation& sim, const RunWindow& window, Executor* executor = nullptr);
+// The same searched as `options` say (its executor, prove_steps, rate_safety; its `proof` is
+// ignored: the answer's own is filled).
+CollideAnswer collide(const Simulation& sim, const RunWindow& window, const ContactSearchOptions& options);
 // The motion's first contact: collide over the path's default window (default_window). This is
 // the one event every command reports as the first contact: collide and turnaround by default,
 // the contest's Q2, a picture of the collision, a film's caption.

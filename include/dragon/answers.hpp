@@ -35,9 +35,14 @@ void add_window(Json& answer, const Searched& w);
 
 // A first contact: {"time", "travel", "benches", "head_radius", "point", "tolerance"}.
 Json contact_json(const Contact& c);
-// collide's answer: the contact's keys (null where there is none), "evaluations", the window
-// searched both ways ("from", "to", "from_travel", "to_travel"), "jam", then "handles" (every
-// handle then, or null) if asked for.
+// What a first-contact search proved: {"method", "steps", "subdivisions", "unproved_steps",
+// "unproved_travel", "least_separation", "covered_travel": [from, to]: the head
+// travel the accepted steps cover, proved contact-free where "method" is "enclosure"}.
+Json proof_json(const ContactProof& p);
+// collide's answer: the contact's keys (null where there is none), "evaluations", "enclosure"
+// ({"travel": [lo, hi], "time": [lo, hi]}: the first contact lies within; null without one),
+// "proof" (proof_json), the window searched both ways ("from", "to", "from_travel",
+// "to_travel"), "jam", then "handles" (every handle then, or null) if asked for.
 Json collide_answer(const CollideAnswer& a, bool with_handles);
 // {"pitch", "below_range", "above_range", "turn_radius", "search", "grid", "intervals", "jam",
 // "guarantee"}; the jam, if any, has the pitch it was met at.

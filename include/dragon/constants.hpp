@@ -43,6 +43,21 @@ inline constexpr int max_march = 400;
 // travel.
 inline constexpr double rate_safety = 2.0;
 
+// Slacks of those end-of-step checks (they choose steps; docs/methods.md says which proofs
+// stand on them). A promise "this bound holds over the step" is kept when the value found at
+// the step's end is within `promise_relative` of it (dimensionless), so that rounding in the
+// rates and gaps (relative ~1e-15) never sends a step back: a bound broken by less than 1e-9 of
+// itself is not a bound the step relied on.
+inline constexpr double promise_relative = 1e-9;
+// m/m of head travel: the same for a change of a corner gap's rate that should be 0 (rates of
+// ~1 m/m rounded to ~1e-16 each; 1e-12 is 1e4 roundings).
+inline constexpr double promise_rate_change = 1e-12;
+// m: the same for a margin of the valid-motion walk (margins of ~1 m rounded to ~1e-16).
+inline constexpr double promise_margin = 1e-15;
+// m: the same for a handle's move over a step of the valid-motion walk (positions of ~10 m
+// computed to ~1e-14 m, at each of the step's two ends).
+inline constexpr double promise_move = 1e-12;
+
 // Head travel to which events in time (a first contact, the end of the valid motion) are
 // located, m. The chain's shape depends on the head's travel alone, so the searches run in
 // travel and find the same event, bit for bit, at any head speed; as time this is

@@ -30,6 +30,8 @@ enum class Key : std::uint8_t {
     // Films and videos.
     video_size, fps, speedup, hold, at, crf_h264, crf_vp9, crf_gif, preset, tune, colours, threads, keyint,
     frame_count, film_frame_count,
+    // Files.
+    out, tables, compression_level,
 };
 
 struct KeyInfo {

@@ -23,6 +23,7 @@ std::string python_name(Key key) {
         case Key::time_range: case Key::clearance_range: return "from_/to";
         case Key::time: return "t";
         case Key::print: return "print_size";
+        case Key::out: return "path";  // Picture.save(path), Video.save(path)
         default: return std::string(key_info(key).name);
     }
 }

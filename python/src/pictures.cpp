@@ -220,7 +220,7 @@ void bind_pictures(py::module_& m) {
               const std::string ext = extension_of(path);
               if (ext != "." + format) {
                   const bool picture = ext == ".png" || ext == ".svg" || ext == ".pdf";
-                  throw InputError("path", fmt::format("'{}'", path),
+                  throw InputError(Key::out, fmt::format("'{}'", path),
                                    fmt::format("the picture is {0}: give a name ending in .{0}{1}", format,
                                                picture ? fmt::format(" (for {} render with format=\"{}\")", ext,
                                                                      ext.substr(1))

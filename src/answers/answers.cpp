@@ -64,12 +64,26 @@ Json overlap_json(const std::optional<Overlap>& o) {
     return {{"benches", {o->bench_a, o->bench_b}}, {"depth", o->depth}};
 }
 
+Json proof_json(const ContactProof& p) {
+    return {{"method", p.method()},
+            {"steps", p.proved_steps},
+            {"subdivisions", p.subdivisions},
+            {"unproved_steps", p.unproved_steps},
+            {"unproved_travel", p.unproved_travel},
+            {"least_separation", std::isfinite(p.least_gap) ? Json(p.least_gap) : Json(nullptr)},
+            {"covered_travel", {p.proved_from, p.proved_to}}};
+}
+
 Json collide_answer(const CollideAnswer& r, bool with_handles) {
     const std::optional<Contact>& c = r.contact;
     Json answer = c ? contact_json(*c)
                     : Json{{"time", nullptr}, {"travel", nullptr}, {"benches", nullptr}, {"head_radius", nullptr},
                            {"point", nullptr}, {"tolerance", nullptr}};
     answer["evaluations"] = c ? Json(c->steps) : Json(nullptr);
+    answer["enclosure"] = c ? Json{{"travel", {c->enclosure_lo, c->enclosure_hi}},
+                                   {"time", {c->enclosure_time_lo, c->enclosure_time_hi}}}
+                            : Json(nullptr);
+    answer["proof"] = proof_json(r.proof);
     add_window(answer, r.window);
     answer["jam"] = jam_json(r.jam);
     answer["overlap_at_start"] = overlap_json(r.overlap);

@@ -57,8 +57,13 @@ Json collide_measure(const Scenario& s, const MeasureOptions& options, std::stri
     const CollideAnswer search = collide(Simulation(s), options.window(s.path.kind), &here);
     if (search.overlap) throw CollidesAtStart{*search.overlap, search.asked.from};
     if (search.jam) jam = "no contact before the end of the valid motion: " + jam_sentence(*search.jam);
+    // The command's keys but what it proved (its "enclosure" and "proof") and the overlap (always
+    // null here: an overlap is the row's verdict instead): a sweep's columns stay those its files
+    // were written with.
     Json answer = collide_answer(search, false);
-    answer.erase("overlap_at_start");  // always null here: an overlap is the row's verdict instead
+    answer.erase("enclosure");
+    answer.erase("proof");
+    answer.erase("overlap_at_start");
     return answer;
 }
 

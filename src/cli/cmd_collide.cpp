@@ -1,4 +1,6 @@
 // dragon collide (Q2): the first moment two benches touch.
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "dragon/answers.hpp"
@@ -21,7 +23,29 @@ struct CollideOptions {
     std::string out;
     std::optional<int> digits;
     bool quiet = false;
+    bool prove = false;
 };
+
+// What the search proved, in words: one line.
+std::string proof_words(const ContactProof& p, const Contact* c) {
+    if (p.proved_steps == 0)
+        return fmt::format("not proved: each of the search's {} steps rests on its rate bound checked at its end "
+                           "(--prove encloses every bench over each step)\n",
+                           p.unproved_steps);
+    std::string out =
+        c ? fmt::format("proved: the first contact lies in t = [{:.15g}, {:.15g}] s (head travel [{:.15g}, {:.15g}] m): "
+                        "{} steps proved contact-free by enclosing every bench over each step",
+                        c->enclosure_time_lo, c->enclosure_time_hi, c->enclosure_lo, c->enclosure_hi, p.proved_steps)
+          : fmt::format("proved: no contact over head travel [{:.15g}, {:.15g}] m: {} steps proved contact-free by "
+                        "enclosing every bench over each step",
+                        p.proved_from, p.proved_to, p.proved_steps);
+    if (std::isfinite(p.least_gap)) out += fmt::format(", least separation proved {:.3g} m", p.least_gap);
+    if (p.unproved_steps > 0)
+        out += fmt::format("; not proved: {} steps over {:.6g} m of head travel, where a link turned too far for the "
+                           "enclosures, rest on the rate bound checked at their ends",
+                           p.unproved_steps, p.unproved_travel);
+    return out + "\n";
+}
 
 // With no contact the output file still answers: the table with its header and no rows, so
 // that an older file from another run is never left looking like this one's answer.
@@ -39,6 +63,9 @@ void register_collide(CLI::App& app, Registry& reg) {
                        "Search up to here (default: on the spiral as far as the dragon can follow it, its centre "
                        "or the end of its valid motion; 100m on the turnaround path)");
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
+    sub->add_flag("--prove", opt->prove,
+                  "Prove every step of the search contact-free by enclosing each bench over it (slower; "
+                  "without it each step rests on its rate bound checked at its end)");
     sub->add_option("-o,--out", opt->out,
                     "Also write the moment's handles (.xlsx: result2 layout, .csv, .json); with no contact, "
                     "the table's header and no rows");
@@ -58,7 +85,10 @@ void register_collide(CLI::App& app, Registry& reg) {
             AtomicFile probe(opt->out);  // fail on an unwritable path before any work
         }
         const Simulation sim(s);
-        const CollideAnswer search = collide(sim, window, &ex);
+        ContactSearchOptions options;
+        options.prove_steps = opt->prove;
+        options.executor = &ex;
+        const CollideAnswer search = collide(sim, window, options);
         const std::optional<Contact>& c = search.contact;
         if (!c) {
             if (!opt->out.empty()) write_no_contact(opt->out);
@@ -71,6 +101,7 @@ void register_collide(CLI::App& app, Registry& reg) {
                                       : format_time(search.window.to),
                            format_time(search.window.from_travel), format_time(search.window.to_travel));
                 fmt::print("{}", window_cuts(search.window, "the search"));
+                fmt::print("{}", proof_words(search.proof, nullptr));
             }
             if (!opt->out.empty()) status(opt->quiet, "no contact: wrote {} with the table's header and no rows", opt->out);
             return 0;
@@ -91,6 +122,7 @@ void register_collide(CLI::App& app, Registry& reg) {
             fmt::print("first contact at t = {} s (head travel {} m): bench {} touches bench {}; head radius {:.6f} m\n",
                        format_resolved(c->time, c->tolerance), format_resolved(c->travel, c->travel_tolerance),
                        c->bench_a, c->bench_b, c->head_radius);
+            fmt::print("{}", proof_words(c->proof, &*c));
             print_single_frame(fmt::format("handles at t = {} s", format_resolved(c->time, c->tolerance)), c->frame);
         }
         return 0;

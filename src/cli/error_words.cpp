@@ -32,6 +32,7 @@ bool has_flag(Key key) {
         case Key::lang: case Key::width_in: case Key::font_pt: case Key::dpi: case Key::plot: case Key::fps:
         case Key::speedup: case Key::hold: case Key::at: case Key::crf_h264: case Key::crf_vp9: case Key::crf_gif:
         case Key::preset: case Key::tune: case Key::colours: case Key::threads: case Key::film_frame_count:
+        case Key::tables:
             return true;
         default: return false;
     }

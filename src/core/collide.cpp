@@ -16,13 +16,12 @@ namespace {
 
 // The search itself: a contact at the window's start with the benches overlapping is reported
 // with `overlapping` set.
-CollideAnswer search(const Simulation& sim, const RunWindow& window, Executor* executor) {
+CollideAnswer search(const Simulation& sim, const RunWindow& window, ContactSearchOptions options) {
     const WindowCut cut = cut_window(sim, window);
     CollideAnswer out;
     out.asked = window;
     out.window = cut.searched(sim.scenario().head_speed);
-    ContactSearchOptions options;
-    options.executor = executor;
+    options.proof = &out.proof;
     out.contact = first_contact_travel(sim, cut.from, cut.to, options);
     // Touching exactly where the search starts is a contact there; overlapping is not a first
     // contact: the benches met before the window.
@@ -39,7 +38,13 @@ CollideAnswer search(const Simulation& sim, const RunWindow& window, Executor* e
 }  // namespace
 
 CollideAnswer collide(const Simulation& sim, const RunWindow& window, Executor* executor) {
-    return search(sim, window, executor);
+    ContactSearchOptions options;
+    options.executor = executor;
+    return collide(sim, window, options);
+}
+
+CollideAnswer collide(const Simulation& sim, const RunWindow& window, const ContactSearchOptions& options) {
+    return search(sim, window, options);
 }
 
 CollideAnswer first_contact_of_motion(const Simulation& sim, Executor* executor) {
@@ -51,7 +56,9 @@ CollideAnswer first_contact_covering(const Simulation& sim, double t_from, doubl
     const double v = sim.scenario().head_speed;
     if (t_from < w.from.time(v)) w.from = Along::seconds(t_from);
     if (t_to > w.to.time(v)) w.to = Along::seconds(t_to);
-    return search(sim, w, executor);
+    ContactSearchOptions options;
+    options.executor = executor;
+    return search(sim, w, options);
 }
 
 }  // namespace dragon

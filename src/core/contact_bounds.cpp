@@ -36,11 +36,11 @@ void radial_extents(const Frame& f, const std::vector<BenchMotion>& motion, std:
 }
 
 double radial_gap(const Radial& a, const Radial& b) { return std::max(b.lo - a.hi, a.lo - b.hi); }
-double radial_step(const Radial& a, const Radial& b) {
+double radial_step(const Radial& a, const Radial& b, double rate_safety) {
     const double gap = radial_gap(a, b);
     if (!(gap > 0.0)) return 0.0;
     const double closing = a.speed + b.speed;
-    return closing > 0.0 ? gap / (kSafety * closing) : INFINITY;
+    return closing > 0.0 ? gap / (rate_safety * closing) : INFINITY;
 }
 
 namespace {
@@ -56,7 +56,7 @@ struct Group {
 
 double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, const std::vector<double>& half_diagonals,
                       const std::vector<Radial>& radial, double margin, std::vector<GroupRecord>& record,
-                      const std::vector<GroupRecord>* last, double step, bool* broken) {
+                      double rate_safety, const std::vector<GroupRecord>* last, double step, bool* broken) {
     const size_t n = f.benches.size();
     std::vector<Group> groups;
     groups.reserve(n / kGroup + 1);
@@ -93,15 +93,15 @@ double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, co
             const Group& gb = groups[b];
             const double closing = ga.speed + gb.speed + std::abs(ga.rate - gb.rate) * std::min(ga.reach, gb.reach);
             const double apart = std::max(margin, norm(ga.centre - gb.centre) - ga.radius - gb.radius);
-            const double pair_step = closing > 0.0 ? apart / (kSafety * closing) : INFINITY;
-            out = std::min(out, std::max(pair_step, radial_step(ga.radii, gb.radii)));
+            const double pair_step = closing > 0.0 ? apart / (rate_safety * closing) : INFINITY;
+            out = std::min(out, std::max(pair_step, radial_step(ga.radii, gb.radii, rate_safety)));
             const GroupRecord r{apart, closing, radial_gap(ga.radii, gb.radii), ga.radii.speed + gb.radii.speed};
             if (check) {
                 // The step held for these groups if, at the speeds measured here, either gap they
                 // had at its start lasts the whole step.
                 const GroupRecord& was = (*last)[record.size()];
-                const bool held = closing * step <= was.apart * (1.0 + 1e-9) ||
-                                  (was.radial_gap > 0.0 && r.radial_closing * step <= was.radial_gap * (1.0 + 1e-9));
+                const bool held = closing * step <= was.apart * (1.0 + tol::promise_relative) ||
+                                  (was.radial_gap > 0.0 && r.radial_closing * step <= was.radial_gap * (1.0 + tol::promise_relative));
                 if (!held) *broken = true;
             }
             record.push_back(r);

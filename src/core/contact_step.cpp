@@ -11,10 +11,10 @@ namespace dragon::contact {
 
 // One pass over the broad phase's pairs gives the clearance and the safe step.
 //
-// Each pair first gets the first-order step g / (kSafety L) from its projected gap g and the
+// Each pair first gets the first-order step g / (ws.rate_safety L) from its projected gap g and the
 // bound L on its closing speed. Pairs whose first-order step could decide the step are then
 // looked at closer: their eight corner gaps, each with its exact rate, are bounded to second
-// order, d(t + h) >= d + rate h - M h^2 / 2, with M kSafety times the larger of the rate
+// order, d(t + h) >= d + rate h - M h^2 / 2, with M ws.rate_safety times the larger of the rate
 // changes seen since the last evaluation and a rotational floor. A pair's step is the better
 // of the two bounds. This is what makes grazing passes cheap: a corner gliding past at a
 // tiny distance with zero rate still allows sqrt(2 d / M), where the first-order bound would
@@ -52,15 +52,15 @@ size_t screen_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pair
         if (check) {
             if (const GapRecord* was = last.gaps.find(key)) {
                 const double closing = spread + std::abs(mb.omega) * std::max(was->gap, 0.0);
-                const bool held = was->second_order || (was->gap > 0.0 && closing * step <= was->gap * (1.0 + 1e-9)) ||
-                                  (was->radial_gap > 0.0 && radial_closing * step <= was->radial_gap * (1.0 + 1e-9));
+                const bool held = was->second_order || (was->gap > 0.0 && closing * step <= was->gap * (1.0 + tol::promise_relative)) ||
+                                  (was->radial_gap > 0.0 && radial_closing * step <= was->radial_gap * (1.0 + tol::promise_relative));
                 if (!held) broken = true;
             }
         }
         // Benches on neighbouring turns slide past each other: when their radii alone keep them
         // apart for the whole step and farther than a probe would look, they cannot set the step,
         // touch, or be probed, and need no closer look (most pairs, away from the centre).
-        const double radial_first_order = radial_step(ws.radial[i], ws.radial[j]);
+        const double radial_first_order = radial_step(ws.radial[i], ws.radial[j], ws.rate_safety);
         const double rgap = radial_gap(ws.radial[i], ws.radial[j]);
         if (radial_first_order >= cap && rgap >= kProbeGap) {
             ws.gaps[k] = INFINITY;
@@ -73,9 +73,9 @@ size_t screen_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pair
         const double gap = std::max(g, 0.0);
         const double bound = spread + std::abs(mb.omega) * gap;
         next.gaps.emplace(key, {gap, bound, rgap, radial_closing});
-        // First-order step gap / (kSafety bound), divided out only for the pairs that could set it.
-        if (gap < cap * kSafety * bound) {
-            const double first_order = std::max(gap / (kSafety * bound), radial_first_order);
+        // First-order step gap / (ws.rate_safety bound), divided out only for the pairs that could set it.
+        if (gap < cap * ws.rate_safety * bound) {
+            const double first_order = std::max(gap / (ws.rate_safety * bound), radial_first_order);
             if (first_order < cap) ws.tight.push_back({first_order, bound, k});
         }
     }
@@ -120,10 +120,10 @@ double refine_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pair
                 const double change = std::abs(gaps8[q].rate - last->rates[q]);
                 observed = std::max(observed, change / dt);
                 // The last step assumed the rates change by at most curvature * dt.
-                if (check && change > last->curvature * dt * (1.0 + 1e-9) + 1e-12) bound_broken = true;
+                if (check && change > last->curvature * dt * (1.0 + tol::promise_relative) + tol::promise_rate_change) bound_broken = true;
             }
         }
-        mem.curvature = kSafety * observed;
+        mem.curvature = ws.rate_safety * observed;
         double h2 = INFINITY;
         for (size_t q = 0; q < 8; ++q) {
             mem.rates[q] = gaps8[q].rate;
@@ -197,7 +197,7 @@ Approach approach(const Frame& f, double t, double max_step, const StepRecord& l
     radial_extents(f, ws.motion, ws.radial);
     // Pairs beyond the margin: bounded group by group (far_pairs_step).
     const double cap = std::min(max_step, far_pairs_step(f, ws.motion, ws.half_diagonals, ws.radial, kMargin,
-                                                         next.groups, check ? &last.groups : nullptr, step,
+                                                         next.groups, ws.rate_safety, check ? &last.groups : nullptr, step,
                                                          &a.bound_broken));
     const auto& pairs = ws.broad.candidate_pairs(f, kMargin);
     const size_t seed = screen_pairs(f, pairs, cap, last, next, check, step, ws, a.bound_broken);

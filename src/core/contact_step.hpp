@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "motion.hpp"
+#include "swept_proof.hpp"
+#include "dragon/constants.hpp"
 #include "dragon/collision.hpp"
 #include "dragon/constants.hpp"
 
@@ -118,15 +120,16 @@ struct Approach {
     // The closest pair among those looked at: exact whenever the true clearance is below
     // kProbeGap (the pairs passed over are farther apart than that), else only an upper bound.
     Clearance clear;
-    double safe_step;  // s: no contact can happen sooner
+    double safe_step;  // m of head travel: the rate bounds expect no contact sooner (the step's proof is swept_proof's)
     double rate;       // d/dt of the closing pair's separation now (negative: closing)
     // The step that led here broke a promise of the last evaluation: a near pair's rates changed
     // faster than its curvature bound allowed, or a pair (or group of pairs, or two benches kept
     // apart by their radii) closes here faster than the gap it had there could take for the
     // whole step.
     bool bound_broken;
-    // s: no pair but the closest one can touch sooner. A bracket for the closest pair's contact
-    // must end by then, or the bisection in it could pass over another pair's brief contact.
+    // m of head travel: by the rate bounds, no pair but the closest one touches sooner. The probe
+    // for the closest pair's contact stops there (the bracket it makes is then proved by
+    // swept_proof before its contact is reported).
     double others_step;
 };
 
@@ -145,6 +148,10 @@ struct Workspace {
     std::vector<Candidate> tight;
     std::vector<std::pair<std::uint64_t, double>> pair_steps;
     Frame frame;  // a whole chain, solved for what the search keeps of it (the stretches' edges)
+    SweptWorkspace swept;  // the steps' proofs (swept_proof.hpp)
+    // How many times the closing rates measured at a step's start its steps allow for
+    // (tol::rate_safety unless a test sets it): it chooses the steps' lengths only.
+    double rate_safety = tol::rate_safety;
 };
 
 // Whether two non-adjacent benches of `f` overlap or touch, as the search's clearances (of

@@ -4,20 +4,22 @@
 // the chain's shape depends on the travel alone, so the contact found is the same, bit for bit,
 // at any head speed, and its time is travel / speed.
 //
-// Stepping: at time t every pair of benches has separation g_ij > 0 and, from the benches'
-// exact rigid-body velocity fields, a bound L_ij on how fast g_ij can shrink now. Advancing by
-//     tau = min_ij g_ij / (kSafety L_ij)
-// cannot skip a contact as long as the true closing speed stays below kSafety times the bound
-// over the step, which holds with a wide margin because the benches' velocities change slowly
-// over a step of at most kMaxTravel of head travel. Pairs within the broad phase's margin M get
-// their own bounds (and second-order ones near grazing passes, checked at the next evaluation);
-// pairs beyond it are bounded group by group (far_pairs_step); benches or groups on different
-// turns may instead take a bound from their radii about the centre, which neighbouring turns
-// sliding past each other do not shrink (radial_step). Collide-separate-collide windows
-// are therefore never stepped over, unlike one bisection over the whole run; the test
-// Q2.EveryStepDeclaredSafeIsSafe samples inside every step, on runs with such a window. Near
-// the contact a Newton probe on the closest pair brackets the root, which is then refined by
-// bisection to tol::travel.
+// Stepping: at head travel x every pair of benches has separation g_ij > 0 and, from the
+// benches' exact rigid-body velocity fields, a bound L_ij on how fast g_ij can shrink per metre
+// of travel now. The step
+//     h = min_ij g_ij / (rate_safety L_ij)    (m of head travel)
+// skips no contact as long as the true closing speed stays below rate_safety times the bound
+// over the step: an assumption, checked at the step's end (a broken bound sends the search back
+// with a shorter step), not a proof. With ContactSearchOptions::prove_steps each step is then
+// proved contact-free from the chain at its two ends (swept_proof.hpp), and one that is not is
+// taken again shorter: the rate bounds choose, the enclosures prove. Pairs within the broad
+// phase's margin get their own rate bounds (and second-order ones near grazing passes, checked at
+// the next evaluation); pairs beyond it are bounded group by group (far_pairs_step); benches or
+// groups on different turns may instead take a bound from their radii about the centre, which
+// neighbouring turns sliding past each other do not shrink (radial_step). The test
+// Q2.EveryStepDeclaredSafeIsSafe samples inside every step, on runs with a window of contact
+// that opens and closes. Near the contact a Newton probe on the closest pair brackets the root,
+// which is then refined by bisection to tol::travel.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -51,6 +53,10 @@ using contact::Workspace;
 // two more frames and a restart of the stepping. Measured on Q3's runs: 10 m watches about
 // 8 of the contest's 223 benches on average, against 30 for one proof of the whole run.
 constexpr double kStretchTravel = 10.0;  // m
+// The proof of the last steps before a contact stops where the step it fails to prove is below
+// this fraction of the travel left to the contact (or below tol::travel): there the pair's gap
+// is within the proof's slack (contact::kProofSlack) of zero.
+constexpr double kFinalStep = 1e-3;
 
 double head_radius(const Frame& f) { return norm(f.handles.front().pos); }
 
@@ -79,80 +85,174 @@ bool touching(const Frame& f, Workspace& ws) {
     return clearance(f, kMargin, ws.broad).distance <= 0.0;
 }
 
-// The search over one stretch of travel, stepping `watched` (the benches that may touch, on the
-// motion at 1 m/s, so that its times are head travel) and reporting the head travel of the
-// contact; `steps` grows by the evaluations it makes. A step covers at most kMaxTravel of head
-// travel, and the contact is found to tol::travel. The contact itself (the whole chain of `sim`
-// there, and its closest pair) is made only for the stretch that wins (make_contact): a stretch
-// after the first contact, which starts overlapping, costs one frame of the benches it watches
-// and one overlap test.
+// How a stretch's search chooses and proves its steps.
+struct StepRules {
+    bool prove = true;        // prove each step by enclosures (swept_proof.hpp); false: the rate check alone
+    bool check_ends = true;   // check the rate bounds at each step's end (false: tests of the assumption alone)
+};
+
+// Counts a step [from, to] (m of head travel) the search accepted, with what proved it.
+void count_step(ContactProof& proof, const contact::StepProof& p, double from, double to) {
+    if (p.verdict == contact::StepVerdict::proved) {
+        ++proof.proved_steps;
+        proof.least_gap = std::min(proof.least_gap, p.least_gap);
+    } else {
+        ++proof.unproved_steps;
+        proof.unproved_travel += to - from;
+    }
+    proof.proved_to = to;
+}
+
+// The search over one stretch of head travel [x_from, x_to] (m), stepping `watched` (the benches
+// that may touch, on the motion at 1 m/s, so that its times are head travel) and reporting the
+// head travel of the contact; `steps` grows by the evaluations it makes, `proof` hears what it
+// proved. A step covers at most kMaxTravel of head travel, and the contact is found to
+// tol::travel.
+//
+// The rate bounds (approach()) choose each step's length, x to `next`; the step is accepted only
+// when prove_step() proves, from the chain at its two ends, that no two benches touch anywhere
+// in it. A step it cannot prove is taken again shorter (`proof_cap`): the rate bounds choose,
+// the enclosures prove. Where a link turns too far for the enclosures (not_monotone: near a
+// tight turnaround), the step rests on the rate bounds checked at its end, and is counted as
+// such. Near the contact the probe and the bisection locate it to tol::travel; the bracket they
+// used is not proved by them, so the range from the last proved step to just before the contact
+// is then proved the same way, step by step, and a contact found inside it restarts the
+// bisection there. The contact then lies between the last proved travel and the reported one.
+//
+// The contact itself (the whole chain of `sim` there, and its closest pair) is made only for the
+// stretch that wins (make_contact): a stretch after the first contact, which starts overlapping,
+// costs one frame of the benches it watches and one overlap test.
 template <class Stop>
-std::optional<double> search_stretch(const Simulation& sim, const Simulation& watched, double t_from, double t_to,
-                                     const StepObserver& on_step, const Stop& stop, int& steps, Workspace& ws) {
-    const double max_step = kMaxTravel;
-    const double time_tol = tol::travel;
-    Frame f;
-    double t = t_from;
+std::optional<double> search_stretch(const Simulation& sim, const Simulation& watched, double x_from, double x_to,
+                                     const StepObserver& on_step, const Stop& stop, int& steps, Workspace& ws,
+                                     ContactProof& proof, const StepRules& rules) {
+    const double max_step = kMaxTravel;    // m of head travel
+    const double travel_tol = tol::travel;  // m of head travel
+    const Path& path = watched.path();
+    const BenchSpec& spec = watched.scenario().bench;
+    Frame f;   // the chain at the travel being looked at
+    Frame at;  // the chain at x, where the step being proved starts
+    double x = x_from;  // m of head travel: everything before it is searched (and proved)
+    proof.proved_from = proof.proved_to = x_from;
     StepRecord memory, seen;
-    watched.frame_into(t, f);
+    watched.frame_into(x, f);
     ++steps;
     // Starting with benches overlapping (a stretch after the first contact, which the workers
     // take first): its start, found without a whole evaluation's bounds (when unsure, the
     // evaluation decides).
-    if (overlap_of(f, ws) == Overlap::yes) return t;
-    Approach a = approach(f, t, max_step, memory, seen, false, ws);
+    if (overlap_of(f, ws) == Overlap::yes) return x;
+    Approach a = approach(f, x, max_step, memory, seen, false, ws);
     memory.swap(seen);
-    if (a.clear.distance <= 0.0) return t;
-    double retry_cap = INFINITY;  // after a broken curvature bound, retry shorter from t
+    if (a.clear.distance <= 0.0) return x;
+    std::swap(at, f);
+    const auto prove = [&](const Frame& end) {
+        return rules.prove ? prove_step(path, spec, at, end, ws.swept)
+                           : contact::StepProof{contact::StepVerdict::not_monotone, INFINITY, 0, 0};
+    };
+    double retry_cap = INFINITY;  // m: after a broken curvature bound, retry shorter from x
+    double proof_cap = INFINITY;  // m: the longest step the enclosures are expected to prove (halved when they fail)
 
-    while (t < t_to) {
+    while (x < x_to) {
         if (stop()) return std::nullopt;
         // A pair grazing within rounding of touching, closing too slowly to bound: contact now
-        // (also when the step is below the resolution of t itself, late in a slow run).
-        if (a.safe_step < time_tol || t + a.safe_step == t) return t;
+        // (also when the step is below the resolution of x itself, late in a slow run).
+        if (a.safe_step < travel_tol || x + a.safe_step == x) return x;
         // Bracket: a Newton probe on the closest pair once it is nearly touching, no farther
-        // than any other pair could touch (the bisection below sees only the clearance's sign,
-        // and would pass over another pair's contact that opens and closes inside its bracket).
-        double t_hi = std::numeric_limits<double>::quiet_NaN();
+        // than any other pair is expected to touch.
+        double x_hi = std::numeric_limits<double>::quiet_NaN();
         if (a.clear.distance < kProbeGap && a.rate < 0.0) {
-            const double probe = std::min({t_to, t + 1.5 * a.clear.distance / -a.rate, t + a.others_step});
+            const double probe = std::min({x_to, x + 1.5 * a.clear.distance / -a.rate, x + a.others_step});
             watched.frame_into(probe, f);
             ++steps;
-            if (touching(f, ws)) t_hi = probe;
+            if (touching(f, ws)) x_hi = probe;
         }
-        if (std::isnan(t_hi)) {
-            const double next = std::min({t + a.safe_step, t + retry_cap, t_to});
-            if (next <= t) break;
+        if (std::isnan(x_hi)) {
+            const double next = std::min({x + a.safe_step, x + retry_cap, x + proof_cap, x_to});
+            if (next <= x) break;
             watched.frame_into(next, f);
             ++steps;
-            const Approach b = approach(f, next, max_step, memory, seen, true, ws);
-            if (b.bound_broken && next - t > time_tol) {
-                // The rates turned faster than the step assumed: back to t, with a larger
+            // The proof first (a step it fails is taken again shorter, its bounds not needed).
+            const contact::StepProof p = prove(f);
+            if (p.verdict == contact::StepVerdict::too_close && next - x > travel_tol && overlap_of(f, ws) == Overlap::no) {
+                // Not proved, and no contact at its end: the same start, half the step.
+                ++proof.subdivisions;
+                proof_cap = 0.5 * (next - x);
+                continue;
+            }
+            const Approach b = approach(f, next, max_step, memory, seen, rules.check_ends, ws);
+            if (b.bound_broken && next - x > travel_tol) {
+                // The rates turned faster than the step assumed: back to x, with a larger
                 // curvature on record, and a shorter step.
-                retry_cap = 0.25 * (next - t);
+                retry_cap = 0.25 * (next - x);
                 memory.near.for_each([](PairMemory& m) { m.curvature *= 4.0; });
                 continue;
             }
-            memory.swap(seen);
             if (b.clear.distance > 0.0) {
-                if (on_step) on_step(sim.time_of(t), sim.time_of(next));
-                t = next;
+                if (p.verdict == contact::StepVerdict::too_close && next - x > travel_tol) {
+                    // Not proved (its end within kSureGap of touching): the same start, half the step.
+                    ++proof.subdivisions;
+                    proof_cap = 0.5 * (next - x);
+                    continue;
+                }
+                count_step(proof, p, x, next);
+                // A step as long as the last one the enclosures proved: try a little longer next.
+                if (p.verdict == contact::StepVerdict::proved && next - x >= proof_cap) proof_cap *= 1.5;
+                memory.swap(seen);
+                if (on_step) on_step(sim.time_of(x), sim.time_of(next));
+                x = next;
                 a = b;
                 retry_cap = INFINITY;
+                std::swap(at, f);
                 continue;
             }
-            t_hi = next;
+            x_hi = next;
         }
-        // Bisection on [t, t_hi]: clearance > 0 at t, <= 0 at t_hi (only its sign: touching()).
-        double lo = t, hi = t_hi;
-        while (hi - lo > time_tol) {
-            const double mid = 0.5 * (lo + hi);
-            if (mid <= lo || mid >= hi) break;
-            watched.frame_into(mid, f);
-            ++steps;
-            if (!touching(f, ws)) lo = mid; else hi = mid;
+        for (;;) {
+            // Bisection on [x, x_hi]: clearance > 0 at x, <= 0 at x_hi (only its sign: touching()).
+            double lo = x, hi = x_hi;
+            while (hi - lo > travel_tol) {
+                const double mid = 0.5 * (lo + hi);
+                if (mid <= lo || mid >= hi) break;
+                watched.frame_into(mid, f);
+                ++steps;
+                if (!touching(f, ws)) lo = mid; else hi = mid;
+            }
+            if (!rules.prove) {  // the bracket rests on the rate bounds too
+                count_step(proof, {contact::StepVerdict::not_monotone, INFINITY, 0, 0}, x, lo);
+                return hi;
+            }
+            // Prove [x, lo] step by step: the bisection only saw the clearance's sign at its
+            // points. A step ending in contact is an earlier contact: bisect again before it.
+            double h = lo - x;  // m: the next step to try
+            bool earlier = false;
+            while (x < lo) {
+                if (stop()) return std::nullopt;
+                const double y = std::min(lo, x + h);
+                watched.frame_into(y, f);
+                ++steps;
+                if (touching(f, ws)) {
+                    x_hi = y;
+                    earlier = true;
+                    break;
+                }
+                const contact::StepProof p = prove(f);
+                if (p.verdict == contact::StepVerdict::too_close) {
+                    ++proof.subdivisions;
+                    // Within the proof's slack of touching: the proof ends here, kFinalStep
+                    // short of the contact at most where the steps it could still prove shrink
+                    // below it.
+                    if (y - x <= std::max(travel_tol, kFinalStep * (hi - x))) break;
+                    h = 0.5 * (y - x);
+                    continue;
+                }
+                count_step(proof, p, x, y);
+                if (on_step) on_step(sim.time_of(x), sim.time_of(y));
+                x = y;
+                std::swap(at, f);
+                h *= 2.0;
+            }
+            if (!earlier) return hi;
         }
-        return hi;
     }
     return std::nullopt;
 }
@@ -229,7 +329,10 @@ std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from
     const size_t chunks = edge.size() - 1;
     std::vector<std::optional<double>> found(chunks);  // the travel of each stretch's contact
     std::vector<int> steps(chunks, 0);
+    std::vector<ContactProof> proofs(chunks);  // what each stretch's search proved
     std::vector<Workspace> ws(static_cast<size_t>(ex.workers()));
+    for (Workspace& w : ws) w.rate_safety = options.rate_safety;
+    const StepRules rules{options.prove_steps, options.check_step_ends};
     std::atomic<size_t> winner{chunks};
     EdgeAngles edge_angles(unit, edge);
     const bool serial = ex.workers() == 1;
@@ -240,7 +343,8 @@ std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from
         const Simulation watched = watched_over(unit, edge_angles, k, options.skip_untouched_tail, mine.frame);
         try {
             found[k] = search_stretch(sim, watched, edge[k], edge[k + 1], options.on_step,
-                                      [&] { return winner.load(std::memory_order_relaxed) < k; }, steps[k], mine);
+                                      [&] { return winner.load(std::memory_order_relaxed) < k; }, steps[k], mine,
+                                      proofs[k], rules);
         } catch (...) {
             winner = 0;  // stop the others at their next step; the executor rethrows this
             throw;
@@ -257,10 +361,28 @@ std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from
         ex.parallel_for(chunks, [&](size_t item, int worker) { search(chunks - 1 - item, worker); });
     }
     const size_t w = winner.load();
+    // What the stretches up to the contact's (every stretch, without one) proved, in order.
+    ContactProof proved;
+    proved.proved_from = proved.proved_to = x_from;
+    for (size_t k = 0; k < chunks && k <= w; ++k) {
+        const ContactProof& p = proofs[k];
+        proved.proved_steps += p.proved_steps;
+        proved.subdivisions += p.subdivisions;
+        proved.unproved_steps += p.unproved_steps;
+        proved.unproved_travel += p.unproved_travel;
+        proved.least_gap = std::min(proved.least_gap, p.least_gap);
+        proved.proved_to = p.proved_to;
+    }
+    if (options.proof) *options.proof = proved;
     if (w == chunks) return std::nullopt;
     Contact c = make_contact(sim, *found[w], ws.front().broad);
     c.steps = 0;
     for (size_t k = 0; k <= w; ++k) c.steps += steps[k];
+    c.proof = proved;
+    c.enclosure_lo = proved.proved_to;
+    c.enclosure_hi = *found[w];
+    c.enclosure_time_lo = sim.time_of(c.enclosure_lo);
+    c.enclosure_time_hi = sim.time_of(c.enclosure_hi);
     return c;
 }
 

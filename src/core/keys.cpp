@@ -72,6 +72,9 @@ constexpr std::array kKeys = {
     KeyInfo{Key::keyint, "keyint", "key frame interval", "s", "seconds between key frames"},
     KeyInfo{Key::frame_count, "frame_count", "frame count", "", "frames of a table or video"},
     KeyInfo{Key::film_frame_count, "frame_count", "film frame count", "", "frames of a film"},
+    KeyInfo{Key::out, "out", "output file", "", "the file written"},
+    KeyInfo{Key::tables, "tables", "table format", "", "the paper's tables: latex, markdown or csv"},
+    KeyInfo{Key::compression_level, "compression_level", "compression level", "", "a workbook's zlib level, 0 to 9"},
 };
 
 // The table is in the enum's order: key_info indexes it.
@@ -81,7 +84,7 @@ constexpr bool in_order() {
     return true;
 }
 static_assert(in_order(), "kKeys must list the keys in the order of enum Key");
-static_assert(static_cast<std::size_t>(Key::film_frame_count) + 1 == kKeys.size(), "a key without its description");
+static_assert(static_cast<std::size_t>(Key::compression_level) + 1 == kKeys.size(), "a key without its description");
 
 bool same_name(std::string_view a, std::string_view b) {
     if (a.size() != b.size()) return false;

@@ -88,7 +88,7 @@ public:
         for (size_t k = 0; k < a.links.size(); ++k) {
             const LinkCheck& x = a.links[k];
             const LinkCheck& y = b.links[k];
-            const double floor = x.margin * (1.0 - travel / x.step) * (1.0 - 1e-9) - 1e-15;
+            const double floor = x.margin * (1.0 - travel / x.step) * (1.0 - tol::promise_relative) - tol::promise_margin;
             if (x.calm) {
                 // Still on calm path, or at least within a quarter turn (a link that left the
                 // calm stretch early has its turning checked instead).
@@ -103,7 +103,7 @@ public:
         for (size_t i = 0; i < a.frame.handles.size(); ++i) {
             const Handle& p = a.frame.handles[i];
             const Handle& q = b.frame.handles[i];
-            const double reach = kSafety * std::max(std::abs(p.speed), std::abs(q.speed)) * travel + 1e-12;
+            const double reach = kSafety * std::max(std::abs(p.speed), std::abs(q.speed)) * travel + tol::promise_move;
             if (!(distance(p.pos, q.pos) <= reach)) return static_cast<int>(std::max<size_t>(i, 1) - 1);
         }
         return -1;

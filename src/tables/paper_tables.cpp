@@ -15,7 +15,7 @@ TableFormat parse_table_format(std::string_view name) {
     if (name == "latex" || name == "tex") return TableFormat::latex;
     if (name == "markdown" || name == "md") return TableFormat::markdown;
     if (name == "csv") return TableFormat::csv;
-    throw InputError("table format", std::string(name), "use latex, markdown or csv");
+    throw InputError(Key::tables, std::string(name), "use latex, markdown or csv");
 }
 
 std::string table_extension(TableFormat format) {

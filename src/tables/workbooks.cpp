@@ -16,7 +16,7 @@ namespace {
 
 int checked_level(const WorkbookOptions& options) {
     if (options.compression_level < 0 || options.compression_level > 9)
-        throw InputError("compression level", std::to_string(options.compression_level),
+        throw InputError(Key::compression_level, std::to_string(options.compression_level),
                          "0 (stored) to 9 (smallest), zlib's levels");
     return options.compression_level;
 }

@@ -49,6 +49,16 @@ static void BM_Q2FirstContact(benchmark::State& state) {
 }
 BENCHMARK(BM_Q2FirstContact)->Unit(benchmark::kMillisecond);
 
+// The same with every step proved by enclosures (dragon collide --prove).
+static void BM_Q2FirstContactProved(benchmark::State& state) {
+    const Simulation sim(Scenario{});
+    const double end = sim.valid_end();
+    ContactSearchOptions o;
+    o.prove_steps = true;
+    for (auto _ : state) benchmark::DoNotOptimize(first_contact(sim, 0.0, end, o));
+}
+BENCHMARK(BM_Q2FirstContactProved)->Unit(benchmark::kMillisecond);
+
 // The end of the valid motion on the contest's spiral, searched from scratch each time.
 static void BM_ValidRange(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(Simulation(Scenario{}).valid_range());

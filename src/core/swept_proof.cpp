@@ -1,0 +1,302 @@
+// Proof that a step of the chain's motion holds no contact (swept_proof.hpp).
+#include "swept_proof.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "dragon/geometry.hpp"
+
+namespace dragon::contact {
+
+namespace {
+
+// Whether place `a` is at or ahead of place `b` on the path (further in the direction of travel).
+bool at_or_ahead(const Path& path, const Place& a, const Place& b) {
+    if (a.piece != b.piece) return a.piece > b.piece;
+    const auto [begin, end] = path.piece_span(a.piece);
+    return end > begin ? a.u >= b.u : a.u <= b.u;
+}
+
+// The projections of an enclosure's hull points on n: least and largest.
+void project(const SweptWorkspace::Swept& s, const Vec2& n, double& lo, double& hi) {
+    lo = INFINITY;
+    hi = -INFINITY;
+    for (const Vec2& v : s.v) {
+        const double p = dot(v, n);
+        lo = std::min(lo, p);
+        hi = std::max(hi, p);
+    }
+}
+
+using HandleSpan = SweptWorkspace::HandleSpan;
+
+// The enclosure of a board (its rectangle `r`, the link `d` between its handles) whose front
+// handle lies in `F` and rear handle in `R`: the 16 combinations of their chords' ends in each
+// corner's linear form, and the radius the dilations add.
+void enclose(const Rect& r, double d, const HandleSpan& F, const HandleSpan& R, SweptWorkspace::Swept& s) {
+    s.radius = 0.0;
+    size_t q = 0;
+    const Vec2 fs[2] = {F.p0, F.p1}, rs[2] = {R.p0, R.p1};
+    for (const double along : {-1.0, 1.0}) {
+        for (const double across : {-1.0, 1.0}) {
+            const double cF = 0.5 + along * r.half_length / d;
+            const double cR = 0.5 - along * r.half_length / d;
+            const double j = across * r.half_width / d;
+            for (const Vec2& f : fs)
+                for (const Vec2& b : rs) s.v[q++] = cF * f + cR * b + j * perp(f - b);
+            s.radius = std::max(s.radius, std::hypot(cF, j) * F.dilation + std::hypot(cR, j) * R.dilation);
+        }
+    }
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (const Vec2& v : s.v) {
+        x0 = std::min(x0, v.x());
+        x1 = std::max(x1, v.x());
+        y0 = std::min(y0, v.y());
+        y1 = std::max(y1, v.y());
+    }
+    const double grow = s.radius + 0.5 * kProofBoxMargin;
+    s.x0 = x0 - grow, s.x1 = x1 + grow, s.y0 = y0 - grow, s.y1 = y1 + grow;
+}
+
+
+// Benches a < b (0-based), b >= a + 2, of the chain near each other along it: a lower bound on
+// their distance at every moment of the step that holds without enclosing them, or -inf. With
+// u the unit chord from bench b's front handle (handle b) to bench a's rear handle (handle
+// a + 1), at distance D, bench a's points project on u no lower than its rear handle's
+// projection less e cos(phi_a) + w |sin(phi_a)| (e: its overhang beyond the handle, w: its half
+// width, phi_a: the angle between its axis and u, while below pi/2), and bench b's no higher
+// than its front handle's plus the same of its own; so they are at least
+//     D - e_a - e_b - w_a sin(tau_a) - w_b sin(tau_b)
+// apart, tau bounding phi. Every chord of an arc points within the arc's tangent range, so
+// phi_a is at most the turning of the path from handle b to handle a (bench a's arc and the
+// middle one), phi_b from handle b + 1 to handle a + 1, and each link between them makes an
+// angle at most the middle arc's turning tau_m with u: D >= cos(tau_m) times their lengths
+// (exactly the one link's length when b = a + 2). Over the step every arc lies between its rear
+// handle's place at the start and its front handle's at the end (the handles move forward).
+template <class Turning>
+double chain_gap(const Turning& turning, const BenchSpec& spec, const Frame& f0, size_t a, size_t b) {
+    const double tau_a = turning(b, a);          // handle b (front of b) to handle a (front of a)
+    const double tau_b = turning(b + 1, a + 1);  // rear of b to rear of a
+    const double tau_m = turning(b, a + 1);      // the links between
+    constexpr double kRight = 0.5 * std::numbers::pi;
+    if (!(tau_a < kRight && tau_b < kRight && tau_m < kRight)) return -INFINITY;
+    double links = 0.0;
+    for (size_t k = a + 1; k < b; ++k) links += spec.link_length(static_cast<int>(k) + 1);
+    const double chord = b == a + 2 ? links : links * std::cos(tau_m);
+    const Rect& ra = f0.benches[a];
+    const Rect& rb = f0.benches[b];
+    const double ea = ra.half_length - 0.5 * spec.link_length(static_cast<int>(a) + 1);
+    const double eb = rb.half_length - 0.5 * spec.link_length(static_cast<int>(b) + 1);
+    return chord - ea - eb - ra.half_width * std::sin(tau_a) - rb.half_width * std::sin(tau_b);
+}
+
+}  // namespace
+
+StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, const Frame& f1, SweptWorkspace& ws) {
+    StepProof out;
+    const size_t nb = std::min(f0.benches.size(), f1.benches.size());
+    const size_t nh = nb + 1;
+    if (nb < 3) return out;
+    // On the spiral (every handle on it at both ends), the turning between two places is the
+    // change of the tangent's angle theta + atan(theta): kept for each handle at both ends.
+    const auto* spiral = dynamic_cast<const Spiral*>(&path);
+    bool turned = spiral != nullptr;
+    for (size_t i = 0; turned && i < nh; ++i)
+        turned = f0.handles[i].place.piece == 0 && f1.handles[i].place.piece == 0;
+    ws.arc0.resize(nh);  // the tangent's angle at the start (spiral only)
+    ws.arc1.resize(nh);  // and at the end
+    if (turned)
+        for (size_t i = 0; i < nh; ++i) {
+            ws.arc0[i] = Spiral::tangent_angle(f0.handles[i].place.u);
+            ws.arc1[i] = Spiral::tangent_angle(f1.handles[i].place.u);
+        }
+    // The turning of the path from handle `rear`'s place at the start to handle `front`'s at the end.
+    const auto turning = [&](size_t rear, size_t front) {
+        return turned ? ws.arc0[rear] - ws.arc1[front] : path.turning(f0.handles[rear].place, f1.handles[front].place);
+    };
+    // 1. Every handle moves forward, and every link's hull over the step turns by less than
+    // pi/2 (the induction of swept_proof.hpp, from the head, whose travel is forward).
+    ws.dilation.resize(nh);
+    for (size_t i = 0; i < nh; ++i) {
+        const Place& p0 = f0.handles[i].place;
+        const Place& p1 = f1.handles[i].place;
+        if (!at_or_ahead(path, p1, p0)) return {StepVerdict::not_monotone, INFINITY, static_cast<int>(i), 0};
+        if (i + 1 < nh) {
+            // The link from handle i to handle i + 1 lies, over the step, between handle i + 1's
+            // place at the start and handle i's at the end.
+            const Place& rear = f0.handles[i + 1].place;
+            if (!at_or_ahead(path, p1, rear) || !(turning(i + 1, i) < kMaxLinkTurning))
+                return {StepVerdict::not_monotone, INFINITY, static_cast<int>(i + 1), 0};
+        }
+        // 2. The handle's arc over the step, within `dilation` of its chord (the fixed frame's
+        // enclosures only).
+        if (!turned) {
+            const double length = std::abs(path.arc(p1) - path.arc(p0));
+            ws.dilation[i] = length * std::min(path.turning(p0, p1), 2.0) / 4.0;
+        }
+    }
+    // 3. Each bench's enclosure (enclose()). On the spiral r = b theta the benches are enclosed
+    // in the frame turned with the head (by -theta_0), where the chain's motion is only its slow
+    // change of shape: each link's polar span alpha_m = theta_{m+1} - theta_m is a decreasing
+    // function of its front handle's theta while below pi (implicit differentiation of
+    // |P(theta + alpha) - P(theta)|^2 = d^2), so it grows monotonically over the step, and
+    // D_i = theta_i - theta_0 lies between its two end values. Handle i is then at
+    // b (theta_0 + D_i) (cos D_i, sin D_i): linear in theta_0, an arc of a spiral in D_i. For each
+    // end value T of theta_0 the benches are enclosed over their D intervals; a pair's projected
+    // gap on a fixed axis is, for fixed D's, concave in theta_0 (the least of linear functions
+    // less the largest), so it is least at one of the two ends T: the pair is apart when it is
+    // apart at both. Elsewhere (the turnaround) the enclosures are in the fixed frame, from the
+    // handles' arcs (item 2 above).
+    const int frames = turned ? 2 : 1;
+    ws.benches.resize(static_cast<size_t>(frames) * nb);
+    std::array<double, 2> head{};  // theta_0 at the step's end and start
+    if (turned) {
+        const double b = spiral->b();
+        head = {f1.handles[0].place.u, f0.handles[0].place.u};
+        ws.directions.resize(6 * nb);
+        for (int t = 0; t < 2; ++t) {
+            const double T = head[static_cast<size_t>(t)];
+            for (size_t k = 0; k < nb; ++k) {
+                // Bench k: its front handle at D in [d_lo, d_hi], its link's span alpha in
+                // [a_lo, a_hi]; the corners over that box are within the hull of their values at
+                // its four corners (bilinear interpolation) plus the interpolation's error,
+                // dD^2 / 8 max|c_DD| + da^2 / 8 max|c_aa|, where |P''| <= r + 2b for
+                // P(D) = b (T + D) (cos D, sin D).
+                const Place& front0 = f0.handles[k].place;
+                const Place& front1 = f1.handles[k].place;
+                const double d0 = front0.u - f0.handles[0].place.u, d1 = front1.u - f1.handles[0].place.u;
+                const double a0 = f0.handles[k + 1].place.u - front0.u, a1 = f1.handles[k + 1].place.u - front1.u;
+                const double d_lo = std::min(d0, d1), d_hi = std::max(d0, d1);
+                const double a_lo = std::min(a0, a1), a_hi = std::max(a0, a1);
+                const Rect& r = f0.benches[k];
+                const double link = spec.link_length(static_cast<int>(k) + 1);
+                const double r_max = b * (T + d_hi + a_hi) + 2.0 * b;  // bounds |P''| on the box
+                SweptWorkspace::Swept& sw = ws.benches[static_cast<size_t>(t) * nb + k];
+                Vec2 Fs[4], Rs[4];  // the handles at the box's four corners (D, alpha)
+                Vec2* const e = &ws.directions[6 * k];  // their directions, the same at both T
+                if (t == 0) {
+                    Vec2* w = e;
+                    w[0] = {std::cos(d_lo), std::sin(d_lo)};
+                    w[1] = {std::cos(d_hi), std::sin(d_hi)};
+                    for (size_t c = 0; c < 4; ++c) {
+                        const double D = c < 2 ? d_lo : d_hi, A = c % 2 == 0 ? a_lo : a_hi;
+                        w[2 + c] = {std::cos(D + A), std::sin(D + A)};
+                    }
+                }
+                for (size_t c = 0; c < 4; ++c) {
+                    const double D = c < 2 ? d_lo : d_hi, A = c % 2 == 0 ? a_lo : a_hi;
+                    Fs[c] = b * (T + D) * e[c < 2 ? 0 : 1];
+                    Rs[c] = b * (T + D + A) * e[2 + c];
+                }
+                size_t q = 0;
+                double worst = 0.0;
+                for (const double along : {-1.0, 1.0}) {
+                    for (const double across : {-1.0, 1.0}) {
+                        const double cF = 0.5 + along * r.half_length / link;
+                        const double cR = 0.5 - along * r.half_length / link;
+                        const double j = across * r.half_width / link;
+                        for (size_t c = 0; c < 4; ++c) sw.v[q++] = cF * Fs[c] + cR * Rs[c] + j * perp(Fs[c] - Rs[c]);
+                        const double dd = (d_hi - d_lo), da = (a_hi - a_lo);
+                        worst = std::max(worst, (dd * dd * (std::abs(cF) + std::abs(cR) + 2.0 * std::abs(j)) +
+                                                 da * da * (std::abs(cR) + std::abs(j))) * r_max / 8.0);
+                    }
+                }
+                sw.radius = worst;
+                double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+                for (const Vec2& v : sw.v) {
+                    x0 = std::min(x0, v.x());
+                    x1 = std::max(x1, v.x());
+                    y0 = std::min(y0, v.y());
+                    y1 = std::max(y1, v.y());
+                }
+                const double grow = sw.radius + 0.5 * kProofBoxMargin;
+                sw.x0 = x0 - grow, sw.x1 = x1 + grow, sw.y0 = y0 - grow, sw.y1 = y1 + grow;
+            }
+        }
+    } else {
+        for (size_t k = 0; k < nb; ++k)
+            enclose(f0.benches[k], spec.link_length(static_cast<int>(k) + 1),
+                    {f0.handles[k].pos, f1.handles[k].pos, ws.dilation[k]},
+                    {f0.handles[k + 1].pos, f1.handles[k + 1].pos, ws.dilation[k + 1]}, ws.benches[k]);
+    }
+    // Boxes: each bench's over its enclosures.
+    ws.boxes.resize(nb);
+    for (size_t k = 0; k < nb; ++k) {
+        SweptWorkspace::Swept box = ws.benches[k];
+        if (frames == 2) {
+            const SweptWorkspace::Swept& o = ws.benches[nb + k];
+            box.x0 = std::min(box.x0, o.x0), box.x1 = std::max(box.x1, o.x1);
+            box.y0 = std::min(box.y0, o.y0), box.y1 = std::max(box.y1, o.y1);
+            box.radius = std::max(box.radius, o.radius);
+        }
+        ws.boxes[k] = {box.x0, box.x1, box.y0, box.y1, box.radius};
+    }
+    // Axes of the fixed frame into the turned one, by -theta_0 at the end (0) or the start (1).
+    std::array<std::array<double, 2>, 2> turn{};
+    for (size_t e = 0; e < 2 && turned; ++e) turn[e] = {std::cos(head[e]), std::sin(head[e])};
+    const auto turn_back = [&](const Vec2& v, size_t e) {
+        const double c = turn[e][0], sn = turn[e][1];
+        return Vec2{c * v.x() + sn * v.y(), -sn * v.x() + c * v.y()};
+    };
+    // 4. Pairs whose boxes (grown by half the margin each) meet: sweep and prune along x. Every
+    // other pair's boxes are more than kProofBoxMargin apart in x or y, so are its benches.
+    ws.order.resize(nb);
+    for (size_t k = 0; k < nb; ++k) ws.order[k] = static_cast<int>(k);
+    std::sort(ws.order.begin(), ws.order.end(),
+              [&](int a, int b) { return ws.boxes[static_cast<size_t>(a)].x0 < ws.boxes[static_cast<size_t>(b)].x0; });
+    ws.active.clear();
+    out.least_gap = kProofBoxMargin;
+    for (const int k : ws.order) {
+        const SweptWorkspace::Box& s = ws.boxes[static_cast<size_t>(k)];
+        size_t keep = 0;
+        for (const int m : ws.active)
+            if (ws.boxes[static_cast<size_t>(m)].x1 >= s.x0) ws.active[keep++] = m;
+        ws.active.resize(keep);
+        for (const int m : ws.active) {
+            if (std::abs(m - k) < 2) continue;  // neighbours share a handle: never a contact
+            const SweptWorkspace::Box& o = ws.boxes[static_cast<size_t>(m)];
+            if (o.y1 < s.y0 || s.y1 < o.y0) continue;
+            const size_t a = static_cast<size_t>(std::min(k, m)), b = static_cast<size_t>(std::max(k, m));
+            const double radii = o.radius + s.radius;
+            double proved = b >= a + 2 ? chain_gap(turning, spec, f0, a, b) : -INFINITY;
+            if (!(proved > kProofSlack)) {
+                // The boards' edge normals at both ends of the step (in the turned frame there).
+                // The normals first: the long sides face each other in most near pairs, and the
+                // loop stops at the first axis that proves the pair.
+                std::array<Vec2, 8> axes = {perp(f0.benches[a].axis), perp(f0.benches[b].axis), perp(f1.benches[a].axis),
+                                            perp(f1.benches[b].axis), f0.benches[a].axis, f0.benches[b].axis,
+                                            f1.benches[a].axis, f1.benches[b].axis};
+                if (turned)  // the start's axes turned by its theta_0, the end's by its own
+                    for (size_t q = 0; q < axes.size(); ++q) axes[q] = turn_back(axes[q], (q / 2) % 2 == 0 ? 1 : 0);
+                double best = -INFINITY;
+                for (const Vec2& n : axes) {
+                    // b beyond a along n, and a beyond b: each the least over the enclosures
+                    // (both ends of theta_0: concave in it, each side on its own).
+                    double above = INFINITY, below = INFINITY;
+                    for (int t = 0; t < frames; ++t) {
+                        double alo, ahi, blo, bhi;
+                        project(ws.benches[static_cast<size_t>(t) * nb + a], n, alo, ahi);
+                        project(ws.benches[static_cast<size_t>(t) * nb + b], n, blo, bhi);
+                        above = std::min(above, blo - ahi);
+                        below = std::min(below, alo - bhi);
+                    }
+                    best = std::max({best, above, below});
+                    if (best > radii + kProofSlack + kProofBoxMargin) break;  // enough: a sharper bound is not needed
+                }
+                proved = best - radii;
+            }
+            if (!(proved > kProofSlack))
+                return {StepVerdict::too_close, proved, static_cast<int>(a) + 1, static_cast<int>(b) + 1};
+            if (proved < out.least_gap) {
+                out.least_gap = proved;
+                out.bench_a = static_cast<int>(a) + 1;
+                out.bench_b = static_cast<int>(b) + 1;
+            }
+        }
+        ws.active.push_back(k);
+    }
+    return out;
+}
+
+}  // namespace dragon::contact

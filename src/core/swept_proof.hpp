@@ -1,0 +1,92 @@
+// A proof that no two non-adjacent benches touch at any moment of a step, from the chain at the
+// step's two ends alone: no rate, no sampling inside the step (docs/methods.md, section 6).
+//
+// 1. Every handle moves forward along the path over the step (its arc position at the step's
+//    end is no smaller than at its start), proved link by link from the head: while the path
+//    between a link's rear handle at the start and its front handle at the end turns by less
+//    than pi/2, both ends' tangents make an angle below pi/2 with the link, so the rigid-link
+//    relation v_{i+1} = v_i (T_i . u) / (T_{i+1} . u) keeps the rear speed's sign; a continuity
+//    argument carries it over the whole step. So handle i lies, for the whole step, on the arc
+//    of the path between its two end places.
+// 2. That arc, of length L turning by tau, lies within L min(tau, 2) / 4 of the chord between
+//    its ends (for every unit n, P(s).n is at most its linear interpolation plus
+//    L/4 times the oscillation of T.n, which is at most min(tau, 2)).
+// 3. A bench's corners are linear in its two handles (c = cF F + cR R + j perp(F - R), the
+//    coefficients fixed by the board), so over the step every corner lies in the parallelogram
+//    of the four combinations of the handles' end positions, dilated; the bench lies in the
+//    convex hull of its 16 such points, dilated by the largest radius.
+// 4. Two such enclosures apart along any axis (by more than kProofSlack) prove the two benches
+//    apart for the whole step.
+#pragma once
+
+#include <array>
+#include <numbers>
+#include <vector>
+
+#include "dragon/chain.hpp"
+#include "dragon/path.hpp"
+#include "dragon/scenario.hpp"
+
+namespace dragon::contact {
+
+// m: two enclosures must be farther apart than this to prove their benches apart. It absorbs
+// what the floating-point model leaves out: the chain solve's error in each handle (~1e-14 m,
+// tol::newton_step), the rounding of the enclosures' own few operations on coordinates of ~10 m
+// (a few ulps, ~1e-15 m each) and of the arc lengths and turnings in the dilations (relative
+// ~1e-15 of a dilation far below 1 m): 1e-12 m is 30 times all of them together. It also sets
+// how close to a contact the proof reaches: within about kProofSlack / (closing speed) of head
+// travel.
+inline constexpr double kProofSlack = 1e-12;
+// rad: the largest turning of the path over a link's hull for which step 1 above holds, pi/2
+// less a margin far above the rounding of Path::turning (~1e-15 rad).
+inline constexpr double kMaxLinkTurning = 0.5 * std::numbers::pi - 1e-9;
+// m: margin of the enclosures' bounding boxes within which a pair's separation is looked at; a
+// pair farther apart is proved apart by its boxes alone, and the least separation a proof
+// reports is at most this.
+inline constexpr double kProofBoxMargin = 0.05;
+
+enum class StepVerdict {
+    proved,        // no two non-adjacent benches touch anywhere in the step
+    too_close,     // some pair's enclosures are not proved apart: a shorter step may prove it
+    not_monotone,  // a link turns too much over the step (or a handle moved back): no proof by enclosures
+};
+
+struct StepProof {
+    StepVerdict verdict = StepVerdict::proved;
+    // m: the least separation proved between two non-adjacent benches over the step (a lower
+    // bound on their distance at every moment of it; at most kProofBoxMargin), when proved.
+    double least_gap = INFINITY;
+    int bench_a = 0, bench_b = 0;  // the pair that set least_gap (or first failed), 1..N
+};
+
+// Scratch reused between proofs (one per search worker).
+struct SweptWorkspace {
+    struct Swept {
+        std::array<Vec2, 16> v;   // the enclosure's hull points
+        double radius = 0.0;      // m: the hull is dilated by this
+        double x0, x1, y0, y1;    // its bounding box, dilated, m
+    };
+    struct Box {
+        double x0, x1, y0, y1;  // a bench's bounding box over its enclosures, dilated, m
+        double radius;          // m: the largest dilation of its enclosures
+    };
+    std::vector<Swept> benches;  // each bench's enclosure (two per bench on the spiral)
+    std::vector<Box> boxes;
+    // A handle's place over the step, as a chord and a dilation: it lies in seg(p0, p1) + D(dilation).
+    struct HandleSpan {
+        Vec2 p0 = Vec2::Zero(), p1 = Vec2::Zero();
+        double dilation = 0.0;  // m
+    };
+    std::vector<HandleSpan> spans;
+    std::vector<Vec2> directions;  // the spiral's unit directions at a bench's handles' angles
+    std::vector<double> arc0, arc1, dilation;
+    std::vector<int> order;
+    std::vector<int> active;
+};
+
+// Proves (or fails to prove) that no two non-adjacent benches of the chain touch at any head
+// travel between the frames f0 and f1 (f0 earlier, both of the same chain on `path`, the head
+// moving forward from one to the other within the valid motion).
+StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, const Frame& f1, SweptWorkspace& ws);
+
+}  // namespace dragon::contact

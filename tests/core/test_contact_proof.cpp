@@ -1,0 +1,203 @@
+// The first-contact search proves every step it accepts (core/swept_proof.hpp): the proof
+// itself, and scenarios built to defeat a search that trusts a rate bound.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "core/swept_proof.hpp"
+#include "dragon/analyses.hpp"
+#include "dragon/collision.hpp"
+#include "dragon/constants.hpp"
+
+using namespace dragon;
+
+namespace {
+
+// The first travel in [x0, x1] (m) where two benches touch, by an independent dense scan every
+// `dx` m of head travel (clearance over all pairs through the broad phase), then bisection of
+// the clearance's sign to 1e-10 m; none if every sample is apart.
+std::optional<double> scan_first_contact(const Simulation& sim, double x0, double x1, double dx) {
+    Frame f;
+    double last = x0;
+    for (double x = x0; x <= x1; x += dx) {
+        sim.frame_at_travel_into(x, f);
+        if (clearance(f).distance <= 0.0) {
+            double lo = last, hi = x;
+            while (hi - lo > 1e-10) {
+                const double mid = 0.5 * (lo + hi);
+                sim.frame_at_travel_into(mid, f);
+                (clearance(f).distance <= 0.0 ? hi : lo) = mid;
+            }
+            return hi;
+        }
+        last = x;
+    }
+    return std::nullopt;
+}
+
+ContactSearchOptions proved() {
+    ContactSearchOptions o;
+    o.prove_steps = true;
+    return o;
+}
+
+// Q3's answer, the pitch below which the dragon touches on the way in (docs/methods.md).
+constexpr double kMinPitch = 0.4503373935;
+
+// A pitch this far below the minimum grazes: the benches overlap by about 1e-6 m over a few
+// millimetres of head travel, far less than the metres a step of the search covers there.
+Scenario grazing(double below) {
+    Scenario s;
+    s.path.pitch = kMinPitch - below;
+    return s;
+}
+
+}  // namespace
+
+// The proof of one step: a short step far from any contact is proved; a step over the contest's
+// contact is not (it is not contact-free); a step whose end has the handles behind its start is
+// not either.
+TEST(StepProof, ProvesWhatIsApartAndNothingElse) {
+    const Simulation sim(Scenario{});
+    contact::SweptWorkspace ws;
+    const BenchSpec& spec = sim.scenario().bench;
+    const Frame a = sim.frame_at_travel(100.0), b = sim.frame_at_travel(100.2);
+    const contact::StepProof p = contact::prove_step(sim.path(), spec, a, b, ws);
+    EXPECT_EQ(p.verdict, contact::StepVerdict::proved);
+    EXPECT_GT(p.least_gap, 0.0);
+    EXPECT_LE(p.least_gap, clearance(a).distance);
+    EXPECT_LE(p.least_gap, clearance(b).distance);
+    // Over the contact (412.4738 m), from one side to the other: both ends apart or not, the
+    // step is not proved.
+    const Frame c = sim.frame_at_travel(412.47), d = sim.frame_at_travel(412.48);
+    EXPECT_NE(contact::prove_step(sim.path(), spec, c, d, ws).verdict, contact::StepVerdict::proved);
+    // Backwards: not a motion the proof knows.
+    EXPECT_EQ(contact::prove_step(sim.path(), spec, b, a, ws).verdict, contact::StepVerdict::not_monotone);
+}
+
+// The proof's enclosure holds: every sample of the chain inside a proved step keeps each pair at
+// least the separation the proof claimed.
+TEST(StepProof, TheLeastSeparationProvedHoldsInsideTheStep) {
+    const Simulation sim(Scenario{});
+    contact::SweptWorkspace ws;
+    Frame f;
+    for (const double x0 : {50.0, 300.0, 400.0, 410.0, 412.0}) {
+        for (const double h : {1e-3, 1e-2, 0.1, 0.5}) {
+            const Frame a = sim.frame_at_travel(x0), b = sim.frame_at_travel(x0 + h);
+            const contact::StepProof p = contact::prove_step(sim.path(), sim.scenario().bench, a, b, ws);
+            if (p.verdict != contact::StepVerdict::proved) continue;
+            for (int k = 0; k <= 50; ++k) {
+                sim.frame_at_travel_into(x0 + h * k / 50.0, f);
+                EXPECT_GE(clearance(f).distance, p.least_gap) << x0 << " + " << h << " at " << k;
+            }
+        }
+    }
+}
+
+// The contest's Q2: every step proved, the contact enclosed by what was proved and where the
+// benches touch, the enclosure within the printed resolution of the time.
+TEST(Q2Proof, TheContestsContactIsProvedFirst) {
+    const Simulation sim(Scenario{});
+    const auto c = first_contact(sim, 0.0, sim.valid_end(), proved());
+    ASSERT_TRUE(c.has_value());
+    EXPECT_EQ(c->proof.unproved_steps, 0);
+    EXPECT_GT(c->proof.proved_steps, 10);
+    EXPECT_EQ(c->proof.proved_from, 0.0);
+    EXPECT_EQ(c->enclosure_lo, c->proof.proved_to);
+    EXPECT_EQ(c->enclosure_hi, c->travel);
+    EXPECT_LE(c->enclosure_lo, c->enclosure_hi);
+    EXPECT_LT(c->enclosure_hi - c->enclosure_lo, 1e-9);
+    EXPECT_GT(clearance(sim.frame_at_travel(c->enclosure_lo)).distance, 0.0);
+    EXPECT_LE(clearance(c->frame).distance, 0.0);
+}
+
+// A grazing pass: just below the minimum pitch the benches overlap by about a micrometre over a
+// few millimetres of head travel. The search finds it, where a dense independent scan does.
+TEST(Q2Proof, AGrazingPassShallowerThanAStepIsFound) {
+    for (const double below : {1e-6, 1e-7}) {
+        const Simulation sim(grazing(below));
+        const double to = boundary_travel(sim);
+        const auto c = first_contact_travel(sim, 0.0, to, proved());
+        ASSERT_TRUE(c.has_value()) << below;
+        EXPECT_EQ(c->proof.unproved_steps, 0);
+        // The dense scan, around the contact and before it (every 1e-4 m over the last 0.5 m).
+        const auto scan = scan_first_contact(sim, c->travel - 0.5, c->travel + 0.5, 1e-4);
+        ASSERT_TRUE(scan.has_value()) << below;
+        EXPECT_NEAR(*scan, c->travel, 1e-9) << below;
+        // How deep and how long: the graze is shallow and short.
+        Frame f;
+        double deepest = 0.0, inside = 0.0;
+        for (double x = c->travel; x < c->travel + 0.1; x += 1e-5) {
+            sim.frame_at_travel_into(x, f);
+            const double d = clearance(f).distance;
+            if (d <= 0.0) inside += 1e-5, deepest = std::min(deepest, d);
+        }
+        EXPECT_LT(-deepest, 1e-5) << below;
+        EXPECT_LT(inside, 0.2) << below;
+    }
+}
+
+// A search whose rate bounds choose steps several times too long (rate_safety below 1: the rate
+// that peaks inside a step is then well above what the step allowed for) still finds what the
+// default search finds, because the proof rejects every step that is not contact-free: it
+// subdivides them. Its accepted steps are checked from outside by dense samples.
+TEST(Q2Proof, TheProofRejectsStepsTheRateBoundMadeTooLong) {
+    std::vector<Scenario> cases = {Scenario{}, grazing(1e-6)};
+    cases.push_back(Scenario{});
+    cases.back().path.pitch = 0.44;  // a window of contact that opens and closes
+    for (const Scenario& s : cases) {
+        const Simulation sim(s);
+        const double to = std::min(sim.valid_range().to_travel, boundary_travel(sim) + 200.0);
+        const auto reference = first_contact_travel(sim, 0.0, to);
+        ASSERT_TRUE(reference.has_value());
+        for (const double safety : {1.0, 0.25}) {
+            ContactSearchOptions o = proved();
+            o.rate_safety = safety;
+            Frame f;
+            o.on_step = [&](double a, double b) {
+                for (int k = 1; k <= 8; ++k) {
+                    sim.frame_at_travel_into(a + (b - a) * k / 8.0, f);
+                    ASSERT_GT(clearance(f).distance, 0.0) << s.path.pitch << " safety " << safety;
+                }
+            };
+            const auto c = first_contact_travel(sim, 0.0, to, o);
+            ASSERT_TRUE(c.has_value()) << s.path.pitch << " safety " << safety;
+            EXPECT_NEAR(c->travel, reference->travel, 1e-9) << s.path.pitch << " safety " << safety;
+            EXPECT_EQ(c->proof.unproved_steps, 0);
+            if (safety < 1.0) {
+                EXPECT_GT(c->proof.subdivisions, 0) << s.path.pitch;
+            }
+        }
+    }
+}
+
+// What the proof adds. The search with its rate bounds checked at each step's end and no proof
+// finds the graze even with a rate bound 1000 times too optimistic (the end checks send the long
+// steps back: no scenario tried defeats them); with the rate assumption alone (no end checks, no
+// proof) it steps over the graze and finds nothing; the proof alone, on the same too optimistic
+// steps, finds it.
+TEST(Q2Proof, TheRateAssumptionAloneMissesAGrazeTheProofDoesNot) {
+    const Simulation sim(grazing(1e-6));
+    const double to = boundary_travel(sim);
+    const auto truth = first_contact_travel(sim, 0.0, to, proved());
+    ASSERT_TRUE(truth.has_value());
+    ContactSearchOptions checked;
+    checked.rate_safety = 0.001;
+    const auto c1 = first_contact_travel(sim, 0.0, to, checked);
+    ASSERT_TRUE(c1.has_value());
+    EXPECT_NEAR(c1->travel, truth->travel, 1e-9);
+    ContactSearchOptions assumed = checked;
+    assumed.check_step_ends = false;
+    const auto c2 = first_contact_travel(sim, 0.0, to, assumed);
+    EXPECT_TRUE(!c2 || c2->travel > truth->travel + 1e-3);
+    ContactSearchOptions proof_alone = assumed;
+    proof_alone.prove_steps = true;
+    const auto c3 = first_contact_travel(sim, 0.0, to, proof_alone);
+    ASSERT_TRUE(c3.has_value());
+    EXPECT_NEAR(c3->travel, truth->travel, 1e-9);
+    EXPECT_EQ(c3->proof.unproved_steps, 0);
+    EXPECT_GT(c3->proof.subdivisions, 0);
+}
