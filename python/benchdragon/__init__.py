@@ -62,9 +62,11 @@ class Scenario:
     (2.2 m), ``width`` (0.3 m), ``hole_offset`` (0.275 m), ``start_turn`` (16), ``turn_radius``
     (4.5 m), ``turn_pitch`` (1.7 m, the turnaround's spirals) and ``arc_ratio`` (2).
 
-    Each value is checked on its own range when the scenario is made (``InputError`` names it);
-    rules between values (the pitch above the bench width) are checked where a computation reads
-    them, as the tool does. Scenarios are immutable, compare equal by value, hash, and pickle.
+    Each value is checked on its own range when the scenario is made (``InputError`` names it by
+    its keyword), and so are the rules between the benches' values (the holes within the boards);
+    a bench count is a whole number (not a bool), checked before it is narrowed. Rules between a
+    path's values and the benches (the pitch above the bench width) are checked where a
+    computation reads them, as the tool does. Scenarios are immutable, compare equal by value, hash, and pickle.
     """
 
     __slots__ = ("_values",)

@@ -112,9 +112,10 @@ Scenario scenario_from(const py::dict& values) {
         validate(s, p->value);  // the value alone, named as given
         given |= p->value;
     }
-    // The rules between values (the holes within the boards, the pitch wider than the benches),
-    // for every rule a given value takes part in: Scenario(hole_offset=5) is refused here.
-    if (given) validate(s, value::all);
+    // The rules between the benches' values (the holes within the boards), whatever the path:
+    // Scenario(hole_offset=5) is refused here, naming hole_offset. Rules that involve a path's
+    // values (the pitch wider than the benches) wait for the path that reads them, as the tool's.
+    if (given & value::bench) validate(s, value::bench);
     return s;
 }
 

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "error_words.hpp"
 #include "report.hpp"
 #include "dragon/json.hpp"
 #include "dragon/keys.hpp"
@@ -39,15 +40,16 @@ void register_keys(CLI::App& app, Registry& reg) {
     sub->add_flag("--json", opt->json, "Print one JSON array on stdout");
     reg["keys"] = [opt](Executor&) {
         Json rows = Json::array();
-        if (!opt->json) fmt::print("{:<16} {:<18} {:<5} {}\n", "name", "flag / URL", "unit", "meaning");
+        if (!opt->json) fmt::print("{:<18} {:<18} {:<5} {}\n", "name", "flag", "unit", "meaning");
         for (const KeyInfo& k : all_keys()) {
             if (k.key == Key::none || !first_of_its_name(k)) continue;
             const std::string flag = hyphenated(k.key);
             if (opt->json)
-                rows.push_back({{"name", k.name}, {"flag", flag}, {"unit", k.unit}, {"words", k.words}, {"help", k.help},
-                                {"scenario", k.scenario != 0}});
+                rows.push_back({{"name", k.name}, {"flag", takes_flag(k.key) ? Json("--" + flag) : Json(nullptr)},
+                                {"unit", k.unit}, {"words", k.words}, {"help", k.help}, {"scenario", k.scenario != 0}});
             else
-                fmt::print("{:<16} {:<18} {:<5} {}\n", k.name, "--" + replace_all(flag, "/", "/--"),
+                fmt::print("{:<18} {:<18} {:<5} {}\n", k.name,
+                           takes_flag(k.key) ? "--" + replace_all(flag, "/", "/--") : std::string("-"),
                            k.unit.empty() ? "-" : k.unit, k.help);
         }
         if (opt->json) print_json(rows);

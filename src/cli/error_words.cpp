@@ -52,6 +52,16 @@ std::string qualifier(Key key) {
 
 }  // namespace
 
+bool takes_flag(Key key) {
+    if (has_flag(key) || key_info(key).scenario != 0) return true;
+    switch (key) {
+        case Key::path: case Key::zoom: case Key::centre: case Key::collision: case Key::only: case Key::out:
+        case Key::width_cm: case Key::video_size:
+            return true;
+        default: return false;
+    }
+}
+
 std::string word(const InputError& e) {
     const Key key = e.key();
     // Two flags at once, worded as the CLI always has.

@@ -13,4 +13,8 @@ namespace dragon::cli {
 // value, else the library's own sentence.
 std::string word(const InputError& e);
 
+// Whether some command of the tool sets `key` with a flag of its name (--pitch, --from); the
+// others (a table's frame count, a study's entry radius) are the library's and Python's only.
+bool takes_flag(Key key);
+
 }  // namespace dragon::cli

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "film_plan.hpp"
+#include "dragon/scenario.hpp"
 
 namespace dragon {
 
@@ -32,6 +33,9 @@ struct Resolver {
         } catch (const StoryboardError&) {
             throw;
         } catch (const InputError& e) {
+            // A value the library names by its key: said with the storyboard's name for it.
+            if (e.key() != Key::none && !dynamic_cast<const ScenarioError*>(&e))
+                fail(key, fmt::format("{} {} is not allowed: {}", key_info(e.key()).name, e.value(), e.allowed()));
             fail(key, e.what());
         }
     }

@@ -74,9 +74,15 @@ TEST(Extremes, TenThousandBenches) {
 
 TEST(Extremes, PitchJustAboveTheWidth) {
     works("simulate --pitch 0.3000001 --to 1");
-    // The boards overlap from the first instant: there is no first contact after t = 0.
-    refused("collide --pitch 0.3000001", "already overlap");
-    refused("render --pitch 0.3000001 --collision --size 64x64 -o " + out_file("p.png"), "already overlap");
+    // The boards overlap from the first instant: there is no first contact after t = 0. That is
+    // a verdict on the scenario (exit 0, the benches and how deep), not a refusal.
+    const CliRun overlap = dragon("collide --pitch 0.3000001");
+    expect_works(overlap, "collide --pitch 0.3000001");
+    EXPECT_TRUE(has(overlap.out, "already overlap at 0 m of head travel")) << overlap.out;
+    const CliRun json = dragon("collide --pitch 0.3000001 --json");
+    expect_works(json, "collide --pitch 0.3000001 --json");
+    EXPECT_TRUE(has(json.out, "\"overlap_at_start\":{\"benches\":[")) << json.out.substr(0, 400);
+    works("render --pitch 0.3000001 --collision --size 64x64 -o " + out_file("p.png"));
     refused("simulate --pitch 0.3 --to 1", "pitch");
 }
 
@@ -132,7 +138,10 @@ TEST(Extremes, FastHead) {
 }
 
 TEST(Extremes, PastTheCollision) {
-    refused("collide --from 420", "already overlap");
+    const CliRun late = dragon("collide --from 420");
+    expect_works(late, "collide --from 420");
+    EXPECT_TRUE(has(late.out, "already overlap at t = 420 s")) << late.out;
+    EXPECT_TRUE(has(late.out, "an earlier --from finds it")) << late.out;
     refused("video --from 420 --size 64x48 -o " + out_file("late.mp4"), "the first contact, bench 1 touching bench 9, "
                                                                           "is at t = 412.473837682 s, before it");
     // The dragon cannot follow the spiral to its centre: handle 1 loses its root at 432.917924228 s

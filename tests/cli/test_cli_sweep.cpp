@@ -59,6 +59,8 @@ void expect_row_is_answer(const std::map<std::string, std::string>& row, const s
     for (const auto& [key, cell] : expected) {
         // What the search proved is how it searched, not a value of the scenario: no columns.
         if (measure == "collide" && (key.rfind("proof", 0) == 0 || key.rfind("enclosure", 0) == 0)) continue;
+        // Benches overlapping at the start are the row's verdict (collides), not a column.
+        if (measure == "collide" && key.rfind("overlap_at_start", 0) == 0) continue;
         if (!got.count(key)) {
             // The object is null in the command's answer: the sweep's columns hold its keys.
             const bool spread = cell.empty() && std::any_of(got.begin(), got.end(), [&](const auto& g) {

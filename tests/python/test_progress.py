@@ -33,7 +33,10 @@ def test_nothing_on_a_redirected_stderr(tmp_path):
 def test_on_a_terminal_at_most_ten_redraws_a_second():
     pytest.importorskip("tqdm", reason="progress bars need tqdm (Debian: python3-tqdm)")
     pty = pytest.importorskip("pty")
-    master, slave = pty.openpty()
+    try:
+        master, slave = pty.openpty()
+    except OSError as e:  # a container without /dev/pts
+        pytest.skip(f"no terminal to draw on: {e}")
     child = subprocess.Popen([sys.executable, "-c", CALL], stdout=subprocess.PIPE, stderr=slave, text=True)
     os.close(slave)
     shown = bytearray()
@@ -57,6 +60,7 @@ def test_on_a_terminal_at_most_ten_redraws_a_second():
     seconds = json.loads(out.strip().splitlines()[-1])["seconds"]
     text = shown.decode(errors="replace")
     redraws = text.count("\r")
-    assert "samples" in text, text  # the bar was drawn: the call runs for over half a second
+    if seconds > 0.7:  # the bar waits half a second before it draws: a faster call shows none
+        assert "samples" in text, text
     # A redraw each tenth of a second after the first half second, and the line erased at the end.
     assert redraws <= 10 * seconds + 3, (redraws, seconds)

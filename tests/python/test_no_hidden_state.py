@@ -1,0 +1,66 @@
+"""The library keeps no state behind its caller's back: a forked worker (concurrent.futures'
+ProcessPoolExecutor, Linux's default start) computes after its parent did, and answers what the
+parent answers. And a Scenario refuses a value when it is made, naming its keyword."""
+import concurrent.futures
+import json
+import os
+import subprocess
+import multiprocessing
+import sys
+
+import pytest
+
+import benchdragon as bd
+
+
+def _work(kind):
+    if kind == "collide":
+        return bd.collide()["time"]
+    if kind == "min_pitch":
+        return bd.min_pitch(lo=0.44, hi=0.46, progress=False)["pitch"]
+    frames = bd.Simulation(bd.Scenario()).frames([0.0, 100.0, 300.0])
+    return float(frames.positions[-1][0][0]), float(frames.speeds[-1][-1])
+
+
+@pytest.mark.skipif(sys.platform != "linux", reason="fork is the default start on Linux")
+def test_a_forked_worker_computes_after_its_parent():
+    # The parent uses the library first: a pool made behind its back would be inherited broken.
+    expected = {k: _work(k) for k in ("collide", "min_pitch", "frames")}
+    with concurrent.futures.ProcessPoolExecutor(2, mp_context=multiprocessing.get_context("fork")) as pool:
+        futures = {k: pool.submit(_work, k) for k in expected}
+        got = {k: f.result(timeout=120) for k, f in futures.items()}  # a hang fails here, not for ever
+    assert got == expected
+
+
+def test_a_scenario_refuses_a_value_when_it_is_made():
+    with pytest.raises(bd.InputError) as e:
+        bd.Scenario(hole_offset=5)
+    assert e.value.field == "hole_offset"
+    with pytest.raises(bd.InputError) as e:
+        bd.Scenario(bench_count=2**31)
+    assert e.value.field == "bench_count"
+    assert e.value.value == str(2**31)  # as given, not narrowed to -2147483648
+    for flag in (True, False):
+        with pytest.raises(bd.InputError) as e:
+            bd.Scenario(bench_count=flag)
+        assert e.value.field == "bench_count"
+    with pytest.raises(bd.InputError) as e:
+        bd.Scenario(pitch=True)
+    assert e.value.field == "pitch"
+    with pytest.raises(bd.InputError) as e:
+        bd.Scenario(speed=0)
+    assert e.value.field == "speed"
+    assert bd.Scenario(bench_count=10).bench_count == 10
+
+
+def test_min_pitch_follows_the_width_as_the_tool_does():
+    # The contest's 0.35 .. 0.55 m would put the turns closer than 0.35 m benches: the range moves
+    # up, in Python as in the tool (which refused it before), to the same answer.
+    r = bd.min_pitch(bd.Scenario(width=0.35), progress=False)
+    assert r["pitch"] is not None and r["pitch"] > 0.35
+    tool = os.environ.get("DRAGON_BIN")
+    if not tool:
+        pytest.skip("DRAGON_BIN is not set (scripts/test-python.sh sets it)")
+    done = subprocess.run([tool, "min-pitch", "--width", "0.35", "--json"], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert json.loads(done.stdout)["pitch"] == r["pitch"]
