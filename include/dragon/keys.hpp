@@ -14,6 +14,7 @@ namespace dragon {
 
 using ScenarioValues = unsigned;
 
+// A value a user can set, as the library names it (its description: key_info).
 enum class Key : std::uint8_t {
     none,  // a sentence about several values, or about none
     // The scenario (dragon/scenario.hpp).
@@ -34,8 +35,9 @@ enum class Key : std::uint8_t {
     out, tables, compression_level,
 };
 
+// One key's description: how each front end spells it, its unit and what it means.
 struct KeyInfo {
-    Key key;
+    Key key;                 // which key this describes
     std::string_view name;   // snake_case; the flag and URL key have hyphens instead
     std::string_view words;  // how a sentence names it: "time range end"
     std::string_view unit;   // "m", "m/s", "s", "px", "pt", or "" (a count, a ratio, a word)

@@ -30,8 +30,8 @@ struct PaperTable {
     std::string id;       // the file name's stem: "q1_positions", "answers"
     std::string caption;  // a sentence, no final full stop
     std::string label;    // "tab:dragon-q1-positions"
-    std::vector<std::string> header;
-    std::vector<std::vector<std::string>> rows;
+    std::vector<std::string> header;               // the column headings, first the rows' labels'
+    std::vector<std::vector<std::string>> rows;    // each row's cells, as many as the header
 };
 
 // The handles the paper-style tables show: 0, 1, 51, 101, 151, 201 and the tail's rear handle
