@@ -46,6 +46,9 @@ bool same_contact(const CollideAnswer& a, const CollideAnswer& b) {
 }  // namespace
 
 TEST(Fork, AChildSearchesAgainAfterItsParentSearchedInParallel) {
+#if defined(__SANITIZE_THREAD__)
+    GTEST_SKIP() << "ThreadSanitizer does not support starting threads in a child forked from a multi-threaded process";
+#endif
     const Simulation sim(Scenario{});
     ThreadPool parent_pool(2);  // alive while the parent forks: its threads are not the child's
     const CollideAnswer parent = first_contact_of_motion(sim, &parent_pool);
