@@ -420,7 +420,12 @@ function showAnswer(command) {
   const L = a.leaves;
   const v = (/** @type {string} */ key) => valueSpan(command, key, L[key] ?? '');
   if (command === 'collide') {
-    if (j.time !== null) {
+    if (j.overlap_at_start) {
+      // The chain collides before it moves: the library's verdict, as the tool says it.
+      const o = j.overlap_at_start;
+      body.append(sentence(words(state.lang, 'q2_overlap'), [String(o.benches[0]), String(o.benches[1]), o.depth.toFixed(6)]));
+      state.contact = null;
+    } else if (j.time !== null) {
       body.append(sentence(words(state.lang, 'q2_at'), [v('time'), String(j.benches[0]), String(j.benches[1])]));
       body.querySelector('p')?.append(' ', valueSpan(command, 'benches', ''));
       body.append(sentence(words(state.lang, 'q2_radius'), [v('head_radius')]));
@@ -458,6 +463,7 @@ function showAnswer(command) {
     }
   } else if (command === 'max-speed') {
     if (j.unbounded) body.append(sentence(words(state.lang, 'q5_unbounded'), []));
+    else if (j.max_head_speed === null) body.append(sentence(words(state.lang, 'q5_no_turn'), []));
     else body.append(sentence(words(state.lang, 'q5_speed'), [v('max_head_speed'), v('ratio'), v('handle'), v('time')]));
   }
   // Every key of the answer, each with its data-key and data-value.
