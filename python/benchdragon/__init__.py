@@ -465,16 +465,28 @@ def _progress(progress, unit: str, description: str):
 # ---- The contest's questions -----------------------------------------------------------------
 
 
+def _workers(workers: Any) -> int:
+    """`workers` as the calls take it: 0 (one per core) or 1 to 1024 threads, made for the call and
+    joined before it returns (nothing is left running, so a forked process finds no threads)."""
+    if isinstance(workers, bool) or not isinstance(workers, int) or not 0 <= workers <= 1024:
+        error = InputError(f"workers = {workers!r} is not allowed: give 0 (one per core) or 1 to 1024 threads")
+        error.field, error.value, error.allowed, error.jam = "workers", repr(workers), "0 (one per core) or 1 to 1024", None
+        raise error
+    return workers
+
+
 def collide(scenario: Optional[Scenario] = None, *, path: str = "spiral", from_: Moment = None,
-            to: Moment = None) -> CollideResult:
+            to: Moment = None, workers: int = 0) -> CollideResult:
     """Q2: the first moment two non-adjacent benches touch, to 1e-9 s (``dragon collide``).
 
     Searched over `from_` .. `to` (seconds, or head travel as "-100m"): by default on the plain
     spiral from t = 0 as far as the dragon can follow it, on the turnaround path 100 m of head
-    travel either side of the turn. Raises InputError when benches already overlap where the
-    search starts (their first contact lies before it).
+    travel either side of the turn. Benches already overlapping where the search starts are the
+    answer's ``overlap_at_start`` (their benches and depth: the chain collided before it), as
+    ``dragon collide --json`` says. `workers`: threads the search runs on (0: one per core),
+    made for the call and joined before it returns.
     """
-    text, frame = _core._collide(_values(scenario), path, from_, to)
+    text, frame = _core._collide(_values(scenario), path, from_, to, _workers(workers))
     result = CollideResult(json.loads(text))
     result.frame = Frame(frame) if frame is not None else None
     return result
@@ -482,17 +494,17 @@ def collide(scenario: Optional[Scenario] = None, *, path: str = "spiral", from_:
 
 def min_pitch(scenario: Optional[Scenario] = None, *, lo: Optional[float] = None, hi: Optional[float] = None,
               grid: float = 0.0025,
-              progress: Union[bool, Callable[[int, int], None], None] = True) -> MinPitchResult:
+              progress: Union[bool, Callable[[int, int], None], None] = True, workers: int = 0) -> MinPitchResult:
     """Q3: the smallest pitch (m) with which the head reaches the turning space collision-free
     (``dragon min-pitch``), searched over `lo` .. `hi` on a first scan of spacing `grid`, each
     change of feasibility narrowed to 1e-9 m. Left out, `lo` and `hi` are the scenario's own range
     as the command searches it (0.35 .. 0.55 m, moved up for a dragon too wide for it).
-    `progress` hears the first scan's runs."""
+    `progress` hears the first scan's runs; `workers` (0: one per core) runs the pitches."""
     callback, close = _progress(progress, "pitches", "min_pitch")
     try:
         return MinPitchResult(json.loads(_core._min_pitch(_values(scenario), None if lo is None else float(lo),
                                                           None if hi is None else float(hi), float(grid),
-                                                          callback)))
+                                                          callback, _workers(workers))))
     finally:
         close()
 

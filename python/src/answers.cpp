@@ -23,20 +23,21 @@ py::dict frame_object(const Simulation& sim, const Frame& f);
 
 void bind_answers(py::module_& m) {
     m.def("_collide",
-          [](const py::dict& scenario, const std::string& path, const py::object& from, const py::object& to) {
+          [](const py::dict& scenario, const std::string& path, const py::object& from, const py::object& to,
+             int workers) {
               Scenario s = scenario_from(scenario);
               s.path.kind = path_kind(path);
               const RunWindow window = window_from(default_window(s.path.kind), from, to);
               const Simulation sim(s);
-              const CollideAnswer a = interruptible([&](Executor& ex) { return collide(sim, window, &ex); });
+              const CollideAnswer a = interruptible([&](Executor& ex) { return collide(sim, window, &ex); }, workers_from(workers));
               return py::make_tuple(json_text(collide_answer(a, true)),
                                     a.contact ? py::object(frame_object(sim, a.contact->frame)) : py::none());
           },
-          py::arg("scenario"), py::arg("path"), py::arg("from_"), py::arg("to"));
+          py::arg("scenario"), py::arg("path"), py::arg("from_"), py::arg("to"), py::arg("workers") = 0);
 
     m.def("_min_pitch",
           [](const py::dict& scenario, std::optional<double> lo, std::optional<double> hi, double grid,
-             const py::object& progress) {
+             const py::object& progress, int workers) {
               Scenario s = scenario_from(scenario);
               s.path.kind = PathKind::spiral;
               const PitchRange range = pitch_search_range(s, lo, hi);  // the command's, to the digit
@@ -46,10 +47,11 @@ void bind_answers(py::module_& m) {
               const MinPitch mp = interruptible([&](Executor& ex) {
                   o.executor = &ex;
                   return min_pitch(s, range.lo, range.hi, o);
-              });
+              }, workers_from(workers));
               return json_text(min_pitch_answer(mp, s.path.turn_radius));
           },
-          py::arg("scenario"), py::arg("lo"), py::arg("hi"), py::arg("grid"), py::arg("progress"));
+          py::arg("scenario"), py::arg("lo"), py::arg("hi"), py::arg("grid"), py::arg("progress"),
+          py::arg("workers") = 0);
 
     m.def("_turnaround",
           [](const py::dict& scenario, const py::object& from, const py::object& to, bool clearance,

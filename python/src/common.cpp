@@ -132,6 +132,12 @@ py::dict scenario_dict(const Scenario& s) {
     return out;
 }
 
+int workers_from(int workers) {
+    // Checked by the package's Python layer (benchdragon._workers), which names the keyword.
+    if (workers < 0 || workers > 1024) throw py::value_error(fmt::format("workers={} is not allowed: give 0 (one per core) or 1 to 1024", workers));
+    return workers;
+}
+
 PathKind path_kind(const std::string& name) {
     if (name == "spiral") return PathKind::spiral;
     if (name == "turnaround") return PathKind::turnaround;

@@ -51,6 +51,10 @@ WorkProgress progress_from(const py::object& callback);
 // work runs on a pool made for this call (`workers`, 0: one per core) and joined before it
 // returns: nothing is left running between calls, so a process forked afterwards (a
 // ProcessPoolExecutor's workers) finds no half-inherited threads.
+// `workers` as a Python keyword gives it: 0 (one per core) or a positive count; anything else is
+// refused naming the keyword.
+int workers_from(int workers);
+
 template <class F>
 auto interruptible(F&& work, int workers = 0) -> std::invoke_result_t<F&, Executor&> {
     using R = std::invoke_result_t<F&, Executor&>;

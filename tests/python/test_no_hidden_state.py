@@ -64,3 +64,13 @@ def test_min_pitch_follows_the_width_as_the_tool_does():
     done = subprocess.run([tool, "min-pitch", "--width", "0.35", "--json"], capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr
     assert json.loads(done.stdout)["pitch"] == r["pitch"]
+
+
+def test_workers_choose_the_threads_not_the_answer():
+    one = bd.min_pitch(lo=0.44, hi=0.46, progress=False, workers=1)
+    two = bd.min_pitch(lo=0.44, hi=0.46, progress=False, workers=2)
+    assert one.to_dict() == two.to_dict() or one["pitch"] == two["pitch"]
+    assert bd.collide(workers=1)["time"] == bd.collide(workers=2)["time"]
+    with pytest.raises(bd.InputError) as e:
+        bd.collide(workers=-1)
+    assert e.value.field == "workers"
