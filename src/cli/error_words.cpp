@@ -1,6 +1,5 @@
 #include "error_words.hpp"
 
-
 #include <fmt/format.h>
 
 #include "report.hpp"
@@ -39,8 +38,7 @@ bool has_flag(Key key) {
 }
 
 // What the line adds after "is not allowed" where the flag alone does not say which scale a
-// value is on (--crf is H.264's, VP9's or a GIF's), and the CLI's own advice in place of the
-// library's where the library's may not name flags.
+// value is on (--crf is H.264's, VP9's or a GIF's).
 std::string qualifier(Key key) {
     switch (key) {
         case Key::crf_h264: return " for H.264";

@@ -1,6 +1,6 @@
-// The library's errors worded for the command line: a value the library names in its own terms
-// ("time range end") is named by the flag that set it ("--to"), and each kind of error maps to
-// its exit code.
+// The library's errors worded for the command line: a value the library names by its key
+// (Key::to, dragon/keys.hpp) is named by the flag that set it ("--to"), and each kind of error
+// maps to its exit code.
 #pragma once
 
 #include <string>
@@ -9,7 +9,7 @@
 
 namespace dragon::cli {
 
-// The one line an InputError becomes: "--to 5000 is not allowed: ..." when its field is a flag's
+// The one line an InputError becomes: "--to 5000 is not allowed: ..." when its key is a flag's
 // value, else the library's own sentence.
 std::string word(const InputError& e);
 
