@@ -268,9 +268,10 @@ public:
                                         dragon::value::turn_radius);
                 dragon::MinPitchOptions options;
                 options.progress = report;
-                options.executor = nullptr;
-                return answer_val(dragon::min_pitch_answer(dragon::min_pitch(s, dragon::pitch_search_range(s, std::nullopt, std::nullopt).lo,
-                                                                   dragon::pitch_search_range(s, std::nullopt, std::nullopt).hi, options), s.path.turn_radius));
+                // The command's default range for this scenario (moved up for a wide dragon).
+                const dragon::PitchRange range = dragon::pitch_search_range(s, std::nullopt, std::nullopt);
+                return answer_val(dragon::min_pitch_answer(dragon::min_pitch(s, range.lo, range.hi, options),
+                                                           s.path.turn_radius));
             }
             if (command == "turnaround") {
                 s.path.kind = dragon::PathKind::turnaround;

@@ -4,10 +4,8 @@
 // Also the key reference: every key the library describes (dragon/keys.hpp) has a line in
 // docs/cli.md's key table. Here rather than in tests/core: it reads the docs of every layer.
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -16,18 +14,12 @@
 #include "dragon/analyses.hpp"
 #include "dragon/constants.hpp"
 #include "dragon/scenario.hpp"
+#include "support/scratch.hpp"
 
 namespace fs = std::filesystem;
 using namespace dragon;
 
 namespace {
-
-std::string read(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 std::vector<fs::path> docs() {
     std::vector<fs::path> out{fs::path(DRAGON_SOURCE_DIR) / "README.md"};
@@ -58,7 +50,7 @@ TEST(DocsNumbers, EveryQuotedConstantHasItsValue) {
     const std::regex quote(R"(`((?:tol::|k)[A-Za-z_]+)` = ([-+0-9.eE]+))");
     int seen = 0;
     for (const fs::path& doc : docs()) {
-        const std::string text = read(doc);
+        const std::string text = dragon_test::slurp(doc);
         for (auto it = std::sregex_iterator(text.begin(), text.end(), quote); it != std::sregex_iterator(); ++it) {
             const std::string name = (*it)[1], value = (*it)[2];
             ++seen;
@@ -73,7 +65,7 @@ TEST(DocsNumbers, EveryQuotedConstantHasItsValue) {
 TEST(DocsNumbers, NoStaleToleranceIsQuoted) {
     // What the docs said before tol::travel was 1e-11 m, and the margin fig3 once drew.
     for (const fs::path& doc : {fs::path("docs/library.md"), fs::path("docs/methods.md")}) {
-        const std::string text = read(fs::path(DRAGON_SOURCE_DIR) / doc);
+        const std::string text = dragon_test::slurp(fs::path(DRAGON_SOURCE_DIR) / doc);
         EXPECT_EQ(text.find("to 1e-10 s"), std::string::npos) << doc;
         EXPECT_EQ(text.find("1e-10 m of head travel"), std::string::npos) << doc;
     }

@@ -14,7 +14,6 @@
 #include <map>
 #include <regex>
 #include <set>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -148,10 +147,7 @@ TEST(ProcessState, NoSourceDefinesAFunctionOfAnotherLibrary) {
     for (const char* top : {"src", "python/src", "include"})
         for (const auto& e : fs::recursive_directory_iterator(fs::path(DRAGON_SOURCE_DIR) / top)) {
             if (!e.is_regular_file()) continue;
-            std::ifstream in(e.path());
-            std::stringstream text;
-            text << in.rdbuf();
-            const std::string s = text.str();
+            const std::string s = dragon_test::slurp(e.path());
             for (auto it = std::sregex_iterator(s.begin(), s.end(), definition); it != std::sregex_iterator(); ++it)
                 if (anothers((*it)[1])) found.push_back(e.path().string() + ": " + (*it)[1].str());
         }
