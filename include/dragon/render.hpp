@@ -53,9 +53,10 @@ struct Theme {
                                  {0.37, 0.79, 0.38}, {0.99, 0.91, 0.14}};
 };
 
-// Where to find assets (themes, scenarios): `hint` if not empty, else $DRAGON_ASSETS, else the
-// install dir (<prefix>/share/benchdragon). Throws FileError (naming the folders tried) if none
-// holds a themes/ folder.
+// Where to find assets (themes, scenarios): `hint` if not empty, else the install dir
+// (<prefix>/share/benchdragon). The library reads no environment variable: a front end that
+// offers one ($DRAGON_ASSETS for the dragon tool) passes its folder as the hint. Throws
+// FileError (naming the folders tried) if none holds a themes/ folder.
 std::string find_asset_dir(const std::string& hint = "");
 // "light", "dark" (assets/themes/<name>.toml) or a path to a .toml file. Keys missing from the
 // file keep the light theme's values. Throws InputError for an unknown name or a bad file.

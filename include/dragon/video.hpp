@@ -98,6 +98,27 @@ struct VideoOptions {
 // "encoder tune", "key frame interval", "palette colours", "encoder threads".
 void validate(const VideoOptions& opt, VideoFormat format);
 
+// The GIF palette's size when none is asked: VideoOptions::colours, or this many for speed
+// colours, whose ramp needs them to stay smooth.
+inline constexpr int kSpeedColoursPalette = 256;
+
+// What a caller asked of the encoder (the video command's flags, Python's keywords): the
+// unset values are VideoOptions' defaults. An option of another format's encoder is refused,
+// not ignored: a preset for .webm would do nothing.
+struct EncoderRequest {
+    int width = VideoOptions{}.width;
+    int height = VideoOptions{}.height;
+    double fps = VideoOptions{}.fps;
+    std::optional<int> crf;
+    std::optional<std::string> preset;  // .mp4 only (Key::preset)
+    std::optional<std::string> tune;    // .mp4 only (Key::tune)
+    std::optional<int> threads;
+    std::optional<int> colours;  // .gif only (Key::colours)
+    bool speed_colours = false;  // frames coloured by speed: a GIF's default palette is kSpeedColoursPalette
+};
+// The options for `format`, checked (validate()), or InputError naming the key at fault.
+VideoOptions encoder_options(const EncoderRequest& request, VideoFormat format);
+
 // Encodes frames to a file as they come; never holds more than the codec's own look-ahead.
 // Writes to a temporary file beside the target, renamed over it by finish(): an error, an
 // exception or a kill before finish() leaves no file at the target.
@@ -278,6 +299,13 @@ private:
     // the threads that paint frames (render/backdrop.hpp).
     std::shared_ptr<render::BackdropCache> backdrop_;
 };
+
+// A zoomed clip is refused (InputError, Key::zoom, as require_zoom_resolves in dragon/look.hpp)
+// when doubles cannot resolve its pixels at width x height: a fixed view is the same on every
+// frame, and a followed head is furthest from the origin at an end of the clip (the spiral's
+// coil-in starts outermost, the turnaround's coil-out ends outermost).
+void require_zoom_resolves(const Animation& anim, int width_px, int height_px, double zoom);
+
 
 // Renders and encodes the animation at its frame rate (opt.fps is replaced by anim.fps()).
 EncodeStats write_video(const Animation& anim, const std::string& path, VideoOptions opt,

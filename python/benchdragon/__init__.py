@@ -640,8 +640,9 @@ def render(sim: Union[Simulation, Scenario, None] = None, t: Optional[float] = N
 
 def video(scenario: Optional[Scenario] = None, out: Union[str, os.PathLike] = "dragon.mp4", *, path: str = "spiral",
           from_: Moment = None, to: Moment = None, speedup: float = 10.0, hold: Optional[float] = None,
-          fps: float = 30.0, size: Sequence[int] = (1280, 720), crf: Optional[int] = None, preset: str = "faster",
-          tune: str = "animation", threads: int = 0, colours: Optional[int] = None, follow_head: bool = False,
+          fps: float = 30.0, size: Sequence[int] = (1280, 720), crf: Optional[int] = None,
+          preset: Optional[str] = None, tune: Optional[str] = None, threads: Optional[int] = None,
+          colours: Optional[int] = None, follow_head: bool = False,
           zoom: Optional[float] = None, theme: str = "light", speed_colours: bool = False, guides: bool = True,
           text: bool = True, legend: bool = True, inset: bool = True, lang: str = "en",
           progress: Union[bool, Callable[[int, int], None], None] = True) -> dict:
@@ -653,13 +654,15 @@ def video(scenario: Optional[Scenario] = None, out: Union[str, os.PathLike] = "d
     the turning space) or "end" (the end of the valid motion). Defaults: 0 .. collision on the
     spiral, -100m .. 100m on the turnaround path. `speedup` is simulated seconds per second of
     film; `hold` seconds the last moment stays (1 at a collision). `crf`, `preset`, `tune`,
-    `threads`, `colours` are the encoder's, as the tool's flags; `lang` ("en" or "zh") the
+    `threads`, `colours` are the encoder's, as the tool's flags (None: the tool's defaults, a
+    preset "faster" and tune "animation" for .mp4, a palette of 64 colours for .gif, 256 with
+    `speed_colours`; a preset or tune for .webm or .gif, or colours for a video, is refused as
+    the tool refuses it); `zoom` needs pixels doubles resolve, as the tool's; `lang` ("en" or "zh") the
     language of its captions, clock and legend. Ctrl-C stops it within a frame, leaving no file.
     """
     width, height = _picture_size(size)
     encoder = {"width": width, "height": height, "fps": float(fps), "crf": crf, "preset": preset, "tune": tune,
-               "threads": int(threads),
-               "colours": colours if colours is not None else (256 if speed_colours else 64)}
+               "threads": threads, "colours": colours}
     look = {"theme": os.fspath(theme), "speed_colours": speed_colours, "zoom": zoom, "follow_head": follow_head,
             "guides": guides, "text": text, "legend": legend, "inset": inset, "lang": lang}
     callback, close = _progress(progress, "frames", "video")

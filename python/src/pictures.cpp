@@ -16,6 +16,7 @@
 #include "dragon/decimals.hpp"
 #include "dragon/film.hpp"
 #include "dragon/language.hpp"
+#include "dragon/look.hpp"
 #include "dragon/picture_bytes.hpp"
 #include "dragon/picture_size.hpp"
 #include "dragon/still.hpp"
@@ -30,18 +31,25 @@ T get(const py::dict& d, const char* key, T fallback) {
     return d.contains(key) && !d[key].is_none() ? d[key].cast<T>() : fallback;
 }
 
-void check_zoom(double zoom) {
-    if (!(zoom >= kMinViewExtent && zoom <= kMaxViewExtent))
-        throw InputError(Key::zoom, fmt::format("{}", zoom),
-                         fmt::format("give the view's width in metres, {:g}..{:g}", kMinViewExtent, kMaxViewExtent));
-}
-
-// `zoom` from the call's keywords, checked; unset when not given.
-std::optional<double> zoom_of(const py::dict& look) {
-    if (!look.contains("zoom") || look["zoom"].is_none()) return std::nullopt;
-    const double zoom = look["zoom"].cast<double>();
-    check_zoom(zoom);
-    return zoom;
+// The look asked with the call's keywords (the render and video commands' look flags).
+LookRequest look_request(const py::dict& look) {
+    LookRequest r;
+    r.theme = get<std::string>(look, "theme", r.theme);
+    r.lang = get<std::string>(look, "lang", r.lang);
+    r.speed_colours = get(look, "speed_colours", r.speed_colours);
+    r.guides = get(look, "guides", r.guides);
+    r.text = get(look, "text", r.text);
+    if (look.contains("annotation") && !look["annotation"].is_none()) r.annotation = look["annotation"].cast<std::string>();
+    r.legend = get(look, "legend", r.legend);
+    r.inset = get(look, "inset", r.inset);
+    if (look.contains("zoom") && !look["zoom"].is_none()) r.zoom = look["zoom"].cast<double>();
+    if (look.contains("centre") && !look["centre"].is_none()) {
+        const auto c = look["centre"].cast<std::pair<double, double>>();
+        r.centre = Vec2(c.first, c.second);
+    }
+    r.follow_head = get(look, "follow_head", r.follow_head);
+    r.text_px = get(look, "text_px", r.text_px);
+    return r;
 }
 
 // A print size from the render call's keywords (print_size, width_in, width_cm, font_pt, dpi),
@@ -83,63 +91,32 @@ Sized sized_for(const py::dict& print, int width, int height, bool raster, const
     return out;
 }
 
-// What pictures and films share: theme, language, speed colours, guides and text.
-SceneOptions common_look(const py::dict& look, const std::string& assets) {
-    SceneOptions so;
-    so.theme = load_theme(get<std::string>(look, "theme", "light"), assets);
-    so.language = parse_language(get<std::string>(look, "lang", "en"));
-    so.colour_by_speed = get(look, "speed_colours", false);
-    so.show_guides = so.show_turning_space = get(look, "guides", true);
-    so.show_text = get(look, "text", true);
-    return so;
-}
-
-// The look of a picture from the render call's keywords (the render command's look flags).
-SceneOptions scene_look(const py::dict& look, const std::string& assets) {
-    SceneOptions so = common_look(look, assets);
-    if (look.contains("annotation") && !look["annotation"].is_none())
-        so.annotation = look["annotation"].cast<std::string>();
-    so.show_legend = get(look, "legend", false);
-    so.text_px = get(look, "text_px", 0.0);
-    so.show_inset = get(look, "inset", false);
-    const std::optional<double> zoom = zoom_of(look);
-    if (look.contains("centre") && !look["centre"].is_none()) {
-        const auto c = look["centre"].cast<std::pair<double, double>>();
-        if (!zoom) throw InputError("centre needs zoom (the width of the view in metres)");
-        if (!(std::abs(c.first) <= kMaxViewCentre && std::abs(c.second) <= kMaxViewCentre))
-            throw InputError(Key::centre, fmt::format("({}, {})", c.first, c.second),
-                             fmt::format("give x, y in metres, each within \u00b1{:g}", kMaxViewCentre));
-        so.camera = Camera::at({c.first, c.second}, *zoom);
-    } else if (zoom) {
-        so.camera = Camera::follow(*zoom);
-    }
-    if (get(look, "follow_head", false) && !zoom) so.camera = Camera::follow(20.0);
-    return so;
-}
-
-// The moment to draw: a time, or the first contact (its view `zoom` wide about the contact).
+// The moment to draw, at width x height pixels: a time, or the first contact (its view `zoom`
+// wide about the contact); a zoom whose pixels doubles cannot resolve there is refused.
 Still make_still(const Simulation& sim, const py::object& time, bool collision, const py::dict& look,
-                 const std::string& assets) {
+                 const std::string& assets, int width, int height) {
     if (collision == !time.is_none())
         throw InputError("render needs a time t (s) or collision=True, one of them");
-    const SceneOptions so = scene_look(look, assets);
+    const LookRequest asked = look_request(look);
+    const SceneOptions so = picture_scene_options(asked, assets);
+    std::optional<Still> still;
+    CollideAnswer searched;
     if (!collision) {
         const double t = time.cast<double>();
         py::gil_scoped_release release;
-        return still_at(sim, t, so);
+        still = still_at(sim, t, so);
+    } else {
+        {
+            py::gil_scoped_release release;
+            still = still_at_first_contact(sim, so, asked.zoom, &searched);
+        }
+        if (!still)
+            throw InputError(Key::collision, "True",
+                             fmt::format("no two benches touch between t = {} s and {} s on this scenario{}; give a time",
+                                         format_time(searched.window.from), format_time(searched.window.to),
+                                         searched.jam ? " (" + jam_sentence(*searched.jam) + ")" : ""));
     }
-    const std::optional<double> zoom = zoom_of(look);
-    CollideAnswer searched;
-    std::optional<Still> still;
-    {
-        py::gil_scoped_release release;
-        still = still_at_first_contact(sim, so, zoom, &searched);
-    }
-    if (!still)
-        throw InputError(Key::collision, "True",
-                         fmt::format("no two benches touch between t = {} s and {} s on this scenario{}; give a time",
-                                     format_time(searched.window.from), format_time(searched.window.to),
-                                     searched.jam ? " (" + jam_sentence(*searched.jam) + ")" : ""));
+    if (asked.zoom) require_zoom_resolves(still->scene, width, height, *asked.zoom);
     return std::move(*still);
 }
 
@@ -154,19 +131,21 @@ py::dict stats_dict(const EncodeStats& s, const VideoOptions& vo) {
     return d;
 }
 
-// The encoder's settings from the call's keywords, checked for this format.
-VideoOptions encoder_options(const py::dict& enc, VideoFormat format) {
-    VideoOptions vo;
-    vo.width = get(enc, "width", vo.width);
-    vo.height = get(enc, "height", vo.height);
-    vo.fps = get(enc, "fps", vo.fps);
-    if (enc.contains("crf") && !enc["crf"].is_none()) vo.crf = enc["crf"].cast<int>();
-    vo.preset = get(enc, "preset", vo.preset);
-    vo.tune = get(enc, "tune", vo.tune);
-    vo.threads = get(enc, "threads", vo.threads);
-    vo.colours = get(enc, "colours", vo.colours);
-    validate(vo, format);
-    return vo;
+// The encoder's settings from the call's keywords (unset: the library's defaults), checked for
+// this format.
+VideoOptions encoder_options(const py::dict& enc, VideoFormat format, bool speed_colours = false) {
+    EncoderRequest r;
+    r.width = get(enc, "width", r.width);
+    r.height = get(enc, "height", r.height);
+    r.fps = get(enc, "fps", r.fps);
+    const auto given = [&](const char* k) { return enc.contains(k) && !enc[k].is_none(); };
+    if (given("crf")) r.crf = enc["crf"].cast<int>();
+    if (given("preset")) r.preset = enc["preset"].cast<std::string>();
+    if (given("tune")) r.tune = enc["tune"].cast<std::string>();
+    if (given("threads")) r.threads = enc["threads"].cast<int>();
+    if (given("colours")) r.colours = enc["colours"].cast<int>();
+    r.speed_colours = speed_colours;
+    return encoder_options(r, format);
 }
 
 ProgressFn frame_progress(const WorkProgress& report) {
@@ -185,7 +164,7 @@ void bind_pictures(py::module_& m) {
               width = sized.width, height = sized.height;
               const Page& page = sized.page;
               const py::dict& looks = sized.look;
-              const Still still = make_still(sim, time, collision, looks, assets);
+              const Still still = make_still(sim, time, collision, looks, assets, width, height);
               std::string bytes;
               {
                   py::gil_scoped_release release;
@@ -200,7 +179,7 @@ void bind_pictures(py::module_& m) {
           [](const Simulation& sim, const py::object& time, bool collision, int width, int height,
              const py::dict& look, const py::dict& print, const std::string& assets) {
               const Sized sized = sized_for(print, width, height, true, look);
-              const Still still = make_still(sim, time, collision, sized.look, assets);
+              const Still still = make_still(sim, time, collision, sized.look, assets, sized.width, sized.height);
               std::vector<std::uint8_t> pixels;
               {
                   py::gil_scoped_release release;
@@ -243,11 +222,9 @@ void bind_pictures(py::module_& m) {
               Scenario s = scenario_from(scenario);
               s.path.kind = path_kind(path);
               const VideoFormat format = video_format_for(out);
-              VideoOptions vo = encoder_options(enc, format);
-              SceneOptions scene = common_look(look, assets);
-              const std::optional<double> zoom = zoom_of(look);
-              if (get(look, "follow_head", false)) scene.camera = Camera::follow(zoom.value_or(12.0));
-              else if (zoom) scene.camera = Camera::at({0.0, 0.0}, *zoom);
+              const LookRequest asked = look_request(look);
+              VideoOptions vo = encoder_options(enc, format, asked.speed_colours);
+              const SceneOptions scene = clip_scene_options(asked, assets);
               ClipRequest request;
               if (!from.is_none()) request.from = py::str(from).cast<std::string>();
               if (!to.is_none()) request.to = py::str(to).cast<std::string>();
@@ -264,6 +241,7 @@ void bind_pictures(py::module_& m) {
                   const ClipPlan plan = plan_clip(sim, request, {"from_", "to"});
                   film_look.events = plan.events;
                   const Animation anim(sim, plan.clip, vo.fps, scene, plan.end_mark, film_look);
+                  if (asked.zoom) require_zoom_resolves(anim, vo.width, vo.height, *asked.zoom);
                   VideoOptions o = vo;
                   o.executor = &ex;
                   return write_video(anim, out, o, frame_progress(report));

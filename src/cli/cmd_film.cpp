@@ -66,12 +66,13 @@ void register_film(CLI::App& app, Registry& reg) {
         const VideoFormat format = poster ? VideoFormat::mp4 : video_format_for(opt->out);
         if (poster && (opt->crf || opt->preset || opt->tune || opt->colours))
             throw InputError("--crf, --preset, --tune and --colours are not allowed for a .png: they set a film's encoding");
-        if (format != VideoFormat::mp4 && (opt->preset || opt->tune))
-            throw InputError(fmt::format("--{} is not allowed for .{}: it is libx264's, for .mp4", opt->preset ? "preset" : "tune",
-                                         to_string(format)));
-        if (format != VideoFormat::gif && opt->colours)
-            throw InputError(fmt::format("--colours {} is not allowed for .{}: it sets a GIF's palette", *opt->colours,
-                                         to_string(format)));
+        EncoderRequest encoder;  // the storyboard's size and rate are filled in below
+        encoder.crf = opt->crf;
+        encoder.preset = opt->preset;
+        encoder.tune = opt->tune;
+        encoder.colours = opt->colours;
+        // Options of another format's encoder are refused before the storyboard is read.
+        if (!poster) encoder_options(encoder, format);
         Storyboard board = load_storyboard(opt->story, asset_dir());
         if (!opt->size.empty()) {
             const PictureSize size = parse_picture_size(opt->size, kMaxVideoSide);
@@ -90,15 +91,15 @@ void register_film(CLI::App& app, Registry& reg) {
             board.film.width = layout.width_px, board.film.height = layout.height_px;
             board.film.text_px = layout.text_px;
         }
-        vo.width = board.film.width;
-        vo.height = board.film.height;
-        vo.fps = board.film.fps;
+        encoder.width = board.film.width;
+        encoder.height = board.film.height;
+        encoder.fps = board.film.fps;
+        if (poster) {  // one PNG: only the film's size and rate matter to it
+            vo.width = encoder.width, vo.height = encoder.height, vo.fps = encoder.fps;
+        } else {
+            vo = encoder_options(encoder, format);
+        }
         vo.executor = &ex;
-        vo.crf = opt->crf;
-        if (opt->preset) vo.preset = *opt->preset;
-        if (opt->tune) vo.tune = *opt->tune;
-        if (opt->colours) vo.colours = *opt->colours;
-        if (!poster) validate(vo, format);
         { AtomicFile probe(opt->out); }  // an unwritable path fails here, before any work
         const Film film(board);
         if (poster) {

@@ -18,6 +18,7 @@
 #include "wording.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/clip_plan.hpp"
+#include "dragon/look.hpp"
 #include "dragon/path.hpp"
 #include "dragon/picture_size.hpp"
 #include "dragon/render.hpp"
@@ -38,9 +39,8 @@ struct VideoCliOptions {
     std::optional<double> hold;
     std::string size = "1280x720";
     std::optional<int> crf;
-    std::string preset = VideoOptions{}.preset;
-    std::string tune = VideoOptions{}.tune;
-    int threads = 0;
+    std::optional<std::string> preset, tune;
+    std::optional<int> threads;
     std::optional<int> colours;
     bool follow_head = false;
     std::optional<double> zoom;
@@ -72,7 +72,7 @@ void register_video(CLI::App& app, Registry& reg) {
     sub->add_option("--crf", opt->crf,
                     fmt::format("Quality, lower is better: H.264 0-51 (default {}), VP9 0-63 (default {}); not for GIF",
                                 kDefaultCrf.h264, kDefaultCrf.vp9));
-    sub->add_option("--preset", opt->preset, "libx264 preset, ultrafast .. veryslow (default faster: with tune animation, "
+    sub->add_option("--preset", opt->preset, "libx264 preset (.mp4), ultrafast .. veryslow (default faster: with tune animation, "
                                          "8 reference frames and subme 2 over it, which suit the dragon; any other "
                                          "is x264's own; ultrafast encodes ~2x faster into ~5x larger files)");
     sub->add_option("--tune", opt->tune, "libx264 tune: animation (default, for line art), film, stillimage, "
@@ -96,40 +96,31 @@ void register_video(CLI::App& app, Registry& reg) {
         // Everything that can be checked without simulating first, so bad options fail at once
         // and leave no file.
         const VideoFormat format = video_format_for(opt->out);
-        VideoOptions vo;
         // (--width is the scenario's board width, so the picture's size is an option of its own.)
         const PictureSize size = parse_picture_size(opt->size, kMaxVideoSide);
-        vo.width = size.width;
-        vo.height = size.height;
-        vo.fps = opt->fps;
-        vo.crf = opt->crf;
-        vo.preset = opt->preset;
-        vo.tune = opt->tune;
-        vo.threads = opt->threads;
+        EncoderRequest encoder;
+        encoder.width = size.width;
+        encoder.height = size.height;
+        encoder.fps = opt->fps;
+        encoder.crf = opt->crf;
+        encoder.preset = opt->preset;
+        encoder.tune = opt->tune;
+        encoder.threads = opt->threads;
+        encoder.colours = opt->colours;
+        encoder.speed_colours = opt->colour_by_speed;
+        VideoOptions vo = encoder_options(encoder, format);
         vo.executor = &ex;
-        vo.colours = opt->colours.value_or(opt->colour_by_speed ? 256 : VideoOptions{}.colours);
-        validate(vo, format);
-        // Options of the other formats' encoders would do nothing.
-        if (format != VideoFormat::mp4 && sub->count("--preset") > 0)
-            throw InputError(fmt::format("--preset {} is not allowed for .{}: it is libx264's, for .mp4", opt->preset,
-                                         to_string(format)));
-        if (format != VideoFormat::mp4 && sub->count("--tune") > 0)
-            throw InputError(fmt::format("--tune {} is not allowed for .{}: it is libx264's, for .mp4", opt->tune,
-                                         to_string(format)));
-        if (format != VideoFormat::gif && sub->count("--colours") > 0)
-            throw InputError(fmt::format("--colours {} is not allowed for .{}: it sets a GIF's palette", vo.colours,
-                                         to_string(format)));
-        if (opt->zoom) check_zoom(*opt->zoom);
+        LookRequest look_asked;
+        look_asked.theme = opt->theme;
+        look_asked.lang = opt->lang;
+        look_asked.speed_colours = opt->colour_by_speed;
+        look_asked.guides = !opt->no_guides;
+        look_asked.text = !opt->no_text;
+        look_asked.zoom = opt->zoom;
+        look_asked.follow_head = opt->follow_head;
+        const SceneOptions scene = clip_scene_options(look_asked, asset_dir());
         { AtomicFile probe(opt->out); }  // an unwritable path fails here, before any work
         const Scenario s = opt->scenario.resolve();
-        SceneOptions scene;
-        scene.theme = load_theme(opt->theme, asset_dir());
-        scene.language = parse_language(opt->lang);
-        scene.colour_by_speed = opt->colour_by_speed;
-        scene.show_guides = scene.show_turning_space = !opt->no_guides;
-        scene.show_text = !opt->no_text;
-        if (opt->follow_head) scene.camera = Camera::follow(opt->zoom.value_or(12.0));
-        else if (opt->zoom) scene.camera = Camera::at({0.0, 0.0}, *opt->zoom);
 
         const Simulation sim(s);
         const ClipPlan plan =
@@ -140,10 +131,7 @@ void register_video(CLI::App& app, Registry& reg) {
         look.inset = !opt->no_inset;
         look.events = plan.events;
         const Animation anim(sim, clip, vo.fps, scene, plan.end_mark, look);
-        // A followed head is furthest from the origin at an end of the clip.
-        if (opt->zoom)
-            for (int index : {0, anim.distinct_frames() - 1})
-                require_zoom_resolves(anim.scene_at(index), vo.width, vo.height, *opt->zoom);
+        if (opt->zoom) require_zoom_resolves(anim, vo.width, vo.height, *opt->zoom);
 
         quiet_codec_logs();
         const EncodeStats stats = [&] {

@@ -31,7 +31,7 @@ bool has_flag(Key key) {
         case Key::lang: case Key::width_in: case Key::font_pt: case Key::dpi: case Key::plot: case Key::fps:
         case Key::speedup: case Key::hold: case Key::at: case Key::crf_h264: case Key::crf_vp9: case Key::crf_gif:
         case Key::preset: case Key::tune: case Key::colours: case Key::threads: case Key::film_frame_count:
-        case Key::tables:
+        case Key::tables: case Key::zoom: case Key::centre:
             return true;
         default: return false;
     }
@@ -53,7 +53,7 @@ std::string qualifier(Key key) {
 bool takes_flag(Key key) {
     if (has_flag(key) || key_info(key).scenario != 0) return true;
     switch (key) {
-        case Key::path: case Key::zoom: case Key::centre: case Key::collision: case Key::only: case Key::out:
+        case Key::path: case Key::collision: case Key::only: case Key::out:
         case Key::width_cm: case Key::video_size:
             return true;
         default: return false;

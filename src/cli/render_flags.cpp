@@ -1,28 +1,12 @@
 #include "asset_dir.hpp"
 #include "render_flags.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
 
 #include "dragon/picture_size.hpp"
 #include "dragon/scenario.hpp"
 
 namespace dragon::cli {
-
-void check_zoom(double zoom) {
-    if (!(zoom >= kMinViewExtent && zoom <= kMaxViewExtent))
-        throw InputError(fmt::format("--zoom {} is not allowed: give the view's width in metres, {:g}..{:g}", zoom,
-                                     kMinViewExtent, kMaxViewExtent));
-}
-
-void require_zoom_resolves(const Scene& scene, int w, int h, double zoom) {
-    const Vec2 c = scene.view_centre;
-    if (check_view(c, scene.view_width, scene.view_height, w, h) == ViewError::none) return;
-    throw InputError(fmt::format("--zoom {} is not allowed about ({:g}, {:g}) at {}x{} px: doubles cannot resolve "
-                                 "its pixels there; use --zoom {:.3g} or more",
-                                 zoom, c.x(), c.y(), w, h, narrowest_view(c, w, h)));
-}
 
 void add_language_flag(CLI::App* sub, std::string& lang) {
     sub->add_option("--lang", lang, "Language of the words drawn: en (default) or zh (Chinese: 龙头, 龙身, 龙尾, 把手, "
@@ -51,28 +35,22 @@ std::pair<int, int> RenderFlags::size() const {
     return {size.width, size.height};
 }
 
-SceneOptions RenderFlags::scene_options() const {
-    SceneOptions so;
-    so.theme = load_theme(theme_, asset_dir());
-    so.colour_by_speed = speed_colours_;
-    so.show_guides = so.show_turning_space = !no_guides_;
-    so.show_text = !no_text_;
-    so.annotation = annotation_;
-    so.show_legend = legend_;
-    so.show_inset = inset_;
-    so.language = language();
-    if (zoom_) check_zoom(*zoom_);
-    if (!centre_.empty() && !zoom_) throw InputError("--centre needs --zoom (the width of the view in metres)");
-    for (double c : centre_)
-        if (!(std::abs(c) <= kMaxViewCentre))
-            throw InputError(fmt::format("--centre {} {} is not allowed: give x y in metres, each within \u00b1{:g}",
-                                         centre_[0], centre_[1], kMaxViewCentre));
-    if (zoom_) {
-        if (!centre_.empty()) so.camera = Camera::at({centre_[0], centre_[1]}, *zoom_);
-        else so.camera = Camera::follow(*zoom_);
-    }
-    if (follow_head_ && !zoom_) so.camera = Camera::follow(20.0);
-    return so;
+LookRequest RenderFlags::request() const {
+    LookRequest look;
+    look.theme = theme_;
+    look.lang = lang_;
+    look.speed_colours = speed_colours_;
+    look.guides = !no_guides_;
+    look.text = !no_text_;
+    look.annotation = annotation_;
+    look.legend = legend_;
+    look.inset = inset_;
+    look.zoom = zoom_;
+    if (centre_.size() == 2) look.centre = Vec2(centre_[0], centre_[1]);
+    look.follow_head = follow_head_;
+    return look;
 }
+
+SceneOptions RenderFlags::scene_options() const { return picture_scene_options(request(), asset_dir()); }
 
 }  // namespace dragon::cli

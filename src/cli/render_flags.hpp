@@ -10,16 +10,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "dragon/render.hpp"
+#include "dragon/look.hpp"
 
 namespace dragon::cli {
-
-// --zoom as given: a finite width within kMinViewExtent..kMaxViewExtent (InputError naming it).
-void check_zoom(double zoom);
-// The view a --zoom ended up with (about the head, the contact or --centre), at this picture
-// size: InputError naming --zoom, the centre and the narrowest zoom allowed there, unless
-// doubles resolve its pixels.
-void require_zoom_resolves(const Scene& scene, int width_px, int height_px, double zoom);
 
 // --lang en|zh on `sub`, into `lang` (checked by parse_language: InputError "language").
 void add_language_flag(CLI::App* sub, std::string& lang);
@@ -29,6 +22,8 @@ public:
     void add_to(CLI::App* sub, bool with_view = true);
     // Size in pixels; throws InputError for a malformed --size.
     std::pair<int, int> size() const;
+    // The look asked (the library checks it: dragon/look.hpp).
+    LookRequest request() const;
     // Theme, camera and switches (throws InputError for a bad value).
     SceneOptions scene_options() const;
     const std::string& theme_name() const { return theme_; }

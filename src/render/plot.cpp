@@ -197,7 +197,7 @@ std::optional<Vec2> legend_corner(cairo_t* cr, const Plot& p, const Frame2& f, d
     const double bw = size.x(), bh = size.y();
     const bool left0 = p.legend == Plot::Legend::top_left || p.legend == Plot::Legend::bottom_left;
     const bool top0 = p.legend == Plot::Legend::top_left || p.legend == Plot::Legend::top_right;
-    for (const auto [left, top] : {std::pair{left0, top0}, std::pair{!left0, top0}, std::pair{left0, !top0},
+    for (const auto& [left, top] : {std::pair{left0, top0}, std::pair{!left0, top0}, std::pair{left0, !top0},
                                    std::pair{!left0, !top0}}) {
         const double x = left ? f.x0 + 10 * u : f.x1 - 10 * u - bw, y = top ? f.y0 + 10 * u : f.y1 - 10 * u - bh;
         bool clear = true;

@@ -1,6 +1,5 @@
 // Themes from TOML files, and where the asset folder is.
 #include <cctype>
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <new>
@@ -157,14 +156,13 @@ std::string find_asset_dir(const std::string& hint) {
         return holds_themes(p);
     };
     if (!hint.empty() && consider(hint)) return hint;
-    if (const char* env = std::getenv("DRAGON_ASSETS"); env && *env && consider(env)) return env;
 #ifdef DRAGON_INSTALL_ASSET_DIR
     if (consider(DRAGON_INSTALL_ASSET_DIR)) return DRAGON_INSTALL_ASSET_DIR;
 #endif
     std::string list;
     for (const auto& p : tried) list += (list.empty() ? "" : ", ") + p.string();
     throw FileError(list.empty() ? "(none)" : list, "find the assets in",
-                    "no folder there holds themes/ (name the assets folder, or set DRAGON_ASSETS to it)");
+                    "no folder there holds themes/ (name the assets folder; the dragon tool takes it from $DRAGON_ASSETS)");
 }
 
 Theme load_theme(const std::string& name_or_path, const std::string& asset_dir) {

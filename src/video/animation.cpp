@@ -7,6 +7,7 @@
 
 #include "dragon/scenario.hpp"
 #include "dragon/video.hpp"
+#include "dragon/look.hpp"
 #include "render/backdrop.hpp"
 #include "render/words.hpp"
 
@@ -181,6 +182,10 @@ EncodeStats write_video(const Animation& anim, const std::string& path, VideoOpt
     return encode_frames(path, opt, anim.frame_count(),
                          [&](int index, cairo_t* cr) { anim.paint(index, cr, w, h); }, progress,
                          anim.distinct_frames());
+}
+
+void require_zoom_resolves(const Animation& anim, int width_px, int height_px, double zoom) {
+    for (const int index : {0, anim.distinct_frames() - 1}) require_zoom_resolves(anim.scene_at(index), width_px, height_px, zoom);
 }
 
 }  // namespace dragon

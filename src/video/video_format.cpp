@@ -92,4 +92,26 @@ void validate(const VideoOptions& opt, VideoFormat format) {
         throw InputError(Key::threads, std::to_string(opt.threads), "use 0 (automatic) to 64");
 }
 
+VideoOptions encoder_options(const EncoderRequest& request, VideoFormat format) {
+    const std::string ext = std::string(".") + to_string(format);
+    if (format != VideoFormat::mp4 && request.preset)
+        throw InputError(Key::preset, *request.preset, fmt::format("a preset is libx264's, for .mp4, not {}", ext));
+    if (format != VideoFormat::mp4 && request.tune)
+        throw InputError(Key::tune, *request.tune, fmt::format("a tune is libx264's, for .mp4, not {}", ext));
+    if (format != VideoFormat::gif && request.colours)
+        throw InputError(Key::colours, std::to_string(*request.colours),
+                         fmt::format("it sets a GIF's palette, for .gif, not {}", ext));
+    VideoOptions vo;
+    vo.width = request.width;
+    vo.height = request.height;
+    vo.fps = request.fps;
+    vo.crf = request.crf;
+    if (request.preset) vo.preset = *request.preset;
+    if (request.tune) vo.tune = *request.tune;
+    if (request.threads) vo.threads = *request.threads;
+    vo.colours = request.colours.value_or(request.speed_colours ? kSpeedColoursPalette : vo.colours);
+    validate(vo, format);
+    return vo;
+}
+
 }  // namespace dragon

@@ -90,7 +90,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"at_past_the_end", "", "--at 99", "f.png", "--at 99 is not allowed: the film lasts 1.200 s"},
         BadCase{"at_for_a_film", "", "--at 1", "f.mp4", "--at 1 is not allowed for a film"},
         BadCase{"poster_not_png", "", "--at 1", "p.svg", "p.svg has extension '.svg': the frame --at 1 picks is written as a .png"},
-        BadCase{"tune_for_webm", "", "--tune film", "f.webm", "--tune is not allowed for .webm"},
+        BadCase{"tune_for_webm", "", "--tune film", "f.webm", "--tune film is not allowed: a tune is libx264's, for .mp4, not .webm"},
         BadCase{"odd_size", "", "--size 97x64", "f.mp4", "yuv420p, which needs an even width"},
         BadCase{"bad_extension", "", "", "f.avi", "videos are .mp4"},
         BadCase{"missing_storyboard", "MISSING", "", "f.mp4", "nowhere.toml' does not exist"}),

@@ -95,13 +95,13 @@ INSTANTIATE_TEST_SUITE_P(
                       // -1 is no codec's quality: there is no "default" value to give.
                       BadCase{"crf_minus_one", ok + " --crf -1", "a.mp4", "--crf -1 is not allowed for H.264"},
                       BadCase{"crf_for_gif", ok + " --crf 20", "a.gif", "--crf 20 is not allowed for .gif"},
-                      BadCase{"preset_for_webm", ok + " --preset fast", "a.webm", "--preset fast is not allowed for .webm"},
+                      BadCase{"preset_for_webm", ok + " --preset fast", "a.webm", "--preset fast is not allowed: a preset is libx264's, for .mp4, not .webm"},
                       BadCase{"bad_tune", ok + " --tune cartoon", "a.mp4", "--tune cartoon is not allowed"},
-                      BadCase{"tune_for_gif", ok + " --tune film", "a.gif", "--tune film is not allowed for .gif"},
+                      BadCase{"tune_for_gif", ok + " --tune film", "a.gif", "--tune film is not allowed: a tune is libx264's, for .mp4, not .gif"},
                       // 8192x8192 is 262,144 macroblocks: past H.264's largest level; VP9 takes it.
                       BadCase{"beyond_h264_levels", "--size 8192x8192 --fps 5 --to 1", "a.mp4",
                               "H.264 allows at most 139264 macroblocks"},
-                      BadCase{"colours_for_mp4", ok + " --colours 64", "a.mp4", "--colours 64 is not allowed for .mp4"},
+                      BadCase{"colours_for_mp4", ok + " --colours 64", "a.mp4", "--colours 64 is not allowed: it sets a GIF's palette, for .gif, not .mp4"},
                       // A rate the muxer cannot time: refused before it is asked.
                       BadCase{"fps_tiny", "--size 64x48 --fps 1e-9 --to 1", "a.mp4",
                               "--fps 1e-09 is not allowed: use a rate from 0.01 to 240"},

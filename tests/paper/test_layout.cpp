@@ -22,6 +22,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "cli/asset_dir.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "dragon/atomic_file.hpp"
@@ -43,6 +44,7 @@ struct Picture {
 // Runs `dragon ARGS` in this process (the tool's own parsing and commands) with the layout log
 // on; the pictures it drew. Outputs go to the test's scratch folder and are discarded.
 std::vector<Picture> drawn_by(const std::string& args) {
+    dragon::cli::find_tool_assets(nullptr);  // as the tool's main does: its copy beside this build's bin folders
     CLI::App app{"dragon"};
     app.name("dragon");
     app.require_subcommand(1);

@@ -167,3 +167,35 @@ def test_save_refuses_a_name_of_another_format(tmp_path, format):
         assert not name.exists() and list(tmp_path.iterdir()) == []
     pic.save(tmp_path / f"y.{format.upper()}")  # extensions are matched as the tool matches them
     assert (tmp_path / f"y.{format.upper()}").read_bytes() == pic.data
+
+
+# The look and the encoder are the library's requests (dragon/look.hpp, EncoderRequest): the
+# tool and Python refuse the same asks, each naming the same key.
+@pytest.mark.parametrize("flags, keywords, field", [
+    (["--time", "10", "--centre", "1", "2"], {"t": 10, "centre": (1, 2)}, "centre"),
+    (["--time", "10", "--zoom", "1e-12"], {"t": 10, "zoom": 1e-12}, "zoom"),
+    (["--time", "10", "--zoom", "1e-9", "--follow-head"], {"t": 10, "zoom": 1e-9, "follow_head": True}, "zoom"),
+])
+def test_render_refuses_what_the_tool_refuses(dragon, tmp_path, flags, keywords, field):
+    done = dragon("render", *flags, "--size", "1280x720", "-o", str(tmp_path / "x.png"), check=False)
+    assert done.returncode == 2, done.stderr
+    assert f"--{field.replace('_', '-')} " in done.stderr, done.stderr
+    with pytest.raises(bd.InputError) as e:
+        bd.render(size=(1280, 720), **keywords).save(str(tmp_path / "y.png"))
+    assert e.value.field == field
+
+
+@pytest.mark.parametrize("out, flags, keywords, field", [
+    ("v.webm", ["--preset", "fast"], {"preset": "fast"}, "preset"),
+    ("v.gif", ["--tune", "film"], {"tune": "film"}, "tune"),
+    ("v.mp4", ["--colours", "32"], {"colours": 32}, "colours"),
+    ("v.mp4", ["--zoom", "1e-9", "--follow-head"], {"zoom": 1e-9, "follow_head": True}, "zoom"),
+])
+def test_video_refuses_what_the_tool_refuses(dragon, tmp_path, out, flags, keywords, field):
+    done = dragon("video", "--to", "2", *flags, "-o", str(tmp_path / ("tool-" + out)), "-q", check=False)
+    assert done.returncode == 2, done.stderr
+    assert f"--{field.replace('_', '-')} " in done.stderr, done.stderr
+    with pytest.raises(bd.InputError) as e:
+        bd.video(out=str(tmp_path / out), to=2, progress=False, **keywords)
+    assert e.value.field == field
+    assert not (tmp_path / out).exists() and not (tmp_path / ("tool-" + out)).exists()

@@ -1,6 +1,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <stdlib.h>
+
 #include <gtest/gtest.h>
 
 #include "dragon/render.hpp"
@@ -23,10 +25,20 @@ TEST(Theme, LightAndDarkLoadFromTheAssetFolder) {
     EXPECT_GE(dark.speed_ramp.size(), 2u);
 }
 
-TEST(Theme, AssetFolderIsFoundWithoutAHint) {
-    // The source tree (or an install) is found whatever the current directory is.
-    EXPECT_NO_THROW(find_asset_dir());
-    EXPECT_NO_THROW(load_theme("dark"));
+TEST(Theme, TheAssetFolderIsTheCallersNotTheEnvironments) {
+    EXPECT_EQ(find_asset_dir(assets), assets);
+    EXPECT_EQ(load_theme("dark", assets).background.r, load_theme(assets + "/themes/dark.toml").background.r);
+    // $DRAGON_ASSETS is the dragon tool's to read, not the library's: set to the assets here, it
+    // is not where a call without a folder looks (the install tree, absent in a build tree).
+    ::setenv("DRAGON_ASSETS", assets.c_str(), 1);
+    std::string found;
+    try {
+        found = find_asset_dir();
+    } catch (const FileError& e) {
+        EXPECT_EQ(std::string(e.what()).find(assets), std::string::npos) << e.what();
+    }
+    ::unsetenv("DRAGON_ASSETS");
+    EXPECT_NE(found, assets);
 }
 
 TEST(Theme, UnknownNameIsAnInputError) {
