@@ -344,9 +344,10 @@ class Simulation:
         """The chain at time t (s)."""
         return Frame(self._sim.frame(float(t)))
 
-    def frames(self, times: Iterable[float]) -> Frames:
-        """The chain at each of `times` (s), computed in parallel straight into numpy arrays."""
-        return Frames(*self._sim.frames(_as_times(times)), scenario=self.scenario, path=self.path)
+    def frames(self, times: Iterable[float], *, workers: int = 0) -> Frames:
+        """The chain at each of `times` (s), computed in parallel straight into numpy arrays, on
+        `workers` threads (0: one per core) made for the call and joined before it returns."""
+        return Frames(*self._sim.frames(_as_times(times), _workers(workers)), scenario=self.scenario, path=self.path)
 
     def to_pandas(self, times: Iterable[float]):
         """The frames at `times` in the tool's CSV layout: one row per handle per time, columns
@@ -510,38 +511,45 @@ def min_pitch(scenario: Optional[Scenario] = None, *, lo: Optional[float] = None
 
 
 def turnaround(scenario: Optional[Scenario] = None, *, from_: Moment = None, to: Moment = None,
-               clearance: bool = True,
-               progress: Union[bool, Callable[[int, int], None], None] = True) -> TurnaroundResult:
+               clearance: bool = True, progress: Union[bool, Callable[[int, int], None], None] = True,
+               workers: int = 0) -> TurnaroundResult:
     """Q4: the S-curve's design, whether it can be shorter (its length against the radius ratio
     and the entry radius, and whether this dragon can follow each), and over `from_` .. `to`
     (default: 100 m of head travel either side of the turn) its first contact and the smallest
-    clearance before it (``dragon turnaround``; `clearance=False` leaves that check out)."""
+    clearance before it (``dragon turnaround``; `clearance=False` leaves that check out).
+    `workers`: threads the check runs on (0: one per core)."""
+    workers = _workers(workers)
     callback, close = _progress(progress, "samples", "turnaround")
     try:
-        return TurnaroundResult(json.loads(_core._turnaround(_values(scenario), from_, to, bool(clearance), callback)))
+        return TurnaroundResult(json.loads(_core._turnaround(_values(scenario), from_, to, bool(clearance), callback,
+                                                             workers)))
     finally:
         close()
 
 
 def max_speed(scenario: Optional[Scenario] = None, *, limit: float = 2.0, from_: Moment = None,
-              to: Moment = None) -> MaxSpeedResult:
+              to: Moment = None, workers: int = 0) -> MaxSpeedResult:
     """Q5: the largest head speed (m/s) keeping every handle at or under `limit` (m/s) over the
-    turnaround's window (default: 100 m of head travel either side of the turn) (``dragon max-speed``)."""
-    return MaxSpeedResult(json.loads(_core._max_speed(_values(scenario), float(limit), from_, to)))
+    turnaround's window (default: 100 m of head travel either side of the turn) (``dragon max-speed``).
+    `workers`: threads the search runs on (0: one per core)."""
+    return MaxSpeedResult(json.loads(_core._max_speed(_values(scenario), float(limit), from_, to, _workers(workers))))
 
 
 def solve(scenario: Optional[Scenario] = None, out: Union[None, str, os.PathLike] = None, *,
           only: Optional[Sequence[Union[int, str]]] = None, lo: Optional[float] = None, hi: Optional[float] = None,
-          grid: float = 0.0025, limit: float = 2.0, from_: Moment = None, to: Moment = None) -> SolveResult:
+          grid: float = 0.0025, limit: float = 2.0, from_: Moment = None, to: Moment = None,
+          workers: int = 0) -> SolveResult:
     """The contest's five questions (``dragon solve``): the result is summary.json's content. With
     `out`, result1/2/4.xlsx and summary.json are written there too, all new or all as they were.
     `only` picks questions (``[1, 4]`` or ``["q1", "q4"]``); `lo`, `hi`, `grid` are Q3's range
-    and scan, `limit` Q5's, `from_`/`to` the window of Q4's table and Q5's search."""
+    and scan, `limit` Q5's, `from_`/`to` the window of Q4's table and Q5's search; `workers` the
+    threads it runs on (0: one per core)."""
+    workers = _workers(workers)
     questions = []
     for q in only or []:
         questions.append(int(q[1:]) if isinstance(q, str) and q[:1] in "qQ" else int(q))
     text = _core._solve(_values(scenario), None if out is None else os.fspath(out), questions, lo, hi, float(grid),
-                        float(limit), from_, to)
+                        float(limit), from_, to, workers)
     return SolveResult(json.loads(text))
 
 
@@ -645,7 +653,7 @@ def video(scenario: Optional[Scenario] = None, out: Union[str, os.PathLike] = "d
           colours: Optional[int] = None, follow_head: bool = False,
           zoom: Optional[float] = None, theme: str = "light", speed_colours: bool = False, guides: bool = True,
           text: bool = True, legend: bool = True, inset: bool = True, lang: str = "en",
-          progress: Union[bool, Callable[[int, int], None], None] = True) -> dict:
+          progress: Union[bool, Callable[[int, int], None], None] = True, workers: int = 0) -> dict:
     """A film of the motion (``dragon video``) written to `out` (.mp4 H.264, .webm VP9 or .gif),
     all-or-nothing; returns what was written (frames, seconds, size, fps, encode_seconds).
 
@@ -658,8 +666,10 @@ def video(scenario: Optional[Scenario] = None, out: Union[str, os.PathLike] = "d
     preset "faster" and tune "animation" for .mp4, a palette of 64 colours for .gif, 256 with
     `speed_colours`; a preset or tune for .webm or .gif, or colours for a video, is refused as
     the tool refuses it); `zoom` needs pixels doubles resolve, as the tool's; `lang` ("en" or "zh") the
-    language of its captions, clock and legend. Ctrl-C stops it within a frame, leaving no file.
+    language of its captions, clock and legend; `workers` the threads that draw its frames (0:
+    one per core). Ctrl-C stops it within a frame, leaving no file.
     """
+    workers = _workers(workers)
     width, height = _picture_size(size)
     encoder = {"width": width, "height": height, "fps": float(fps), "crf": crf, "preset": preset, "tune": tune,
                "threads": threads, "colours": colours}
@@ -668,7 +678,7 @@ def video(scenario: Optional[Scenario] = None, out: Union[str, os.PathLike] = "d
     callback, close = _progress(progress, "frames", "video")
     try:
         return _core._video(_values(scenario), path, os.fspath(out), from_, to, float(speedup), hold, encoder, look,
-                            ASSETS, callback)
+                            ASSETS, callback, workers)
     finally:
         close()
 
@@ -676,11 +686,13 @@ def video(scenario: Optional[Scenario] = None, out: Union[str, os.PathLike] = "d
 def film(storyboard: Union[str, os.PathLike], out: Union[str, os.PathLike], *, at: Optional[float] = None,
          size: Optional[Sequence[int]] = None, fps: Optional[float] = None, crf: Optional[int] = None,
          preset: Optional[str] = None, tune: Optional[str] = None, colours: Optional[int] = None,
-         progress: Union[bool, Callable[[int, int], None], None] = True) -> dict:
+         progress: Union[bool, Callable[[int, int], None], None] = True, workers: int = 0) -> dict:
     """A storyboard's shots assembled into one film (``dragon film``): `out` is .mp4, .webm or
     .gif, or .png with `at` (s into the film) for one poster frame. `size` (width, height) and
     `fps` override the storyboard's [film] settings; `crf`, `preset`, `tune`, `colours` are the
-    encoder's. Storyboards are TOML (see ``ASSETS/films/contest.toml``)."""
+    encoder's; `workers` the threads that draw its frames (0: one per core). Storyboards are TOML
+    (see ``ASSETS/films/contest.toml``)."""
+    workers = _workers(workers)
     encoder = {"crf": crf}
     if preset is not None:
         encoder["preset"] = preset
@@ -691,7 +703,7 @@ def film(storyboard: Union[str, os.PathLike], out: Union[str, os.PathLike], *, a
     dims = None if size is None else _picture_size(size)
     callback, close = _progress(progress, "frames", "film")
     try:
-        return _core._film(os.fspath(storyboard), os.fspath(out), dims, fps, at, encoder, ASSETS, callback)
+        return _core._film(os.fspath(storyboard), os.fspath(out), dims, fps, at, encoder, ASSETS, callback, workers)
     finally:
         close()
 

@@ -55,7 +55,7 @@ void bind_answers(py::module_& m) {
 
     m.def("_turnaround",
           [](const py::dict& scenario, const py::object& from, const py::object& to, bool clearance,
-             const py::object& progress) {
+             const py::object& progress, int workers) {
               Scenario s = scenario_from(scenario);
               s.path.kind = PathKind::turnaround;
               const RunWindow window = window_from(kTurnaroundWindow, from, to);
@@ -65,25 +65,28 @@ void bind_answers(py::module_& m) {
                   std::optional<RunClearance> clear;
                   if (clearance) clear = min_clearance(s, window, report, &ex);
                   return json_text(turnaround_answer(st.design, st.design_jam, clear, &st));
-              });
+              }, workers_from(workers));
           },
-          py::arg("scenario"), py::arg("from_"), py::arg("to"), py::arg("clearance"), py::arg("progress"));
+          py::arg("scenario"), py::arg("from_"), py::arg("to"), py::arg("clearance"), py::arg("progress"),
+          py::arg("workers"));
 
     m.def("_max_speed",
-          [](const py::dict& scenario, double limit, const py::object& from, const py::object& to) {
+          [](const py::dict& scenario, double limit, const py::object& from, const py::object& to, int workers) {
               Scenario s = scenario_from(scenario);
               s.path.kind = PathKind::turnaround;
               const RunWindow window = window_from(kTurnaroundWindow, from, to);
               return interruptible(
-                  [&](Executor& ex) { return json_text(max_speed_answer(max_head_speed(s, limit, window, &ex), limit)); });
+                  [&](Executor& ex) { return json_text(max_speed_answer(max_head_speed(s, limit, window, &ex), limit)); },
+                  workers_from(workers));
           },
-          py::arg("scenario"), py::arg("limit"), py::arg("from_"), py::arg("to"));
+          py::arg("scenario"), py::arg("limit"), py::arg("from_"), py::arg("to"), py::arg("workers"));
 
     // The contest's questions; with `out`, its files as `dragon solve -o out` writes them (all new
     // or all as they were). Returns summary.json's text.
     m.def("_solve",
           [](const py::dict& scenario, const py::object& out, const std::vector<int>& only, const py::object& lo,
-             const py::object& hi, double grid, double limit, const py::object& from, const py::object& to) {
+             const py::object& hi, double grid, double limit, const py::object& from, const py::object& to,
+             int workers) {
               const Scenario s = scenario_from(scenario);
               ContestOptions o;
               if (!only.empty()) {
@@ -129,10 +132,10 @@ void bind_answers(py::module_& m) {
                       commit_together(set);
                   }
                   return text;
-              });
+              }, workers_from(workers));
           },
           py::arg("scenario"), py::arg("out"), py::arg("only"), py::arg("lo"), py::arg("hi"), py::arg("grid"),
-          py::arg("limit"), py::arg("from_"), py::arg("to"));
+          py::arg("limit"), py::arg("from_"), py::arg("to"), py::arg("workers"));
 }
 
 }  // namespace dragon::python

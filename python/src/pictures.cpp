@@ -218,7 +218,7 @@ void bind_pictures(py::module_& m) {
     m.def("_video",
           [](const py::dict& scenario, const std::string& path, const std::string& out, const py::object& from,
              const py::object& to, double speedup, const py::object& hold, const py::dict& enc, const py::dict& look,
-             const std::string& assets, const py::object& progress) {
+             const std::string& assets, const py::object& progress, int workers) {
               Scenario s = scenario_from(scenario);
               s.path.kind = path_kind(path);
               const VideoFormat format = video_format_for(out);
@@ -245,15 +245,17 @@ void bind_pictures(py::module_& m) {
                   VideoOptions o = vo;
                   o.executor = &ex;
                   return write_video(anim, out, o, frame_progress(report));
-              });
+              }, workers_from(workers));
               return stats_dict(stats, vo);
           },
           py::arg("scenario"), py::arg("path"), py::arg("out"), py::arg("from_"), py::arg("to"), py::arg("speedup"),
-          py::arg("hold"), py::arg("encoder"), py::arg("look"), py::arg("assets"), py::arg("progress"));
+          py::arg("hold"), py::arg("encoder"), py::arg("look"), py::arg("assets"), py::arg("progress"),
+          py::arg("workers"));
 
     m.def("_film",
           [](const std::string& storyboard, const std::string& out, const py::object& size, const py::object& fps,
-             const py::object& at, const py::dict& enc, const std::string& assets, const py::object& progress) {
+             const py::object& at, const py::dict& enc, const std::string& assets, const py::object& progress,
+             int workers) {
               const bool poster = !at.is_none();
               Storyboard board = load_storyboard(storyboard, assets);
               if (!size.is_none()) {
@@ -292,13 +294,13 @@ void bind_pictures(py::module_& m) {
                   VideoOptions o = vo;
                   o.executor = &ex;
                   return Made{write_film(film, out, o, frame_progress(report)), film.spans().size()};
-              });
+              }, workers_from(workers));
               py::dict d = stats_dict(made.stats, vo);
               d["shots"] = made.shots;
               return d;
           },
           py::arg("storyboard"), py::arg("out"), py::arg("size"), py::arg("fps"), py::arg("at"), py::arg("encoder"),
-          py::arg("assets"), py::arg("progress"));
+          py::arg("assets"), py::arg("progress"), py::arg("workers"));
 }
 
 }  // namespace dragon::python

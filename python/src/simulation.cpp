@@ -105,7 +105,7 @@ void bind_simulation(py::module_& m) {
         // The frames at `times` straight into new arrays (each frame copied once, on the worker
         // that made it): times (T,), positions (T, H, 2), speeds (T, H).
         .def("frames",
-             [](const Simulation& sim, py::array_t<double, py::array::c_style | py::array::forcecast> times) {
+             [](const Simulation& sim, py::array_t<double, py::array::c_style | py::array::forcecast> times, int workers) {
                  if (times.ndim() != 1) throw InputError(Key::times, fmt::format("an array of {} dimensions", times.ndim()),
                                                          "give a sequence of times in seconds");
                  const std::vector<double> ts(times.data(), times.data() + times.size());
@@ -124,12 +124,12 @@ void bind_simulation(py::module_& m) {
                              vk[i] = f.handles[i].speed;
                          }
                      }, &ex);
-                 });
+                 }, workers_from(workers));
                  py::array_t<double> copy(count);
                  std::copy(ts.begin(), ts.end(), copy.mutable_data());
                  return py::make_tuple(copy, pos, speed);
              },
-             py::arg("times"))
+             py::arg("times"), py::arg("workers") = 0)
         .def("time_of", &Simulation::time_of, py::arg("travel"))
         .def("travel", &Simulation::travel, py::arg("t"));
 }

@@ -74,3 +74,27 @@ def test_workers_choose_the_threads_not_the_answer():
     with pytest.raises(bd.InputError) as e:
         bd.collide(workers=-1)
     assert e.value.field == "workers"
+
+
+@pytest.mark.parametrize("call", [
+    lambda w: bd.turnaround(to="20m", progress=False, workers=w).to_dict(),
+    lambda w: bd.max_speed(from_="-20m", to="20m", workers=w).to_dict(),
+    lambda w: bd.solve(only=[2], workers=w).to_dict(),
+    lambda w: bd.Simulation().frames([0.0, 100.0, 300.5], workers=w).positions.tolist(),
+], ids=["turnaround", "max_speed", "solve", "frames"])
+def test_every_parallel_call_takes_workers_and_gives_one_answer(call):
+    assert call(1) == call(2) == call(0)
+    for bad in (-1, 1025, True, 1.5):
+        with pytest.raises(bd.InputError) as e:
+            call(bad)
+        assert e.value.field == "workers"
+
+
+def test_films_take_workers(tmp_path):
+    one = bd.video(out=str(tmp_path / "a.gif"), to=1, size=(64, 48), progress=False, workers=1)
+    two = bd.video(out=str(tmp_path / "b.gif"), to=1, size=(64, 48), progress=False, workers=2)
+    assert one["frames"] == two["frames"]
+    assert (tmp_path / "a.gif").read_bytes() == (tmp_path / "b.gif").read_bytes()
+    with pytest.raises(bd.InputError) as e:
+        bd.film(os.path.join(bd.ASSETS, "films", "contest.toml"), str(tmp_path / "c.png"), at=1.0, workers=-1)
+    assert e.value.field == "workers"
