@@ -21,6 +21,7 @@ test_packages=(
   poppler-utils ffmpeg
   clang libclang-rt-14-dev
   doxygen                 # the API reference of include/, built in CI (scripts/api-docs.sh)
+  ccache                  # the component builds (scripts/test-core-only.sh) reuse the main build's objects
   # The Python package (pybind11) and its tests, sweeps on Dask, the notebook run by nbconvert,
   # and pip install . offline (setuptools and wheel from Debian).
   python3-dev pybind11-dev python3-numpy python3-pandas python3-pytest python3-hypothesis

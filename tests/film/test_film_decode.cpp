@@ -9,8 +9,10 @@
 
 #include "render/cairo_handles.hpp"
 #include "dragon/film.hpp"
+#include "dragon/look.hpp"
+#include "dragon/picture_bytes.hpp"
+#include "dragon/still.hpp"
 #include "render/golden.hpp"
-#include "support/cli_run.hpp"
 #include "support/scratch.hpp"
 #include "video/decode.hpp"
 
@@ -55,28 +57,26 @@ inset = false
 split = [{ pitch = 0.5 }, { pitch = 0.6 }]
 )";
 
-test::Rgb png(const std::string& path) {
-    cairo::Surface s(cairo_image_surface_create_from_png(path.c_str()));
-    EXPECT_EQ(cairo_surface_status(s.get()), CAIRO_STATUS_SUCCESS) << path;
-    cairo::Surface argb(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, cairo_image_surface_get_width(s.get()),
-                                                   cairo_image_surface_get_height(s.get())));
-    {
-        cairo::Context cr(cairo_create(argb.get()));
-        cairo_set_source_surface(cr.get(), s.get(), 0, 0);
-        cairo_paint(cr.get());
-    }
-    cairo_surface_flush(argb.get());
-    return test::rgb_from_argb32(cairo_image_surface_get_data(argb.get()), cairo_image_surface_get_width(argb.get()),
-                                 cairo_image_surface_get_height(argb.get()), cairo_image_surface_get_stride(argb.get()));
+// One moment drawn as `dragon render --zoom 20 --centre 0 0 --no-text` draws it (the library's
+// picture request), as a picture: the film layer is checked against the render layer alone.
+test::Rgb rendered(const Scenario& scenario, double t, int w, int h) {
+    LookRequest look;
+    look.zoom = 20.0;
+    look.centre = Vec2(0.0, 0.0);
+    look.text = false;
+    const Simulation sim(scenario);
+    const Still still = still_at(sim, t, picture_scene_options(look, assets));
+    const std::vector<std::uint8_t> rgba = render_rgba(still.scene, w, h);
+    test::Rgb out{w, h, {}};
+    for (std::size_t i = 0; i < rgba.size(); i += 4) out.pixels.insert(out.pixels.end(), rgba.begin() + i, rgba.begin() + i + 3);
+    return out;
 }
 
-// `dragon render` of one moment, as a picture.
-test::Rgb rendered(const std::string& args, int w, int h) {
-    const std::string out = (dragon_test::scratch_dir() / "render.png").string();
-    const auto r = dragon_test::run_dragon(fmt::format("render {} --size {}x{} --zoom 20 --centre 0 0 --no-text -q -o {}",
-                                                       args, w, h, out));
-    EXPECT_EQ(r.code, 0) << r.err;
-    return png(out);
+Scenario on(PathKind path, double pitch = Scenario{}.path.pitch) {
+    Scenario s;
+    s.path.kind = path;
+    s.path.pitch = pitch;
+    return s;
 }
 
 // The left or right part of a picture, `width` pixels wide.
@@ -105,7 +105,7 @@ TEST(FilmDecode, LengthFramesAndEveryShotInItsPlace) {
     EXPECT_EQ(card.frames, frames);
     EXPECT_NEAR(card.duration, frames / 10.0, 0.05);
     EXPECT_EQ(card.width, 192);
-    const test::Rgb scene_a = rendered("--time 100.5", 192, 108);
+    const test::Rgb scene_a = rendered(on(PathKind::spiral), 100.5, 192, 108);
     EXPECT_LT(test::psnr(card.kept, scene_a), 20.0) << "frame 5 is the title card, not the dragon";
 
     // Each shot's frame against `dragon render` of its moment, and of a moment a second off: the
@@ -117,18 +117,18 @@ TEST(FilmDecode, LengthFramesAndEveryShotInItsPlace) {
         EXPECT_GT(r, w + 3.0) << "right " << r << " dB, a second off " << w << " dB";
     };
     // Shot 2, frame 5: t = 100.5 s.
-    expect_shows(test::decode_video(path, 15).kept, scene_a, rendered("--time 101.5", 192, 108));
+    expect_shows(test::decode_video(path, 15).kept, scene_a, rendered(on(PathKind::spiral), 101.5, 192, 108));
     // Shot 3, frame 10: t = -2 + 10 * 0.2 = 0 s on the turnaround.
-    expect_shows(test::decode_video(path, 41).kept, rendered("--path turnaround --time 0", 192, 108),
-                 rendered("--path turnaround --time 1", 192, 108));
+    expect_shows(test::decode_video(path, 41).kept, rendered(on(PathKind::turnaround), 0.0, 192, 108),
+                 rendered(on(PathKind::turnaround), 1.0, 192, 108));
     // Shot 4, frame 5: t = 50.5 s at pitch 0.5 m on the left, 0.6 m on the right, each half as wide
     // less the gap.
     const test::Rgb split = test::decode_video(path, 57).kept;
     const int pane = (192 - 6) / 2;
-    expect_shows(part(split, 0, pane), rendered("--time 50.5 --pitch 0.5", pane, 108),
-                 rendered("--time 51.5 --pitch 0.5", pane, 108));
-    expect_shows(part(split, 192 - pane, pane), rendered("--time 50.5 --pitch 0.6", pane, 108),
-                 rendered("--time 51.5 --pitch 0.6", pane, 108));
+    expect_shows(part(split, 0, pane), rendered(on(PathKind::spiral, 0.5), 50.5, pane, 108),
+                 rendered(on(PathKind::spiral, 0.5), 51.5, pane, 108));
+    expect_shows(part(split, 192 - pane, pane), rendered(on(PathKind::spiral, 0.6), 50.5, pane, 108),
+                 rendered(on(PathKind::spiral, 0.6), 51.5, pane, 108));
     // The two halves differ: not one scene drawn twice.
     EXPECT_LT(test::psnr(part(split, 0, pane), part(split, 192 - pane, pane)), 25.0);
 }

@@ -10,7 +10,7 @@
 
 #include "dragon/render.hpp"
 #include "dragon/sweep_map.hpp"
-#include "support/cli_run.hpp"
+#include "support/shell.hpp"
 #include "support/scratch.hpp"
 
 namespace fs = std::filesystem;
@@ -76,21 +76,6 @@ TEST(Pdf, SvgIsSizedInThePixelsAskedFor) {
     EXPECT_NE(text.find("height=\"1200px\""), std::string::npos) << text.substr(0, 300);
 }
 
-// The command line's way to the same: a close-up of the contact for a paper, with its legend
-// and the inset of the whole dragon.
-TEST(Pdf, RenderWritesAPdfWithItsLegend) {
-    const fs::path pdf = dragon_test::scratch_dir() / "contact.pdf";
-    const auto r = dragon_test::run_dragon("render --collision --zoom 3 --legend --inset --size 800x600 -q -o " +
-                                           pdf.string());
-    ASSERT_EQ(r.code, 0) << r.err;
-    const auto [ok, text] = run("pdftotext " + pdf.string() + " -");
-    ASSERT_TRUE(ok);
-    for (const char* word : {"first contact t = 412.473838 s: benches 1 and 9", "touching benches", "tail"})
-        EXPECT_NE(text.find(word), std::string::npos) << word << " not in: " << text;
-    const auto bad = dragon_test::run_dragon("render --time 1 -o " + (dragon_test::scratch_dir() / "x.eps").string());
-    EXPECT_EQ(bad.code, 2);
-    EXPECT_TRUE(dragon_test::contains(bad.err, "use .png, .svg or .pdf")) << bad.err;
-}
 
 // A sweep's map for a paper: a PDF page with its axes' and panel's words in it; a picture
 // format no surface writes is refused before anything is written.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "support/scratch.hpp"
+#include "support/shell.hpp"
 
 extern char** environ;
 
@@ -51,23 +52,5 @@ inline CliRun run_dragon(const std::string& args, const std::string& prefix = ""
     const int status = std::system(cmd.c_str());  // its own shell: a ulimit in `prefix` ends with it
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
 }
-
-// stdout of a shell command (poppler's tools, say), and whether it succeeded.
-inline std::pair<bool, std::string> shell_output(const std::string& cmd) {
-    std::string out;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return {false, ""};
-    char buf[4096];
-    while (const std::size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
-    return {pclose(p) == 0, out};
-}
-
-inline int count_lines(const std::string& s) {
-    int n = 0;
-    for (char c : s) n += c == '\n';
-    return n;
-}
-
-inline bool contains(const std::string& text, const std::string& word) { return text.find(word) != std::string::npos; }
 
 }  // namespace dragon_test

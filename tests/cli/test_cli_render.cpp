@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/cli_run.hpp"
 #include "support/scratch.hpp"
 
 #include "render/cairo_handles.hpp"
@@ -122,6 +123,22 @@ TEST_F(CliRender, CloseUpsDownToTheNarrowestViewAreDrawn) {
         EXPECT_TRUE(fs::exists(png)) << zoom;
     }
     EXPECT_EQ(run("render --collision --size 400x400 --zoom 1e-6 -o " + (dir / "contact.svg").string()), 0);
+}
+
+// The command line's way to the same: a close-up of the contact for a paper, with its legend
+// and the inset of the whole dragon.
+TEST(Pdf, RenderWritesAPdfWithItsLegend) {
+    const fs::path pdf = dragon_test::scratch_dir() / "contact.pdf";
+    const auto r = dragon_test::run_dragon("render --collision --zoom 3 --legend --inset --size 800x600 -q -o " +
+                                           pdf.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto [ok, text] = dragon_test::shell_output("pdftotext " + pdf.string() + " -");
+    ASSERT_TRUE(ok);
+    for (const char* word : {"first contact t = 412.473838 s: benches 1 and 9", "touching benches", "tail"})
+        EXPECT_NE(text.find(word), std::string::npos) << word << " not in: " << text;
+    const auto bad = dragon_test::run_dragon("render --time 1 -o " + (dragon_test::scratch_dir() / "x.eps").string());
+    EXPECT_EQ(bad.code, 2);
+    EXPECT_TRUE(dragon_test::contains(bad.err, "use .png, .svg or .pdf")) << bad.err;
 }
 
 }  // namespace
