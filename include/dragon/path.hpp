@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "dragon/geometry.hpp"
+#include "dragon/portable_math.hpp"
 
 namespace dragon {
 
@@ -118,7 +119,7 @@ public:
     double theta_of_curvature(double k) const;
     // The tangent's direction angle at theta up to a constant, rad: theta + atan(theta). It grows
     // with theta, and its change between two places is the turning between them.
-    static double tangent_angle(double theta) { return theta + std::atan(theta); }
+    static double tangent_angle(double theta) { return theta + math::atan(theta); }
 
     // Arc length from the centre to theta, and its inverse (safeguarded Newton).
     double length_to(double theta) const;

@@ -20,6 +20,7 @@
 
 #include "dragon/constants.hpp"
 #include "dragon/geometry.hpp"
+#include "dragon/portable_math.hpp"
 
 namespace dragon {
 
@@ -82,7 +83,7 @@ std::optional<double> march_to_chord(Eval eval, Bound bound, const Vec2& q, doub
 struct SpiralPiece {
     double b;
     PieceSample operator()(double u) const {
-        const double c = std::cos(u), s = std::sin(u);
+        const double c = math::cos(u), s = math::sin(u);
         return {{b * u * c, b * u * s}, {b * (c - u * s), b * (s + u * c)}};
     }
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "dragon/portable_math.hpp"
 
 namespace dragon {
 
@@ -36,11 +37,11 @@ Radial radial_extent(const Rect& r, const BenchMotion& m) {
     const double across = std::max(std::abs(cross(r.axis, r.centre)) - r.half_width, 0.0);
     double hi = 0.0;
     for (const Vec2& p : corners(r).p) hi = std::max(hi, norm(p));  // the farthest point is a corner
-    return {std::hypot(along, across), hi, norm(m.v_centre - m.omega * perp(m.centre))};
+    return {math::hypot(along, across), hi, norm(m.v_centre - m.omega * perp(m.centre))};
 }
 
 double max_point_speed(const Rect& r, const BenchMotion& m) {
-    return norm(m.v_centre) + std::abs(m.omega) * std::hypot(r.half_length, r.half_width);
+    return norm(m.v_centre) + std::abs(m.omega) * math::hypot(r.half_length, r.half_width);
 }
 
 }  // namespace dragon

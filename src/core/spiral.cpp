@@ -7,13 +7,14 @@
 #include "dragon/scenario.hpp"
 #include "chord_march.hpp"
 #include "spiral_chord.hpp"
+#include "dragon/portable_math.hpp"
 
 namespace dragon {
 
 Spiral::Spiral(double pitch) : pitch_(pitch), b_(pitch / kTwoPi) {}
 
 double Spiral::length_to(double theta) const {
-    return 0.5 * b_ * (theta * std::sqrt(1.0 + theta * theta) + std::asinh(theta));
+    return 0.5 * b_ * (theta * std::sqrt(1.0 + theta * theta) + math::asinh(theta));
 }
 
 // Inverts length_to by Newton's method on L(theta) - length, L' = b sqrt(1 + theta^2) > 0.
@@ -34,7 +35,7 @@ double Spiral::theta_at_length(double length) const {
 
 Located Spiral::at(Place p) const {
     const double th = p.u;
-    const double c = std::cos(th), s = std::sin(th);
+    const double c = math::cos(th), s = math::sin(th);
     const double r = b_ * th;
     // Travel is towards decreasing theta: tangent = -dP/dtheta / |dP/dtheta|.
     const double inv = 1.0 / std::sqrt(1.0 + th * th);

@@ -12,6 +12,7 @@
 
 #include "dragon/constants.hpp"
 #include "dragon/path.hpp"
+#include "dragon/portable_math.hpp"
 
 namespace dragon::spiral_chord {
 
@@ -65,7 +66,7 @@ inline FirstGuess first_guess(const ChordMemo& memo, double th, double chord, do
         const double x2 = x * x;
         return {2.0 * x * (1.0 + x2 * (1.0 / 6.0 + x2 * (3.0 / 40.0 + x2 * (5.0 / 112.0))))};
     }
-    return {x < 1.0 ? 2.0 * std::asin(x) : 0.5 * kPi};
+    return {x < 1.0 ? 2.0 * math::asin(x) : 0.5 * kPi};
 }
 
 // Halley's result: the angle, the last step, and at the start of that step (began) the cos and
@@ -106,8 +107,8 @@ inline HalleyRoot halley(double th, double k2, FirstGuess guess) {
             sh = sh * cd + ch * sd;
             ch = ch_next;
         } else {
-            ch = std::cos(0.5 * phi);
-            sh = std::sin(0.5 * phi);
+            ch = math::cos(0.5 * phi);
+            sh = math::sin(0.5 * phi);
         }
         const double one_minus_c = 2.0 * sh * sh;
         c = 1.0 - one_minus_c;

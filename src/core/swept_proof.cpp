@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "dragon/geometry.hpp"
+#include "dragon/portable_math.hpp"
 
 namespace dragon::contact {
 
@@ -45,7 +46,7 @@ void enclose(const Rect& r, double d, const HandleSpan& F, const HandleSpan& R, 
             const double j = across * r.half_width / d;
             for (const Vec2& f : fs)
                 for (const Vec2& b : rs) s.v[q++] = cF * f + cR * b + j * perp(f - b);
-            s.radius = std::max(s.radius, std::hypot(cF, j) * F.dilation + std::hypot(cR, j) * R.dilation);
+            s.radius = std::max(s.radius, math::hypot(cF, j) * F.dilation + math::hypot(cR, j) * R.dilation);
         }
     }
     double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
@@ -83,12 +84,12 @@ double chain_gap(const Turning& turning, const BenchSpec& spec, const Frame& f0,
     if (!(tau_a < kRight && tau_b < kRight && tau_m < kRight)) return -INFINITY;
     double links = 0.0;
     for (size_t k = a + 1; k < b; ++k) links += spec.link_length(static_cast<int>(k) + 1);
-    const double chord = b == a + 2 ? links : links * std::cos(tau_m);
+    const double chord = b == a + 2 ? links : links * math::cos(tau_m);
     const Rect& ra = f0.benches[a];
     const Rect& rb = f0.benches[b];
     const double ea = ra.half_length - 0.5 * spec.link_length(static_cast<int>(a) + 1);
     const double eb = rb.half_length - 0.5 * spec.link_length(static_cast<int>(b) + 1);
-    return chord - ea - eb - ra.half_width * std::sin(tau_a) - rb.half_width * std::sin(tau_b);
+    return chord - ea - eb - ra.half_width * math::sin(tau_a) - rb.half_width * math::sin(tau_b);
 }
 
 }  // namespace
@@ -177,11 +178,11 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
                 Vec2* const e = &ws.directions[6 * k];  // their directions, the same at both T
                 if (t == 0) {
                     Vec2* w = e;
-                    w[0] = {std::cos(d_lo), std::sin(d_lo)};
-                    w[1] = {std::cos(d_hi), std::sin(d_hi)};
+                    w[0] = {math::cos(d_lo), math::sin(d_lo)};
+                    w[1] = {math::cos(d_hi), math::sin(d_hi)};
                     for (size_t c = 0; c < 4; ++c) {
                         const double D = c < 2 ? d_lo : d_hi, A = c % 2 == 0 ? a_lo : a_hi;
-                        w[2 + c] = {std::cos(D + A), std::sin(D + A)};
+                        w[2 + c] = {math::cos(D + A), math::sin(D + A)};
                     }
                 }
                 for (size_t c = 0; c < 4; ++c) {
@@ -234,7 +235,7 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
     }
     // Axes of the fixed frame into the turned one, by -theta_0 at the end (0) or the start (1).
     std::array<std::array<double, 2>, 2> turn{};
-    for (size_t e = 0; e < 2 && turned; ++e) turn[e] = {std::cos(head[e]), std::sin(head[e])};
+    for (size_t e = 0; e < 2 && turned; ++e) turn[e] = {math::cos(head[e]), math::sin(head[e])};
     const auto turn_back = [&](const Vec2& v, size_t e) {
         const double c = turn[e][0], sn = turn[e][1];
         return Vec2{c * v.x() + sn * v.y(), -sn * v.x() + c * v.y()};

@@ -7,6 +7,7 @@
 
 #include "dragon/constants.hpp"
 #include "dragon/turnaround.hpp"
+#include "dragon/portable_math.hpp"
 
 namespace dragon {
 
@@ -25,7 +26,7 @@ double sweep(double x) {
     return w;
 }
 
-double angle_of(const Vec2& v) { return std::atan2(v.y(), v.x()); }
+double angle_of(const Vec2& v) { return math::atan2(v.y(), v.x()); }
 
 // Farthest distance from the origin on the arc about c of radius r that starts at angle u0 and
 // sweeps `angle` (sign = direction): |c| + r if the arc passes the direction of c, else 0

@@ -6,6 +6,7 @@
 #include "chord_march.hpp"
 #include "dragon/constants.hpp"
 #include "dragon/turnaround.hpp"
+#include "dragon/portable_math.hpp"
 
 namespace dragon {
 
@@ -23,9 +24,9 @@ constexpr double kJoinSlack = 1e-12;
 
 TurnaroundPath::TurnaroundPath(const SCurve& design)
     : design_(design), coil_in_(design.pitch), length_at_entry_(coil_in_.length_to(design.entry_theta)) {
-    u1_start_ = std::atan2(design_.entry.y() - design_.c1.y(), design_.entry.x() - design_.c1.x());
+    u1_start_ = math::atan2(design_.entry.y() - design_.c1.y(), design_.entry.x() - design_.c1.x());
     u1_end_ = u1_start_ - design_.angle1;
-    u2_start_ = std::atan2(design_.c1.y() - design_.c2.y(), design_.c1.x() - design_.c2.x());
+    u2_start_ = math::atan2(design_.c1.y() - design_.c2.y(), design_.c1.x() - design_.c2.x());
     u2_end_ = u2_start_ + design_.angle2;
 }
 
@@ -51,11 +52,11 @@ Located TurnaroundPath::at(Place p) const {
     switch (p.piece) {
         case 0: return coil_in_.at(p);
         case 1: {
-            const double c = std::cos(p.u), s = std::sin(p.u);
+            const double c = math::cos(p.u), s = math::sin(p.u);
             return {p, design_.c1 + design_.r1 * Vec2{c, s}, {s, -c}};  // clockwise
         }
         case 2: {
-            const double c = std::cos(p.u), s = std::sin(p.u);
+            const double c = math::cos(p.u), s = math::sin(p.u);
             return {p, design_.c2 + design_.r2 * Vec2{c, s}, {-s, c}};  // counter-clockwise
         }
         default: {
@@ -175,7 +176,7 @@ std::optional<Located> TurnaroundPath::behind_on_arc(int piece, const Located& f
         // from is on this circle: the chord subtends 2 asin(d / 2r) at the centre.
         if (chord > 2.0 * r) return std::nullopt;
         psi = u0;
-        beta = 2.0 * std::asin(chord / (2.0 * r));
+        beta = 2.0 * math::asin(chord / (2.0 * r));
     } else {
         const Vec2 w = from.pos - c;
         const double dist = norm(w);
@@ -188,8 +189,8 @@ std::optional<Located> TurnaroundPath::behind_on_arc(int piece, const Located& f
         const double r_minus_x = (chord - e) * (chord + e) / (2.0 * dist);
         const double x = r - r_minus_x;
         const double y2 = r_minus_x * (2.0 * r - r_minus_x);
-        psi = std::atan2(w.y(), w.x());
-        beta = std::atan2(std::sqrt(std::max(y2, 0.0)), x);
+        psi = math::atan2(w.y(), w.x());
+        beta = math::atan2(std::sqrt(std::max(y2, 0.0)), x);
     }
 
     double best = kInf;
@@ -238,7 +239,7 @@ std::optional<Located> TurnaroundPath::behind_on_coil_out(const Located& from, d
     // g summed without cancellation, as in Spiral::behind: phi^2 + 2 theta (theta - phi) (1 - cos phi).
     auto one_minus_cos = [](double c, double s) { return c > 0.0 ? s * s / (1.0 + c) : 1.0 - c; };
     auto g = [th, k2, one_minus_cos](double phi) {
-        return phi * phi + 2.0 * th * (th - phi) * one_minus_cos(std::cos(phi), std::sin(phi)) - k2;
+        return phi * phi + 2.0 * th * (th - phi) * one_minus_cos(math::cos(phi), math::sin(phi)) - k2;
     };
     constexpr double kQuarter = 1.5707963267948966192313216916398;
     const double room = th - tha;
@@ -250,10 +251,10 @@ std::optional<Located> TurnaroundPath::behind_on_coil_out(const Located& from, d
             double lo = 0.0, hi = hi0;
             // Start from the circle of radius ~theta: a chord k subtends 2 asin(k / 2 theta).
             const double k = std::sqrt(k2), rad = std::sqrt(th * th + 1.0);
-            double phi = k < 2.0 * rad ? 2.0 * std::asin(k / (2.0 * rad)) : 0.5 * hi;
+            double phi = k < 2.0 * rad ? 2.0 * math::asin(k / (2.0 * rad)) : 0.5 * hi;
             if (!(phi > lo && phi < hi)) phi = 0.5 * (lo + hi);
             for (int it = 0; it < tol::max_newton; ++it) {
-                const double t2 = th - phi, c = std::cos(phi), s = std::sin(phi);
+                const double t2 = th - phi, c = math::cos(phi), s = math::sin(phi);
                 const double omc = one_minus_cos(c, s);
                 const double gv = phi * phi + 2.0 * th * t2 * omc - k2;
                 if (gv < 0.0) lo = phi; else hi = phi;

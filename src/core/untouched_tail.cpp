@@ -8,6 +8,7 @@
 
 #include "dragon/constants.hpp"
 #include "dragon/path.hpp"
+#include "dragon/portable_math.hpp"
 
 namespace dragon {
 
@@ -24,9 +25,9 @@ constexpr int kMaxTurnsApart = 8;
 
 namespace {
 
-// A lower bound on the double std::sin(x) returns, for 0 < x < 1.6: sin x >= x - x^3 / 6 there,
-// and the slack covers this sum's rounding and libm's (under an ulp each), so that a product
-// with it is never larger than the same product with std::sin(x) (rounding is monotone).
+// A lower bound on the double math::sin(x) returns, for 0 < x < 1.6: sin x >= x - x^3 / 6 there,
+// and the slack covers this sum's rounding and math::sin's (under an ulp each), so that a product
+// with it is never larger than the same product with math::sin(x) (rounding is monotone).
 double sin_below(double x) { return (x - x * x * x / 6.0) * (1.0 - 1e-12); }
 
 // bench_reach with hypot(hole offset, half width), the same for every bench, given.
@@ -55,18 +56,18 @@ std::optional<BenchReach> reach_of(double b, const BenchSpec& spec, int bench, d
     const double scale = rho * (b * rear_last);
     const bool small_angle = span_first > 0.0 && span_first < 1.6;
     const bool far_line = (small_angle && scale * sin_below(span_first) / d > 2.0 * b) ||
-                          scale * std::sin(span_first) / d > 2.0 * b;
+                          scale * math::sin(span_first) / d > 2.0 * b;
     double in = curv * d * d / 8.0, out = curv * o * (d + o) / 2.0;
     if (!far_line) in = out = std::max(in, out);
     const double widen = 1.0 + kSlack;
-    return BenchReach{(in + grad * hw) * widen, (out + grad * hw) * widen, std::asin(corner / seg) * widen};
+    return BenchReach{(in + grad * hw) * widen, (out + grad * hw) * widen, math::asin(corner / seg) * widen};
 }
 
 }  // namespace
 
 std::optional<BenchReach> bench_reach(double b, const BenchSpec& spec, int bench, double front_last, double rear_last,
                                       double span_first) {
-    return reach_of(b, spec, bench, front_last, rear_last, span_first, std::hypot(spec.hole_offset, 0.5 * spec.width));
+    return reach_of(b, spec, bench, front_last, rear_last, span_first, math::hypot(spec.hole_offset, 0.5 * spec.width));
 }
 
 namespace {
@@ -80,7 +81,7 @@ bool coils_in_steadily(const std::vector<double>& first, const std::vector<doubl
         if (!(first[k] >= last[k])) return false;
         if (k + 1 == first.size()) break;
         const double span_last = last[k + 1] - last[k], span_first = first[k + 1] - first[k];
-        if (!(span_last > 0.0 && span_last < 0.5 * std::numbers::pi && (last[k] > 1.0 || last[k] > std::tan(0.5 * span_last))))
+        if (!(span_last > 0.0 && span_last < 0.5 * std::numbers::pi && (last[k] > 1.0 || last[k] > math::tan(0.5 * span_last))))
             return false;
         if (!(span_first > 0.0 && span_first <= span_last * (1.0 + kSlack))) return false;
     }
@@ -124,7 +125,7 @@ int benches_that_may_touch(const Spiral& spiral, const BenchSpec& spec, const Ch
     if (!coils_in_steadily(tf, tl)) return n;
 
     const double b = spiral.b(), pitch = spiral.pitch();
-    const double corner = std::hypot(spec.hole_offset, 0.5 * spec.width);
+    const double corner = math::hypot(spec.hole_offset, 0.5 * spec.width);
     std::vector<BenchReach> reach(handles);  // reach[i] of bench i = 1..n
     for (int i = 1; i <= n; ++i) {
         const size_t k = static_cast<size_t>(i);

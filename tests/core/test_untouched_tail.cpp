@@ -17,6 +17,7 @@
 #include "dragon/analyses.hpp"
 #include "dragon/collision.hpp"
 #include "dragon/path.hpp"
+#include "dragon/portable_math.hpp"
 
 using namespace dragon;
 
@@ -28,7 +29,7 @@ double unwrapped_angle(const Spiral& sp, const Vec2& near, double theta, const V
     // The spiral's angle grows counter-clockwise when a point a little farther out along it
     // lies counter-clockwise of this one.
     const double sense = cross(near, sp.at({0, theta + 1e-3}).pos) > 0.0 ? 1.0 : -1.0;
-    return theta + sense * std::atan2(cross(near, x), dot(near, x));
+    return theta + sense * dragon::math::atan2(cross(near, x), dot(near, x));
 }
 
 BenchSpec wide_short() {
@@ -234,18 +235,18 @@ namespace {
 std::optional<BenchReach> plain_reach(double b, const BenchSpec& spec, int bench, double front_last, double rear_last,
                                       double span_first) {
     const double d = spec.link_length(bench), o = spec.hole_offset, hw = 0.5 * spec.width;
-    const double rho = b * front_last, corner = std::hypot(o, hw);
+    const double rho = b * front_last, corner = dragon::math::hypot(o, hw);
     if (!(rho > 0.5 * d)) return std::nullopt;
     const double seg = std::sqrt(rho * rho - 0.25 * d * d);
     if (!(seg > 2.0 * corner)) return std::nullopt;
     const double line = seg - o, near = seg - corner;
     const double curv = 1.0 / line + b / (line * line);
     const double grad = std::sqrt(1.0 + (b / near) * (b / near));
-    const double h = rho * (b * rear_last) * std::sin(span_first) / d;
+    const double h = rho * (b * rear_last) * dragon::math::sin(span_first) / d;
     double in = curv * d * d / 8.0, out = curv * o * (d + o) / 2.0;
     if (!(h > 2.0 * b)) in = out = std::max(in, out);
     const double widen = 1.0 + 1e-9;
-    return BenchReach{(in + grad * hw) * widen, (out + grad * hw) * widen, std::asin(corner / seg) * widen};
+    return BenchReach{(in + grad * hw) * widen, (out + grad * hw) * widen, dragon::math::asin(corner / seg) * widen};
 }
 
 int plain_benches_that_may_touch(const Spiral& spiral, const BenchSpec& spec, const Frame& first, const Frame& last) {
@@ -263,7 +264,7 @@ int plain_benches_that_may_touch(const Spiral& spiral, const BenchSpec& spec, co
         if (!(tf[k] >= tl[k])) return n;
         if (k + 1 == handles) break;
         const double span_last = tl[k + 1] - tl[k], span_first = tf[k + 1] - tf[k];
-        if (!(span_last > 0.0 && span_last < 0.5 * std::numbers::pi && tl[k] > std::tan(0.5 * span_last))) return n;
+        if (!(span_last > 0.0 && span_last < 0.5 * std::numbers::pi && tl[k] > dragon::math::tan(0.5 * span_last))) return n;
         if (!(span_first > 0.0 && span_first <= span_last * (1.0 + slack))) return n;
     }
     const double b = spiral.b(), pitch = spiral.pitch();

@@ -44,6 +44,7 @@ protected:
     static void SetUpTestSuite() {
         dir_ = new fs::path(dragon_test::scratch_dir() / "data");
         FigureOptions fo;
+        fo.asset_dir = std::string(DRAGON_SOURCE_DIR) + "/assets";  // the library reads no $DRAGON_ASSETS
         fo.scale = kMinFigureScale;
         fo.data = true;
         write_figures(dir_->string(), Scenario{}, fo);

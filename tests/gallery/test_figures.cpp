@@ -25,6 +25,7 @@ namespace {
 std::map<std::string, std::string> figure_texts(const Scenario& s, const std::vector<std::string>& only) {
     std::map<std::string, std::string> said;
     FigureOptions o;
+    o.asset_dir = std::string(DRAGON_SOURCE_DIR) + "/assets";  // the library reads no $DRAGON_ASSETS
     o.scale = kMinFigureScale;  // small pictures: the texts are the same
     o.only = only;
     o.on_text = [&](const std::string& figure, const std::string& text) { said[figure] += text + "\n"; };
@@ -124,6 +125,7 @@ namespace fs = std::filesystem;
 TEST(GalleryPdf, FiguresForPapers) {
     const fs::path dir = dragon_test::scratch_dir() / "figures";
     FigureOptions fo;
+    fo.asset_dir = std::string(DRAGON_SOURCE_DIR) + "/assets";  // the library reads no $DRAGON_ASSETS
     fo.theme = load_theme("light", std::string(DRAGON_SOURCE_DIR) + "/assets");
     fo.format = "pdf";
     fo.only = {"fig4_first_contact", "plot_speeds"};

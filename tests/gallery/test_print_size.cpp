@@ -63,6 +63,7 @@ double size_pt(const Word& w) { return (w.y1 - w.y0) / kDejaVuBoxEm; }
 TEST(PrintSize, EveryFigureAtAColumnsWidthReadsAt8Points) {
     const fs::path dir = dragon_test::scratch_dir() / "column";
     FigureOptions fo;
+    fo.asset_dir = std::string(DRAGON_SOURCE_DIR) + "/assets";  // the library reads no $DRAGON_ASSETS
     fo.format = "pdf";
     fo.print = print_preset("column");
     write_figures(dir.string(), Scenario{}, fo);
@@ -93,6 +94,7 @@ bool overlap(const Word& a, const Word& b) {
 TEST(PrintSize, NoTwoWordsOfAColumnFigureOverlap) {
     const fs::path dir = dragon_test::scratch_dir() / "overlap";
     FigureOptions fo;
+    fo.asset_dir = std::string(DRAGON_SOURCE_DIR) + "/assets";  // the library reads no $DRAGON_ASSETS
     fo.format = "pdf";
     fo.print = print_preset("column");
     write_figures(dir.string(), Scenario{}, fo);
@@ -175,6 +177,7 @@ TEST(ChineseFigures, WordsInChineseSetInACjkFont) {
     const std::filesystem::path dir = dragon_test::scratch_dir() / "zh";
     std::map<std::string, std::string> said;
     FigureOptions fo;
+    fo.asset_dir = std::string(DRAGON_SOURCE_DIR) + "/assets";  // the library reads no $DRAGON_ASSETS
     fo.format = "pdf";
     fo.language = Language::zh;
     fo.only = {"fig4_first_contact", "plot_s_curve", "plot_speeds"};
