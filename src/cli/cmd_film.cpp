@@ -51,7 +51,7 @@ void register_film(CLI::App& app, Registry& reg) {
     sub->add_option("--colours", opt->colours, "GIF palette size, 2-256 (default 64)");
     add_quiet_flag(sub, opt->quiet);
 
-    reg["film"] = [opt](Executor& ex) {
+    reg["film"] = [opt](Executor& ex, RunOutputs& outputs) {
         const bool poster = extension_of(opt->out) == ".png";
         if (poster && !opt->at) throw InputError("--out " + opt->out + " is a picture: give --at SECONDS, the moment of the film it shows");
         if (!poster && opt->at) {
@@ -72,7 +72,7 @@ void register_film(CLI::App& app, Registry& reg) {
         if (format != VideoFormat::gif && opt->colours)
             throw InputError(fmt::format("--colours {} is not allowed for .{}: it sets a GIF's palette", *opt->colours,
                                          to_string(format)));
-        Storyboard board = load_storyboard(opt->story, asset_dir());
+        Storyboard board = load_storyboard(opt->story, asset_dir(), &outputs);
         if (!opt->size.empty()) {
             const PictureSize size = parse_picture_size(opt->size, kMaxVideoSide);
             board.film.width = size.width;
@@ -94,15 +94,16 @@ void register_film(CLI::App& app, Registry& reg) {
         vo.height = board.film.height;
         vo.fps = board.film.fps;
         vo.executor = &ex;
+        vo.outputs = &outputs;
         vo.crf = opt->crf;
         if (opt->preset) vo.preset = *opt->preset;
         if (opt->tune) vo.tune = *opt->tune;
         if (opt->colours) vo.colours = *opt->colours;
         if (!poster) validate(vo, format);
-        { AtomicFile probe(opt->out); }  // an unwritable path fails here, before any work
-        const Film film(board);
+        { AtomicFile probe(opt->out, &outputs); }  // an unwritable path fails here, before any work
+        const Film film(board, &outputs);
         if (poster) {
-            write_film_frame(film, *opt->at, opt->out, print ? print->dpi : 0.0);
+            write_film_frame(film, *opt->at, opt->out, print ? print->dpi : 0.0, &outputs);
             status(opt->quiet, "wrote {}: frame {} of {} ({:.3f} s into the film), {}x{}", opt->out,
                    static_cast<int>(*opt->at * vo.fps), film.frame_count(), *opt->at, vo.width, vo.height);
             return 0;

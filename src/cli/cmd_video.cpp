@@ -92,7 +92,7 @@ void register_video(CLI::App& app, Registry& reg) {
     sub->add_flag("--no-inset", opt->no_inset, "Leave out the small whole-dragon picture of a followed or zoomed view");
     add_quiet_flag(sub, opt->quiet);
 
-    reg["video"] = [opt, sub](Executor& ex) {
+    reg["video"] = [opt, sub](Executor& ex, RunOutputs& outputs) {
         // Everything that can be checked without simulating first, so bad options fail at once
         // and leave no file.
         const VideoFormat format = video_format_for(opt->out);
@@ -107,6 +107,7 @@ void register_video(CLI::App& app, Registry& reg) {
         vo.tune = opt->tune;
         vo.threads = opt->threads;
         vo.executor = &ex;
+        vo.outputs = &outputs;
         vo.colours = opt->colours.value_or(opt->colour_by_speed ? 256 : VideoOptions{}.colours);
         validate(vo, format);
         // Options of the other formats' encoders would do nothing.
@@ -120,10 +121,10 @@ void register_video(CLI::App& app, Registry& reg) {
             throw InputError(fmt::format("--colours {} is not allowed for .{}: it sets a GIF's palette", vo.colours,
                                          to_string(format)));
         if (opt->zoom) check_zoom(*opt->zoom);
-        { AtomicFile probe(opt->out); }  // an unwritable path fails here, before any work
-        const Scenario s = opt->scenario.resolve();
+        { AtomicFile probe(opt->out, &outputs); }  // an unwritable path fails here, before any work
+        const Scenario s = opt->scenario.resolve(&outputs);
         SceneOptions scene;
-        scene.theme = load_theme(opt->theme, asset_dir());
+        scene.theme = load_theme(opt->theme, asset_dir(), &outputs);
         scene.language = parse_language(opt->lang);
         scene.colour_by_speed = opt->colour_by_speed;
         scene.show_guides = scene.show_turning_space = !opt->no_guides;

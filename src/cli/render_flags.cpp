@@ -51,9 +51,9 @@ std::pair<int, int> RenderFlags::size() const {
     return {size.width, size.height};
 }
 
-SceneOptions RenderFlags::scene_options() const {
+SceneOptions RenderFlags::scene_options(RunOutputs* outputs) const {
     SceneOptions so;
-    so.theme = load_theme(theme_, asset_dir());
+    so.theme = load_theme(theme_, asset_dir(), outputs);
     so.colour_by_speed = speed_colours_;
     so.show_guides = so.show_turning_space = !no_guides_;
     so.show_text = !no_text_;
