@@ -151,12 +151,13 @@ struct Storyboard {
 // Reads a storyboard: unknown keys, wrong types, values out of range and more than the limits
 // above are StoryboardErrors naming the shot and key. A shot's scenario is a preset's name (assets/<name>.toml) or a
 // .toml file relative to the storyboard, with the shot's own keys over it. Times are checked
-// against the runs by Film.
-Storyboard load_storyboard(const std::string& path, const std::string& asset_dir = "");
+// against the runs by Film. Given a RunOutputs, the storyboard and the scenario files it names
+// are inputs of that run (dragon/atomic_file.hpp), which none of its outputs may be.
+Storyboard load_storyboard(const std::string& path, const std::string& asset_dir = "", RunOutputs* outputs = nullptr);
 // The same from the file's text: `file` names it in messages, files it names are relative to
 // `base_dir`.
 Storyboard parse_storyboard(const std::string& toml_text, const std::string& file, const std::string& base_dir,
-                            const std::string& asset_dir = "");
+                            const std::string& asset_dir = "", RunOutputs* outputs = nullptr);
 
 // A storyboard resolved against its simulations: every time found (first contacts searched,
 // the turning space and the end of the valid motion located), every frame's moment and camera
@@ -165,7 +166,8 @@ Storyboard parse_storyboard(const std::string& toml_text, const std::string& fil
 // overlap.
 class Film {
 public:
-    explicit Film(const Storyboard& board);  // throws as above
+    // Throws as above. Given a RunOutputs, a theme file the film names is one of its inputs.
+    explicit Film(const Storyboard& board, RunOutputs* outputs = nullptr);
     ~Film();
     Film(const Film&) = delete;
     Film& operator=(const Film&) = delete;
@@ -200,6 +202,7 @@ EncodeStats write_film(const Film& film, const std::string& path, VideoOptions o
 // One frame, the one shown `at` seconds into the film, as a PNG (all-or-nothing), stating `dpi`
 // as its resolution when > 0 (a poster at a print size). A moment outside the film is an
 // InputError ("film moment").
-void write_film_frame(const Film& film, double at, const std::string& path, double dpi = 0);
+void write_film_frame(const Film& film, double at, const std::string& path, double dpi = 0,
+                      RunOutputs* outputs = nullptr);
 
 }  // namespace dragon

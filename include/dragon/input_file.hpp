@@ -1,5 +1,5 @@
 // Reading an input file the user named (a scenario, a sweep file, a storyboard, a theme, a
-// sweep's rows) without trusting it: only a regular file is read (a FIFO would block for ever,
+// sweep's rows) without trusting it (the io component): only a regular file is read (a FIFO would block for ever,
 // /dev/zero never ends), no more than a limit, checked while reading (a file may grow, or lie
 // about its size as /proc files do), and a read that fails is an error naming the file and the
 // reason, never an empty file.
@@ -9,8 +9,11 @@
 #include <string>
 
 #include "dragon/errors.hpp"
+#include "dragon/shown_text.hpp"  // the messages' way with the user's text
 
 namespace dragon {
+
+class RunOutputs;  // dragon/atomic_file.hpp
 
 // The most a TOML input (scenario, sweep file, storyboard, theme) may hold: the largest in
 // assets/ is 3 KiB, so 1 MiB is room for any file written by hand or by a script, and small
@@ -22,9 +25,11 @@ inline constexpr std::size_t kMaxTomlBytes = std::size_t{1} << 20;
 // socket), cannot be opened or read (with the system's reason). Closes it when destroyed.
 class InputFile {
 public:
-    // While a RunOutputs is open, the file is one of the run's inputs, which no output may be;
-    // `output_too`: it is the run's own output, read to be gone on with (a sweep's --resume).
-    InputFile(const std::string& path, std::string what, const char* expected = "a file", bool output_too = false);
+    // Given a RunOutputs (`outputs`), the file is one of that run's inputs, which no output of
+    // the run may be; `output_too`: it is the run's own output, read to be gone on with (a
+    // sweep's --resume). Null: a file read outside any run.
+    InputFile(const std::string& path, std::string what, const char* expected = "a file", bool output_too = false,
+              RunOutputs* outputs = nullptr);
     ~InputFile();
     InputFile(const InputFile&) = delete;
     InputFile& operator=(const InputFile&) = delete;
@@ -45,12 +50,8 @@ private:
     int fd_ = -1;
 };
 
-// The whole of a TOML input file (kMaxTomlBytes at most), as InputFile reads it.
-std::string read_toml_input(const std::string& path, const std::string& what);
-
-// How a message shows text the user gave (a path, a key, a value): control characters escaped
-// (a newline as \n, a NUL as \x00), so that a message stays one line, and text longer than
-// `most` characters cut, saying how long it was.
-std::string shown_text(const std::string& text, std::size_t most = 80);
+// The whole of a TOML input file (kMaxTomlBytes at most), as InputFile reads it (one of the
+// inputs of `outputs`' run, if given).
+std::string read_toml_input(const std::string& path, const std::string& what, RunOutputs* outputs = nullptr);
 
 }  // namespace dragon

@@ -12,6 +12,8 @@
 
 namespace dragon {
 
+class RunOutputs;  // dragon/atomic_file.hpp (the io component)
+
 // A look, as asked. Unset values keep SceneOptions' defaults.
 struct LookRequest {
     std::string theme = "light";  // light, dark, or a .toml file
@@ -43,13 +45,14 @@ void check_zoom(double zoom);
 // instead), else following the head at kFollowedPictureWidth with follow_head, else the whole
 // dragon. Throws InputError naming the key: a zoom out of range, a centre without a zoom or
 // beyond kMaxViewCentre, an unknown theme or language.
-SceneOptions picture_scene_options(const LookRequest& look, const std::string& asset_dir);
+// A theme file is one of the inputs of `outputs`' run (when given).
+SceneOptions picture_scene_options(const LookRequest& look, const std::string& asset_dir, RunOutputs* outputs = nullptr);
 
 // A clip's scene options (dragon video, Python's video): as a picture's, but the camera is
 // fixed on the origin at `zoom` metres, or follows the head at `zoom` (kFollowedClipWidth
 // without one) with follow_head. A centre is refused (Key::centre): a clip's view is the
 // origin's or the head's. The annotation, legend and inset are the clip's own (FilmLook).
-SceneOptions clip_scene_options(const LookRequest& look, const std::string& asset_dir);
+SceneOptions clip_scene_options(const LookRequest& look, const std::string& asset_dir, RunOutputs* outputs = nullptr);
 
 // A zoomed view, at this picture size, whose pixels doubles cannot resolve (check_view's
 // too_fine, far from the origin) is refused: InputError (Key::zoom) naming the centre and the

@@ -14,6 +14,8 @@
 
 namespace dragon {
 
+class RunOutputs;  // dragon/atomic_file.hpp (io): the run a file written below belongs to, if given
+
 // One series of a plot: its points, drawn as a line, as dots or both. Sizes are in the plot's
 // units (plot_unit: px on a 900 x 560 plot).
 struct PlotSeries {
@@ -107,6 +109,7 @@ double plot_unit(const Plot& plot, double w, double h);
 // returns where its data area is.
 PlotArea draw_plot(cairo_t* cr, const Plot& plot, double x, double y, double w, double h);
 // All-or-nothing PNG of one plot.
-void render_plot_png(const Plot& plot, int width_px, int height_px, const std::string& path);
+void render_plot_png(const Plot& plot, int width_px, int height_px, const std::string& path,
+                     RunOutputs* outputs = nullptr);
 
 }  // namespace dragon

@@ -19,6 +19,8 @@
 
 namespace dragon {
 
+class RunOutputs;  // dragon/atomic_file.hpp (io): the run a file written below belongs to, if given
+
 // A colour, components in [0, 1] (straight, not premultiplied).
 struct Rgba {
     double r = 0;  // red
@@ -60,7 +62,7 @@ struct Theme {
 std::string find_asset_dir(const std::string& hint = "");
 // "light", "dark" (assets/themes/<name>.toml) or a path to a .toml file. Keys missing from the
 // file keep the light theme's values. Throws InputError for an unknown name or a bad file.
-Theme load_theme(const std::string& name_or_path, const std::string& asset_dir = "");
+Theme load_theme(const std::string& name_or_path, const std::string& asset_dir = "", RunOutputs* outputs = nullptr);
 
 // What part of the plane the picture shows. The view keeps the aspect ratio: the given extent
 // fits inside the image along both directions (y up, metres).
@@ -288,14 +290,18 @@ void require_drawable(const Scene& scene, int width_px, int height_px);
 // Whole files, written all-or-nothing (AtomicFile). Throw InputError for a bad size or path or
 // a view require_drawable refuses, std::runtime_error if Cairo fails. A PNG states the page's
 // resolution when it has one.
-void render_png(const Scene& scene, int width_px, int height_px, const std::string& path, const Page& page = {});
+void render_png(const Scene& scene, int width_px, int height_px, const std::string& path, const Page& page = {},
+                RunOutputs* outputs = nullptr);
 // SVG in px as asked; PDF in points at 96 px to the inch (1600 px: 1200 pt), fonts embedded
 // and text selectable; with a page, both exactly the page's size in points.
-void render_svg(const Scene& scene, int width_px, int height_px, const std::string& path, const Page& page = {});
-void render_pdf(const Scene& scene, int width_px, int height_px, const std::string& path, const Page& page = {});
+void render_svg(const Scene& scene, int width_px, int height_px, const std::string& path, const Page& page = {},
+                RunOutputs* outputs = nullptr);
+void render_pdf(const Scene& scene, int width_px, int height_px, const std::string& path, const Page& page = {},
+                RunOutputs* outputs = nullptr);
 // The scene at a print size (its width on the page, its text in points; aspect: height over
 // width), in the format of the path's extension (.png at size.dpi, .svg, .pdf). Throws as
 // print_layout and the writers above do.
-void render_print(Scene scene, const PrintSize& size, double aspect, const std::string& path);
+void render_print(Scene scene, const PrintSize& size, double aspect, const std::string& path,
+                  RunOutputs* outputs = nullptr);
 
 }  // namespace dragon

@@ -110,13 +110,12 @@ struct LoadedScenario {
     Scenario scenario;          // the file's values over the base
     ScenarioValues values = 0;  // the values the file set
 };
-// Reads a TOML scenario over `base` (missing keys keep base's values); throws InputError for an
-// unreadable or malformed file (or a folder), an unknown section or key, or a value of the
-// wrong type. Values are not range-checked here: validate() does that for those a computation
-// reads.
-LoadedScenario read_scenario_file(const std::string& path, Scenario base = {});
-// read_scenario_file(path, base).scenario.
-Scenario load_scenario(const std::string& path, Scenario base = {});
+// A TOML scenario's `text` over `base` (missing keys keep base's values), `origin` naming it in
+// messages (its file's path); throws InputError for malformed TOML, an unknown section or key,
+// or a value of the wrong type. Values are not range-checked here: validate() does that for
+// those a computation reads. (read_scenario_file and load_scenario, dragon/input_files.hpp,
+// read a file; the io component.)
+LoadedScenario parse_scenario_toml(const std::string& text, const std::string& origin, Scenario base = {});
 
 // "spiral" or "turnaround".
 const char* to_string(PathKind k);

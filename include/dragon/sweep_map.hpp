@@ -18,6 +18,8 @@
 
 namespace dragon {
 
+class RunOutputs;  // dragon/atomic_file.hpp (io): the run a file written below belongs to, if given
+
 // What a map's cell holds: a value, or why it has none (each kind drawn and keyed apart).
 enum class MapCell : unsigned char {
     value,        // the answer
@@ -84,6 +86,7 @@ void require_map_format(const std::string& path);
 // px per inch, fonts embedded, text selectable); or, given a print size, the map that wide on
 // the page with its text at that size, a PNG at its dpi: its panels a little taller than on
 // screen, without titles or notes (a paper captions its figures).
-void write_sweep_map(const SweepMap& map, const std::string& path, const std::optional<PrintSize>& print = std::nullopt);
+void write_sweep_map(const SweepMap& map, const std::string& path, const std::optional<PrintSize>& print = std::nullopt,
+                     RunOutputs* outputs = nullptr);
 
 }  // namespace dragon

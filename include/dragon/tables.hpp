@@ -13,6 +13,7 @@
 namespace dragon {
 
 class AtomicFile;
+class RunOutputs;  // dragon/atomic_file.hpp: every file below is one of its run's outputs, if given
 
 // The contest's row label of a handle (0..N): 龙头, 第k节龙身, 龙尾, 龙尾（后）.
 std::string handle_label(int handle, int handle_count);
@@ -39,12 +40,14 @@ std::string format_fixed(double v, int digits);
 
 // Long form, header t,handle,x,y,speed; one row per handle per frame; `digits` decimals for
 // every number (the time's trailing zeros dropped: format_time(t, digits)).
-void write_csv(const std::vector<Frame>& frames, const std::string& path, int digits = kDefaultDigits);
+void write_csv(const std::vector<Frame>& frames, const std::string& path, int digits = kDefaultDigits,
+               RunOutputs* outputs = nullptr);
 // The same CSV on an open stream (stdout, say); throws std::runtime_error if it cannot be written.
 void print_csv(const std::vector<Frame>& frames, std::FILE* out, int digits = kDefaultDigits);
 // {"handles": N, "frames": [{"t", "x": [...], "y": [...], "speed": [...]}]}, `digits` decimals
 // as write_csv.
-void write_json(const std::vector<Frame>& frames, const std::string& path, int digits = kDefaultDigits);
+void write_json(const std::vector<Frame>& frames, const std::string& path, int digits = kDefaultDigits,
+                RunOutputs* outputs = nullptr);
 // How a workbook is written (by the library's own xlsx writer on zlib: it prints nothing, shares
 // nothing between workbooks and touches nothing of the process). compression_level is zlib's:
 // 0 stores the parts, 1 (the default) is the fastest, 9 the smallest. Level 1 because deflating
@@ -59,9 +62,11 @@ struct WorkbookOptions {
 inline constexpr std::size_t kMaxWorkbookFrames = 16383;
 // result1.xlsx / result4.xlsx layout: sheets 位置 and 速度, one column per frame (at most
 // kMaxWorkbookFrames; InputError beyond).
-void write_result_xlsx(const std::vector<Frame>& frames, const std::string& path, const WorkbookOptions& options = {});
+void write_result_xlsx(const std::vector<Frame>& frames, const std::string& path, const WorkbookOptions& options = {},
+                       RunOutputs* outputs = nullptr);
 // result2.xlsx layout: Sheet1, one row per handle with x, y and speed.
-void write_result2_xlsx(const Frame& frame, const std::string& path, const WorkbookOptions& options = {});
+void write_result2_xlsx(const Frame& frame, const std::string& path, const WorkbookOptions& options = {},
+                        RunOutputs* outputs = nullptr);
 // The two workbooks into an AtomicFile the caller commits: several files made all new or all
 // old together (see commit_together). Workbooks hold 6 decimals, as the contest's templates,
 // and are the same bytes for the same frames (their creation time is fixed).
@@ -70,7 +75,7 @@ void write_result2_xlsx(const Frame& frame, AtomicFile& out, const WorkbookOptio
 // Picks CSV, JSON or XLSX by the extension; throws InputError for any other. `digits` is for
 // CSV and JSON.
 void write_table(const std::vector<Frame>& frames, const std::string& path, int digits = kDefaultDigits,
-                 const WorkbookOptions& workbook = {});
+                 const WorkbookOptions& workbook = {}, RunOutputs* outputs = nullptr);
 
 
 

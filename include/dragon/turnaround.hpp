@@ -136,9 +136,10 @@ struct TurnaroundStudy {
 // The default study: ratios 0.25..10 and entry radii from the boundary in to half of it, each
 // row with whether this dragon can follow it.
 TurnaroundStudy study_turnaround(const Scenario& s);
-// The study as CSV (header study,ratio,entry_radius,r1,r2,angle,s_curve_length,inside_length,
-// max_radius,followable,jam_time,jam_handle,jam_kind), written all-or-nothing.
-void write_study_csv(const TurnaroundStudy& study, const std::string& path);
+// The study as CSV text (header study,ratio,entry_radius,r1,r2,angle,s_curve_length,
+// inside_length,max_radius,followable,jam_time,jam_handle,jam_kind; one line per row).
+// write_study_csv (dragon/turnaround_csv.hpp, the io component) writes it to a file.
+std::string study_csv(const TurnaroundStudy& study);
 
 // Is the turnaround collision-free, and how close do benches come before they touch? The first
 // contact over a window of the run (as collide finds it over the same window), and the smallest

@@ -20,6 +20,7 @@ namespace dragon {
 namespace render {
 class BackdropCache;  // render/backdrop.hpp, the library's own
 }
+class RunOutputs;  // dragon/atomic_file.hpp (io)
 
 // The container and codec, chosen by the output file's extension.
 enum class VideoFormat {
@@ -91,6 +92,9 @@ struct VideoOptions {
     // workers draw, and the one that finds the next frame drawn encodes it. Null: the
     // calling thread alone. The codec's own threads are `threads`, above.
     Executor* executor = nullptr;
+    // The run the file belongs to (put in place when it commits; see dragon/atomic_file.hpp).
+    // Null: put in place as soon as it is written.
+    RunOutputs* outputs = nullptr;
 };
 // Throws InputError for a size or rate the format cannot take (odd size for yuv420p, fps out
 // of range, an unknown preset, a crf or palette size out of range, a crf for GIF). Its fields:

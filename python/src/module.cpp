@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include "common.hpp"
+#include "dragon/input_files.hpp"
 #include "dragon/scenario.hpp"
 #include "dragon/sweep.hpp"
 

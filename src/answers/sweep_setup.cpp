@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "dragon/input_file.hpp"
+#include "dragon/shown_text.hpp"
 
 namespace dragon {
 

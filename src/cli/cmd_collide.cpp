@@ -49,9 +49,9 @@ std::string proof_words(const ContactProof& p, const Contact* c) {
 
 // With no contact the output file still answers: the table with its header and no rows, so
 // that an older file from another run is never left looking like this one's answer.
-void write_no_contact(const std::string& path) {
-    if (extension_of(path) == ".xlsx") write_result2_xlsx(Frame{}, path, kWorkbooks);
-    else write_table({}, path);
+void write_no_contact(const std::string& path, RunOutputs& outputs) {
+    if (extension_of(path) == ".xlsx") write_result2_xlsx(Frame{}, path, kWorkbooks, &outputs);
+    else write_table({}, path, kDefaultDigits, {}, &outputs);
 }
 }  // namespace
 
@@ -71,18 +71,18 @@ void register_collide(CLI::App& app, Registry& reg) {
                     "the table's header and no rows");
     sub->add_option("--digits", opt->digits, "Decimals of every number of a .csv or .json -o (t without trailing zeros), 0 to 17 (default 6)");
     add_quiet_flag(sub, opt->quiet);
-    reg["collide"] = [opt](Executor& ex) {
+    reg["collide"] = [opt](Executor& ex, RunOutputs& outputs) {
         const std::string ext = extension_of(opt->out);
         if (opt->digits && ext != ".csv" && ext != ".json")
             throw InputError(fmt::format("--digits {} is not allowed {}: it sets the decimals of a .csv or .json -o",
                                          *opt->digits, opt->out.empty() ? "without -o" : "with " + ext));
         const int digits = checked_digits(opt->digits);
-        const Scenario s = opt->scenario.resolve();
+        const Scenario s = opt->scenario.resolve(&outputs);
         const RunWindow window = opt->window.resolve(default_window(s.path.kind));
         if (!opt->out.empty()) {
             if (ext != ".csv" && ext != ".json" && ext != ".xlsx")
                 throw InputError(fmt::format("--out {} has extension '{}': use .csv, .json or .xlsx", opt->out, ext));
-            AtomicFile probe(opt->out);  // fail on an unwritable path before any work
+            AtomicFile probe(opt->out, &outputs);  // fail on an unwritable path before any work
         }
         const Simulation sim(s);
         ContactSearchOptions options;
@@ -91,7 +91,7 @@ void register_collide(CLI::App& app, Registry& reg) {
         const CollideAnswer search = collide(sim, window, options);
         const std::optional<Contact>& c = search.contact;
         if (!c) {
-            if (!opt->out.empty()) write_no_contact(opt->out);
+            if (!opt->out.empty()) write_no_contact(opt->out, outputs);
             if (opt->json) {
                 print_json(collide_answer(search, true));
             } else {
@@ -107,8 +107,8 @@ void register_collide(CLI::App& app, Registry& reg) {
             return 0;
         }
         if (!opt->out.empty()) {
-            if (extension_of(opt->out) == ".xlsx") write_result2_xlsx(c->frame, opt->out, kWorkbooks);
-            else write_table({c->frame}, opt->out, digits);
+            if (extension_of(opt->out) == ".xlsx") write_result2_xlsx(c->frame, opt->out, kWorkbooks, &outputs);
+            else write_table({c->frame}, opt->out, digits, {}, &outputs);
             status(opt->quiet, "wrote {}", opt->out);
         }
         if (opt->json) {

@@ -63,14 +63,15 @@ void register_figures(CLI::App& app, Registry& reg) {
     for (CLI::Option* o : sub->get_options())
         if (o != list && o->get_name() != "--help" && !o->get_name().empty()) o->excludes(list);
     add_quiet_flag(sub, opt->quiet);
-    reg["figures"] = [opt](Executor&) {
+    reg["figures"] = [opt](Executor&, RunOutputs& outputs) {
         if (opt->list) {
             for (const auto& f : figure_list()) fmt::print("{:<22} {}\n", f.name, f.caption);
             return 0;
         }
         FigureOptions fo;
-        fo.theme = load_theme(opt->theme, asset_dir());
+        fo.theme = load_theme(opt->theme, asset_dir(), &outputs);
         fo.asset_dir = asset_dir();
+        fo.outputs = &outputs;
         fo.scale = opt->scale;
         fo.only = opt->only;
         fo.format = opt->format;
@@ -85,7 +86,7 @@ void register_figures(CLI::App& app, Registry& reg) {
         const std::int64_t total = static_cast<std::int64_t>(fo.only.empty() ? figure_list().size() : fo.only.size());
         std::int64_t done = 0;
         ProgressLine progress("figures", opt->quiet);
-        write_figures(opt->out, opt->scenario.resolve(), fo, [&](const FigureInfo&, const std::string& path) {
+        write_figures(opt->out, opt->scenario.resolve(&outputs), fo, [&](const FigureInfo&, const std::string& path) {
             status(opt->quiet, "wrote {}", path);  // said once the run's files are in place
             if (!path.ends_with(".csv")) progress.update(++done, total);  // a figure, not its data
         });

@@ -51,7 +51,7 @@ void register_film(CLI::App& app, Registry& reg) {
     sub->add_option("--colours", opt->colours, "GIF palette size, 2-256 (default 64)");
     add_quiet_flag(sub, opt->quiet);
 
-    reg["film"] = [opt](Executor& ex) {
+    reg["film"] = [opt](Executor& ex, RunOutputs& outputs) {
         const bool poster = extension_of(opt->out) == ".png";
         if (poster && !opt->at) throw InputError("--out " + opt->out + " is a picture: give --at SECONDS, the moment of the film it shows");
         if (!poster && opt->at) {
@@ -73,7 +73,7 @@ void register_film(CLI::App& app, Registry& reg) {
         encoder.colours = opt->colours;
         // Options of another format's encoder are refused before the storyboard is read.
         if (!poster) encoder_options(encoder, format);
-        Storyboard board = load_storyboard(opt->story, asset_dir());
+        Storyboard board = load_storyboard(opt->story, asset_dir(), &outputs);
         if (!opt->size.empty()) {
             const PictureSize size = parse_picture_size(opt->size, kMaxVideoSide);
             board.film.width = size.width;
@@ -100,10 +100,11 @@ void register_film(CLI::App& app, Registry& reg) {
             vo = encoder_options(encoder, format);
         }
         vo.executor = &ex;
-        { AtomicFile probe(opt->out); }  // an unwritable path fails here, before any work
-        const Film film(board);
+        vo.outputs = &outputs;
+        { AtomicFile probe(opt->out, &outputs); }  // an unwritable path fails here, before any work
+        const Film film(board, &outputs);
         if (poster) {
-            write_film_frame(film, *opt->at, opt->out, print ? print->dpi : 0.0);
+            write_film_frame(film, *opt->at, opt->out, print ? print->dpi : 0.0, &outputs);
             status(opt->quiet, "wrote {}: frame {} of {} ({:.3f} s into the film), {}x{}", opt->out,
                    static_cast<int>(*opt->at * vo.fps), film.frame_count(), *opt->at, vo.width, vo.height);
             return 0;

@@ -38,8 +38,8 @@ void register_max_speed(CLI::App& app, Registry& reg) {
                        "Search up to here (default 100m)");
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
     add_quiet_flag(sub, opt->quiet);
-    reg["max-speed"] = [opt](Executor& ex) {
-        Scenario s = opt->scenario.resolve();
+    reg["max-speed"] = [opt](Executor& ex, RunOutputs& outputs) {
+        Scenario s = opt->scenario.resolve(&outputs);
         s.path.kind = PathKind::turnaround;
         const MaxSpeed m = max_head_speed(s, opt->limit, opt->window.resolve(kTurnaroundWindow), &ex);
         if (opt->json) {

@@ -48,8 +48,8 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
                     "Pitch spacing of the first scan, m (default 0.0025); windows narrower than this may pass unseen");
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
     add_quiet_flag(sub, opt->quiet);
-    reg["min-pitch"] = [opt](Executor& ex) {
-        const Scenario s = opt->scenario.resolve();
+    reg["min-pitch"] = [opt](Executor& ex, RunOutputs& outputs) {
+        const Scenario s = opt->scenario.resolve(&outputs);
         const PitchRange range = pitch_search_range(s, opt->lo, opt->hi);
         // Said before it starts, terminal or not: a search many times the contest's takes minutes.
         if (const double steps = pitch_grid_steps(range.lo, range.hi, opt->grid);

@@ -52,16 +52,16 @@ void register_render(CLI::App& app, Registry& reg) {
     opt->look.add_to(sub);
     opt->print.add_to(sub);
     add_quiet_flag(sub, opt->quiet);
-    reg["render"] = [opt](Executor&) {
+    reg["render"] = [opt](Executor&, RunOutputs& outputs) {
         const std::string ext = extension_of(opt->out);
         if (ext != ".png" && ext != ".svg" && ext != ".pdf")
             throw InputError(fmt::format("--out {} has extension '{}': use .png, .svg or .pdf", opt->out, ext));
         if (!opt->time && !opt->collision)
             throw InputError("render needs --time T (seconds) or --collision");
-        AtomicFile probe(opt->out);  // fail on an unwritable path before any work
-        const Scenario s = opt->scenario.resolve();
+        AtomicFile probe(opt->out, &outputs);  // fail on an unwritable path before any work
+        const Scenario s = opt->scenario.resolve(&outputs);
         const Simulation sim(s);
-        SceneOptions so = opt->look.scene_options();
+        SceneOptions so = opt->look.scene_options(&outputs);
         const std::optional<PrintSize> print = opt->print.resolve();
         auto [w, h] = opt->look.size();
         Page page;
@@ -74,9 +74,9 @@ void register_render(CLI::App& app, Registry& reg) {
         const Scene& scene = still.scene;
         const Frame& frame = still.frame;
         if (opt->look.zoom()) require_zoom_resolves(scene, w, h, *opt->look.zoom());
-        if (ext == ".png") render_png(scene, w, h, opt->out, page);
-        else if (ext == ".svg") render_svg(scene, w, h, opt->out, page);
-        else render_pdf(scene, w, h, opt->out, page);
+        if (ext == ".png") render_png(scene, w, h, opt->out, page, &outputs);
+        else if (ext == ".svg") render_svg(scene, w, h, opt->out, page, &outputs);
+        else render_pdf(scene, w, h, opt->out, page, &outputs);
         if (print)
             status(opt->quiet, "wrote {} ({:g} x {:g} in, text {:g} pt{}, t = {:.6f} s)", opt->out, print->width_in,
                    print->width_in * h / w, print->font_pt, ext == ".png" ? fmt::format(", {} x {} px at {:g} dpi", w, h, print->dpi) : "",

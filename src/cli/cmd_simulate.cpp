@@ -56,7 +56,7 @@ void register_simulate(CLI::App& app, Registry& reg) {
                     "(booktabs, siunitx), markdown (pandoc) or csv; on stdout, or -o FILE.tex, .md or .csv");
     sub->add_option("--lang", opt->lang, "With --table, the language of its headers and captions: en (default) or zh");
     add_quiet_flag(sub, opt->quiet);
-    reg["simulate"] = [opt](Executor& ex) {
+    reg["simulate"] = [opt](Executor& ex, RunOutputs& outputs) {
         const std::string ext = opt->out.empty() ? ".csv" : extension_of(opt->out);
         std::optional<TableFormat> table;
         if (!opt->table.empty()) {
@@ -79,12 +79,12 @@ void register_simulate(CLI::App& app, Registry& reg) {
             throw InputError(fmt::format("--digits {} is not allowed with .xlsx: the contest's workbooks hold 6 "
                                          "decimals (use .csv or .json for more)", *opt->digits));
         const int digits = checked_digits(opt->digits);
-        const Scenario s = opt->scenario.resolve();
+        const Scenario s = opt->scenario.resolve(&outputs);
         const bool turn = s.path.kind == PathKind::turnaround;
         // The contest's runs, as head travel: 300 m coiling in, 100 m either side of the turn.
         const RunWindow window = opt->window.resolve(
             turn ? kTurnaroundWindow : RunWindow{Along::metres(0.0), Along::metres(300.0)});
-        if (!opt->out.empty()) AtomicFile probe(opt->out);  // an unwritable path fails here, before any work
+        if (!opt->out.empty()) AtomicFile probe(opt->out, &outputs);  // an unwritable path fails here, before any work
         const Simulation sim(s);
         require_valid_at(sim, window.from, Key::from);
         require_valid_at(sim, window.to, Key::to);
@@ -119,7 +119,7 @@ void register_simulate(CLI::App& app, Registry& reg) {
                 fmt::print("{}", text);
                 return 0;
             }
-            AtomicFile out(opt->out);
+            AtomicFile out(opt->out, &outputs);
             write_text_file(out, text);
             out.commit();
             status(opt->quiet, "wrote {} ({})", opt->out, count_of(static_cast<long long>(frames.size()), "frame"));
@@ -129,7 +129,7 @@ void register_simulate(CLI::App& app, Registry& reg) {
             print_csv(frames, stdout, digits);
             return 0;
         }
-        write_table(frames, opt->out, digits, kWorkbooks);
+        write_table(frames, opt->out, digits, kWorkbooks, &outputs);
         status(opt->quiet, "wrote {} ({} x {})", opt->out, count_of(static_cast<long long>(frames.size()), "frame"),
                count_of(frames.empty() ? 0 : static_cast<long long>(frames.front().handles.size()), "handle"));
         return 0;

@@ -105,7 +105,7 @@ void register_solve(CLI::App& app, Registry& reg) {
     sub->add_option("--lang", opt->lang, "Language of the tables' headers and captions: en (default) or zh (the "
                                          "workbooks' words: 龙头x (m), 第1节龙身 (m/s))");
     add_quiet_flag(sub, opt->quiet);
-    reg["solve"] = [opt](Executor& ex) {
+    reg["solve"] = [opt](Executor& ex, RunOutputs& outputs) {
         std::optional<TableFormat> table_format;
         if (!opt->tables.empty()) {
             if (opt->tables != "latex" && opt->tables != "markdown" && opt->tables != "csv")
@@ -134,7 +134,8 @@ void register_solve(CLI::App& app, Registry& reg) {
         refuse_unless(opt->limit != 2.0, Question::q5, "--limit");
         refuse_unless(opt->window.given() && !contest.asks(Question::q4), Question::q5, "--from/--to");
         Scenario s = opt->scenario.resolve(values_read_by(contest),
-                                           fmt::format("no question of --only {} reads it", fmt::join(opt->only, ",")));
+                                           fmt::format("no question of --only {} reads it", fmt::join(opt->only, ",")),
+                                           &outputs);
         contest.pitch_lo = opt->lo;
         contest.pitch_hi = opt->hi;
         contest.pitch_grid = opt->grid;
@@ -142,7 +143,7 @@ void register_solve(CLI::App& app, Registry& reg) {
         contest.turn_window = opt->window.resolve(kTurnaroundWindow);
 
         namespace fs = std::filesystem;
-        if (!make_output_folder(opt->dir))
+        if (!make_output_folder(opt->dir, &outputs))
             throw InputError(fmt::format("-o {} is not allowed: the folder cannot be created", opt->dir));
         // Every target is checked, and its temporary file made, before any work: a folder or an
         // unwritable name in the way fails here with no file touched. They are renamed into
@@ -151,7 +152,7 @@ void register_solve(CLI::App& app, Registry& reg) {
         std::vector<std::string> written;
         const auto target = [&](bool needed, const std::string& name) -> AtomicFile* {
             if (!needed) return nullptr;
-            files.push_back(std::make_unique<AtomicFile>((fs::path(opt->dir) / name).string()));
+            files.push_back(std::make_unique<AtomicFile>((fs::path(opt->dir) / name).string(), &outputs));
             written.push_back(name);
             return files.back().get();
         };

@@ -40,8 +40,8 @@ struct SweepOptions {
 };
 
 void write_plot(const std::string& path, const MapCollector& maps, const std::optional<PrintSize>& print,
-                Language language, bool quiet) {
-    write_sweep_map(maps.map(language), path, print);
+                Language language, bool quiet, RunOutputs& outputs) {
+    write_sweep_map(maps.map(language), path, print, &outputs);
     status(quiet, "wrote {}", path);
 }
 
@@ -53,7 +53,7 @@ std::optional<PrintSize> plot_print(const PrintFlags& flags, const std::string& 
     return print;
 }
 
-int run_merge(const SweepOptions& opt) {
+int run_merge(const SweepOptions& opt, RunOutputs& outputs) {
     for (const std::string& extra : opt.merge->remaining())
         throw InputError(fmt::format("dragon sweep merge has no option {} (see dragon sweep merge --help)", extra));
     for (const std::string& f : opt.merge_files)
@@ -64,21 +64,21 @@ int run_merge(const SweepOptions& opt) {
     if (extension_of(out) != ".csv")
         throw InputError(fmt::format("{} has extension '{}': the merged sweep is written as .csv", out, extension_of(out)));
     const std::vector<std::string> parts(opt.merge_files.begin() + 1, opt.merge_files.end());
-    const SweepSetup whole = whole_sweep(parts);
+    const SweepSetup whole = whole_sweep(parts, &outputs);
     const std::optional<PrintSize> print = plot_print(opt.merge_print, opt.merge_plot);
     const Language language = parse_language(opt.merge_lang);
     if (!opt.merge_plot.empty()) {
         check_plot(whole, opt.merge_plot);
-        AtomicFile probe(opt.merge_plot);
+        AtomicFile probe(opt.merge_plot, &outputs);
     }
     std::optional<MapCollector> maps;
     if (!opt.merge_plot.empty()) maps.emplace(whole);
     const std::size_t rows = merge_parts(whole, out, parts, [&](const std::string& row) {
         if (maps) maps->add(row);
-    });
+    }, &outputs);
     status(opt.merge_quiet, "wrote {}: {} from {}", out, count_of(static_cast<long long>(rows), "row"),
            count_of(static_cast<long long>(parts.size()), "file"));
-    if (maps) write_plot(opt.merge_plot, *maps, print, language, opt.merge_quiet);
+    if (maps) write_plot(opt.merge_plot, *maps, print, language, opt.merge_quiet, outputs);
     return 0;
 }
 
@@ -101,32 +101,32 @@ int sweep_workers(const std::optional<int>& asked, std::size_t scenarios, bool q
     return workers;
 }
 
-int run(SweepOptions& opt, Executor& tool_pool) {
-    if (opt.merge->parsed()) return run_merge(opt);
+int run(SweepOptions& opt, Executor& tool_pool, RunOutputs& outputs) {
+    if (opt.merge->parsed()) return run_merge(opt, outputs);
     if (opt.workers && *opt.workers < 1)
         throw InputError(fmt::format("--workers {} is not allowed: at least 1", *opt.workers));
-    const SweepSetup setup = make_setup(opt.request, opt.scenario);
+    const SweepSetup setup = make_setup(opt.request, opt.scenario, &outputs);
     const int workers = sweep_workers(opt.workers, setup.shard.size(setup.grid.size()), opt.output.quiet);
     std::optional<ThreadPool> own_pool;  // --workers: a pool of that size for this sweep
     if (workers > 0) own_pool.emplace(workers);
     Executor& ex = own_pool ? static_cast<Executor&>(*own_pool) : tool_pool;
-    check_output(opt.output);
+    check_output(opt.output, &outputs);
     const std::optional<PrintSize> print = plot_print(opt.print, opt.plot);
     const Language language = parse_language(opt.lang);
     if (!opt.plot.empty()) {
         check_plot(setup, opt.plot);
-        AtomicFile probe(opt.plot);
+        AtomicFile probe(opt.plot, &outputs);
     }
     // The map's values only when a map is asked for: a row is otherwise never held.
     std::optional<MapCollector> maps;
     if (!opt.plot.empty()) maps.emplace(setup);
     const SweepTally t = run_rows(setup, opt.output, ex, [&](const std::string& row) {
         if (maps) maps->add(row);
-    });
+    }, &outputs);
     if (!opt.output.out.empty())
         status(opt.output.quiet, "wrote {}: {}{}", opt.output.out, count_of(static_cast<long long>(t.done_before + t.made), "row"),
                t.done_before ? fmt::format(" ({} new)", t.made) : "");
-    if (maps) write_plot(opt.plot, *maps, print, language, opt.output.quiet);
+    if (maps) write_plot(opt.plot, *maps, print, language, opt.output.quiet, outputs);
     // A run that fails leaves no finished file: the rows stay in the partial one, and --resume
     // makes the failed rows again.
     if (t.failed > 0)
@@ -189,7 +189,7 @@ void register_sweep(CLI::App& app, Registry& reg) {
     opt->merge_print.add_to(opt->merge);
     add_language_flag(opt->merge, opt->merge_lang);
     add_quiet_flag(opt->merge, opt->merge_quiet);
-    reg["sweep"] = [opt](Executor& ex) { return run(*opt, ex); };
+    reg["sweep"] = [opt](Executor& ex, RunOutputs& outputs) { return run(*opt, ex, outputs); };
 }
 
 }  // namespace dragon::cli

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "dragon/answers.hpp"
+#include "dragon/turnaround_csv.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
 #include "report.hpp"
@@ -102,14 +103,14 @@ void register_turnaround(CLI::App& app, Registry& reg) {
     opt->window.from_option()->excludes(skip);
     opt->window.to_option()->excludes(skip);
     add_quiet_flag(sub, opt->quiet);
-    reg["turnaround"] = [opt](Executor& ex) {
-        Scenario s = opt->scenario.resolve();
+    reg["turnaround"] = [opt](Executor& ex, RunOutputs& outputs) {
+        Scenario s = opt->scenario.resolve(&outputs);
         s.path.kind = PathKind::turnaround;
         if (!opt->out.empty() && extension_of(opt->out) != ".csv")
             throw InputError(fmt::format("--out {} is not allowed: the length study is written as .csv",
                                          opt->out));
         const RunWindow window = opt->window.resolve(kTurnaroundWindow);
-        if (!opt->out.empty()) AtomicFile probe(opt->out);  // fail on an unwritable path first
+        if (!opt->out.empty()) AtomicFile probe(opt->out, &outputs);  // fail on an unwritable path first
         const TurnaroundStudy st = study_turnaround(s);
         std::optional<RunClearance> clear;
         if (!opt->skip_clearance) {
@@ -117,7 +118,7 @@ void register_turnaround(CLI::App& app, Registry& reg) {
             clear = min_clearance(s, window,
                                   [&progress](std::int64_t done, std::int64_t total) { progress.update(done, total); }, &ex);
         }
-        if (!opt->out.empty()) write_study_csv(st, opt->out);
+        if (!opt->out.empty()) write_study_csv(st, opt->out, &outputs);
         if (opt->json) print_json(turnaround_answer(st.design, st.design_jam, clear, &st));
         else print_text(st, clear);
         if (!opt->out.empty()) status(opt->quiet, "wrote {}", opt->out);

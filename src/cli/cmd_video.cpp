@@ -92,7 +92,7 @@ void register_video(CLI::App& app, Registry& reg) {
     sub->add_flag("--no-inset", opt->no_inset, "Leave out the small whole-dragon picture of a followed or zoomed view");
     add_quiet_flag(sub, opt->quiet);
 
-    reg["video"] = [opt, sub](Executor& ex) {
+    reg["video"] = [opt, sub](Executor& ex, RunOutputs& outputs) {
         // Everything that can be checked without simulating first, so bad options fail at once
         // and leave no file.
         const VideoFormat format = video_format_for(opt->out);
@@ -118,9 +118,10 @@ void register_video(CLI::App& app, Registry& reg) {
         look_asked.text = !opt->no_text;
         look_asked.zoom = opt->zoom;
         look_asked.follow_head = opt->follow_head;
-        const SceneOptions scene = clip_scene_options(look_asked, asset_dir());
-        { AtomicFile probe(opt->out); }  // an unwritable path fails here, before any work
-        const Scenario s = opt->scenario.resolve();
+        const SceneOptions scene = clip_scene_options(look_asked, asset_dir(), &outputs);
+        vo.outputs = &outputs;
+        { AtomicFile probe(opt->out, &outputs); }  // an unwritable path fails here, before any work
+        const Scenario s = opt->scenario.resolve(&outputs);
 
         const Simulation sim(s);
         const ClipPlan plan =

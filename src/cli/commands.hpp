@@ -8,14 +8,17 @@
 
 #include <CLI/CLI.hpp>
 
+#include "dragon/atomic_file.hpp"
 #include "dragon/executor.hpp"
 
 namespace dragon::cli {
 
 // Subcommand name -> what to run, on the run's executor (the tool's pool, one worker per core,
-// made once the command line is read and joined when the run ends). A runner returns the exit
-// code (0 on success); bad input is thrown as InputError and becomes exit 2.
-using Registry = std::map<std::string, std::function<int(Executor&)>>;
+// made once the command line is read and joined when the run ends) and with the run's outputs
+// (main's RunOutputs: every file the command reads or writes goes through it, put in place when
+// the whole run has succeeded). A runner returns the exit code (0 on success); bad input is
+// thrown as InputError and becomes exit 2.
+using Registry = std::map<std::string, std::function<int(Executor&, RunOutputs&)>>;
 
 void register_simulate(CLI::App& app, Registry& reg);
 void register_solve(CLI::App& app, Registry& reg);

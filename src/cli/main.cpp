@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
         RunOutputs outputs;
         const std::string name = app.get_subcommands().front()->get_name();
         ThreadPool pool;  // the run's workers, one per core, made for this run and joined with it
-        code = reg.at(name)(pool);
+        code = reg.at(name)(pool, outputs);
         if (!stdout_intact()) return stdout_failed(errno);
         if (code == 0) {
             outputs.commit();

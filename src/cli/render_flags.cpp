@@ -51,6 +51,8 @@ LookRequest RenderFlags::request() const {
     return look;
 }
 
-SceneOptions RenderFlags::scene_options() const { return picture_scene_options(request(), asset_dir()); }
+SceneOptions RenderFlags::scene_options(RunOutputs* outputs) const {
+    return picture_scene_options(request(), asset_dir(), outputs);
+}
 
 }  // namespace dragon::cli

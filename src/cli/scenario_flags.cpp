@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "dragon/input_file.hpp"
+#include "dragon/input_files.hpp"
 
 namespace dragon::cli {
 
@@ -137,13 +138,13 @@ void ScenarioFlags::fill(const std::string& scenario_file,
     }
 }
 
-Scenario ScenarioFlags::resolve() const { return resolve(value::all, ""); }
+Scenario ScenarioFlags::resolve(RunOutputs* outputs) const { return resolve(value::all, "", outputs); }
 
-Scenario ScenarioFlags::resolve(ScenarioValues reads, const std::string& why) const {
+Scenario ScenarioFlags::resolve(ScenarioValues reads, const std::string& why, RunOutputs* outputs) const {
     Scenario s;
     ScenarioValues from_file = 0, from_flags = 0;
     if (!file_.empty()) {
-        LoadedScenario loaded = read_scenario_file(file_, s);
+        LoadedScenario loaded = read_scenario_file(file_, s, outputs);
         s = loaded.scenario;
         from_file = loaded.values;
     }

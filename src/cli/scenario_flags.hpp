@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "dragon/atomic_file.hpp"
 #include "dragon/scenario.hpp"
 
 namespace dragon::cli {
@@ -43,11 +44,12 @@ public:
     // The scenario, validated for the values the command reads on its path (InputError names a
     // bad value, and the file when the value came from it). Refuses a flag the chosen path does
     // not read (--turn-pitch on the spiral, say). The path kind is the command's: the one
-    // --path or the file picks, else its only path, else (both paths) the spiral.
-    Scenario resolve() const;
+    // --path or the file picks, else its only path, else (both paths) the spiral. The --scenario
+    // file is one of the inputs of `outputs`' run.
+    Scenario resolve(RunOutputs* outputs) const;
     // The same for a run that reads only `reads` of the values (solve --only q4): values outside
     // it are not checked, and a flag for one is refused with "<flag> is not used: <why>".
-    Scenario resolve(ScenarioValues reads, const std::string& why) const;
+    Scenario resolve(ScenarioValues reads, const std::string& why, RunOutputs* outputs) const;
 
     // The scenario flags given on the command line, one bit per value.
     ScenarioValues given() const;

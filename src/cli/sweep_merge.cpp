@@ -26,21 +26,28 @@ std::string describe_scenario(const SweepSetup& setup, std::size_t index) {
     return out;
 }
 
+// A part's limits, read as one of the run's inputs.
+RowFileLimits part_limits(const SweepSetup& whole, RunOutputs* outputs) {
+    RowFileLimits limits = row_limits(whole, "sweep part");
+    limits.outputs = outputs;
+    return limits;
+}
+
 }  // namespace
 
-SweepSetup whole_sweep(const std::vector<std::string>& parts) {
+SweepSetup whole_sweep(const std::vector<std::string>& parts, RunOutputs* outputs) {
     if (parts.empty()) throw InputError("dragon sweep merge needs the files to merge: dragon sweep merge OUT.csv PART.csv...");
     // The first line is all it takes; merge_parts reads the rest.
-    const std::string spec = read_first_line(parts.front(), {"sweep part"});
+    const std::string spec = read_first_line(parts.front(), {"sweep part", false, outputs});
     return read_spec_line(whole_spec_line(spec, parts.front()), parts.front());
 }
 
 std::size_t merge_parts(const SweepSetup& whole, const std::string& out, const std::vector<std::string>& parts,
-                        const std::function<void(const std::string&)>& on_row) {
+                        const std::function<void(const std::string&)>& on_row, RunOutputs* outputs) {
     const std::string spec = spec_line(whole), head = csv_line(header(whole));
     // Which file holds each scenario (0: none yet): 4 bytes a scenario, the rows never held.
     std::vector<std::uint32_t> owner(whole.grid.size(), 0);
-    AtomicFile file(out);
+    AtomicFile file(out, outputs);
     std::unique_ptr<FILE, int (*)(FILE*)> sink(std::fopen(file.temp_path().c_str(), "wb"), &std::fclose);
     if (!sink) throw file.write_error(std::strerror(errno));
     fmt::print(sink.get(), "{}\n{}\n", spec, head);
@@ -82,7 +89,7 @@ std::size_t merge_parts(const SweepSetup& whole, const std::string& out, const s
                 on_row(line);
                 ++rows;
             },
-            row_limits(whole, "sweep part"));
+            part_limits(whole, outputs));
         if (scan.torn)
             throw InputError(fmt::format("'{}' ends in a torn line: it is the rows of an unfinished run (go on with it "
                                          "with --resume first)", path));

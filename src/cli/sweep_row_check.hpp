@@ -8,6 +8,7 @@
 #include <string>
 
 #include "sweep_setup.hpp"
+#include "dragon/row_files.hpp"
 
 namespace dragon::cli {
 

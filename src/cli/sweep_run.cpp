@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 std::string partial_path(const std::string& out) { return out + ".partial"; }
 
-void check_output(const SweepOutput& o) {
+void check_output(const SweepOutput& o, RunOutputs* outputs) {
     if (o.out.empty()) {
         if (o.resume) throw InputError("--resume is not allowed without -o: only a file's rows can be gone on with");
         return;
@@ -40,7 +40,7 @@ void check_output(const SweepOutput& o) {
     if (fs::exists(partial) && !o.resume)
         throw InputError(fmt::format("-o {} is not allowed: {} holds the rows of an unfinished sweep; add --resume to "
                                      "go on with it, or remove it", o.out, partial_path(o.out)));
-    AtomicFile probe(o.out);  // a folder in the way, or one that takes no files, fails now
+    AtomicFile probe(o.out, outputs);  // a folder in the way, or one that takes no files, fails now
 }
 
 namespace {
@@ -127,7 +127,7 @@ std::size_t rewrite_without(const SweepSetup& setup, const std::string& source, 
 }  // namespace
 
 SweepTally run_rows(const SweepSetup& setup, const SweepOutput& o, Executor& executor,
-                    const std::function<void(const std::string&)>& on_row) {
+                    const std::function<void(const std::string&)>& on_row, RunOutputs* outputs) {
     const std::vector<std::string> preamble = {spec_line(setup), csv_line(header(setup))};
     SweepTally tally;
     tally.scenarios = setup.shard.size(setup.grid.size());
@@ -178,7 +178,7 @@ SweepTally run_rows(const SweepSetup& setup, const SweepOutput& o, Executor& exe
             if (row.failed) ++tally.failed;
         },
         [&](std::int64_t made, std::int64_t total) { progress.update(made, total); });
-    if (log) log->finish(o.out);
+    if (log) log->finish(o.out, outputs);
     return tally;
 }
 

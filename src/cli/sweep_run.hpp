@@ -29,12 +29,12 @@ std::string partial_path(const std::string& out);
 
 // Checks the output before any work: -o is a .csv whose folder takes files; --resume has an -o;
 // and an unfinished sweep's rows are not overwritten without --resume. Throws InputError.
-void check_output(const SweepOutput& output);
+void check_output(const SweepOutput& output, RunOutputs* outputs);
 
 // Runs the rows of the setup's shard not yet written on `executor`, each scenario's measures on
 // one worker. The rows go to <out>.partial as they finish, which is renamed to <out> when all
-// are there; `on_row` hears every row's CSV line, the resumed ones first.
+// are there (one of `outputs`' files); `on_row` hears every row's CSV line, the resumed ones first.
 SweepTally run_rows(const SweepSetup& setup, const SweepOutput& output, Executor& executor,
-                    const std::function<void(const std::string& csv_row)>& on_row);
+                    const std::function<void(const std::string& csv_row)>& on_row, RunOutputs* outputs);
 
 }  // namespace dragon::cli

@@ -11,6 +11,7 @@
 
 #include "window_flags.hpp"
 #include "dragon/input_file.hpp"
+#include "dragon/input_files.hpp"
 
 namespace dragon::cli {
 
@@ -67,10 +68,10 @@ void take_file_options(const SweepFile& f, const std::string& path, SweepRequest
 
 }  // namespace
 
-SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags) {
+SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags, RunOutputs* outputs) {
     SweepRequest req = request;
     if (!req.file.empty()) {
-        const SweepFile f = read_sweep_file(req.file);
+        const SweepFile f = read_sweep_file(req.file, outputs);
         // An axis of the command line replaces the file's of the same name; the others follow it.
         std::vector<std::string> vary;
         for (const std::string& v : f.vary) {
@@ -91,7 +92,7 @@ SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags) {
     const SweepWords words{[](const char* option) { return fmt::format("--{}", option); },
                            [](const char* value) { return fmt::format("--{}", value); }};
     return make_sweep_setup(asked, words, [&](ScenarioValues fixed, const std::string& why) {
-        return flags.resolve(fixed, why);
+        return flags.resolve(fixed, why, outputs);
     });
 }
 

@@ -25,6 +25,6 @@ struct SweepRequest {
 // Throws InputError naming the flag or the file's key at fault: a bad --vary, an unknown or
 // repeated measure, a measure that does not read a varied value, an option no measure takes, a
 // fixed value that is also varied, a scenario flag no measure reads, a bad fixed value.
-SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags);
+SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags, RunOutputs* outputs);
 
 }  // namespace dragon::cli

@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
-#include "dragon/input_file.hpp"
+#include "dragon/shown_text.hpp"
 #include "dragon/path.hpp"
 
 namespace dragon {
@@ -131,8 +131,8 @@ void validate(const Scenario& s, ScenarioValues values) {
     if (has(values, turn_pitch | width)) require_wider_pitch(turn_pitch, s.path.turn_pitch, b.width);
 }
 
-LoadedScenario read_scenario_file(const std::string& path, Scenario base) {
-    const std::string text = read_toml_input(path, "scenario file");
+LoadedScenario parse_scenario_toml(const std::string& text, const std::string& origin, Scenario base) {
+    const std::string& path = origin;  // as the messages below name the text
     toml::table root;
     try {
         root = toml::parse(text, path);
@@ -221,7 +221,5 @@ LoadedScenario read_scenario_file(const std::string& path, Scenario base) {
     }
     return out;
 }
-
-Scenario load_scenario(const std::string& path, Scenario base) { return read_scenario_file(path, base).scenario; }
 
 }  // namespace dragon

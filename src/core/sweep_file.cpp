@@ -1,11 +1,9 @@
 // A sweep described in a TOML file: the same keys as the command line's, so that a map can be
 // made again from its file (assets/sweeps/).
-#include <filesystem>
-
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
-#include "dragon/input_file.hpp"
+#include "dragon/shown_text.hpp"
 #include "dragon/sweep.hpp"
 
 namespace dragon {
@@ -35,11 +33,20 @@ std::vector<std::string> text_list(const toml::node& n, const std::string& path,
     throw InputError(fmt::format("sweep file '{}': {} must be a string or a list of strings", path, key));
 }
 
+// `name` as seen from the file `origin`: as it is when absolute or when the origin has no folder,
+// else in the origin's folder. Text only (the core has no file system): std::filesystem's
+// parent_path and operator/ give the same for these.
+std::string beside(const std::string& origin, const std::string& name) {
+    if (!name.empty() && name.front() == '/') return name;
+    const std::size_t slash = origin.rfind('/');
+    if (slash == std::string::npos) return name;
+    return origin.substr(0, slash + 1) + name;
+}
+
 }  // namespace
 
-SweepFile read_sweep_file(const std::string& path) {
-    namespace fs = std::filesystem;
-    const std::string text = read_toml_input(path, "sweep file");
+SweepFile parse_sweep_file(const std::string& text, const std::string& origin) {
+    const std::string& path = origin;  // as the messages below name the text
     toml::table root;
     try {
         root = toml::parse(text, path);
@@ -59,8 +66,7 @@ SweepFile read_sweep_file(const std::string& path) {
             auto s = node.value_exact<std::string>();
             if (!s) throw InputError(fmt::format("sweep file '{}': scenario must be a file name", path));
             // Relative to the sweep file, so that the pair can move together.
-            const fs::path p(*s);
-            out.scenario = p.is_absolute() ? *s : (fs::path(path).parent_path() / p).string();
+            out.scenario = beside(path, *s);
         } else if (const toml::table* t = node.as_table()) {
             for (const auto& [k, v] : *t) {
                 const std::optional<std::string> value = as_text(v);

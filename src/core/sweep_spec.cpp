@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "dragon/input_file.hpp"
+#include "dragon/shown_text.hpp"
 #include "dragon/sweep.hpp"
 
 namespace dragon {

@@ -1,16 +1,11 @@
 // Q4's question, "can the turning curve be made shorter?", answered by computing the S-curve
 // against the radius ratio and against where the turn starts.
 #include <algorithm>
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <limits>
-#include <memory>
 #include <string>
 
 #include <fmt/format.h>
 
-#include "dragon/atomic_file.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/turnaround.hpp"
 
@@ -92,28 +87,20 @@ TurnaroundStudy study_turnaround(const Scenario& s) {
     return st;
 }
 
-void write_study_csv(const TurnaroundStudy& study, const std::string& path) {
-    AtomicFile file(path);
-    {
-        std::unique_ptr<FILE, int (*)(FILE*)> out(std::fopen(file.temp_path().c_str(), "w"), &std::fclose);
-        if (!out) throw file.write_error(std::strerror(errno));
-        fmt::print(out.get(), "study,ratio,entry_radius,r1,r2,angle,s_curve_length,inside_length,max_radius,"
-                              "followable,jam_time,jam_handle,jam_kind\n");
-        auto rows = [&](const char* name, const std::vector<TurnStudyRow>& rs) {
-            for (const TurnStudyRow& r : rs) {
-                fmt::print(out.get(), "{},{:.6f},{:.6f},{:.9f},{:.9f},{:.9f},{:.9f},{:.9f},{:.9f},", name,
-                           r.ratio, r.entry_radius, r.r1, r.r2, r.angle, r.s_curve_length,
-                           r.inside_length, r.max_radius);
-                if (r.jam) fmt::print(out.get(), "false,{:.9f},{},{}\n", r.jam->time, r.jam->handle, to_string(r.jam->kind));
-                else fmt::print(out.get(), "true,,,\n");
-            }
-        };
-        rows("ratio", study.by_ratio);
-        rows("entry_radius", study.by_entry);
-        if (std::ferror(out.get()) || std::fclose(out.release()) != 0)
-            throw file.write_error(std::strerror(errno));
-    }
-    file.commit();
+std::string study_csv(const TurnaroundStudy& study) {
+    std::string out = "study,ratio,entry_radius,r1,r2,angle,s_curve_length,inside_length,max_radius,"
+                      "followable,jam_time,jam_handle,jam_kind\n";
+    auto rows = [&](const char* name, const std::vector<TurnStudyRow>& rs) {
+        for (const TurnStudyRow& r : rs) {
+            out += fmt::format("{},{:.6f},{:.6f},{:.9f},{:.9f},{:.9f},{:.9f},{:.9f},{:.9f},", name, r.ratio,
+                               r.entry_radius, r.r1, r.r2, r.angle, r.s_curve_length, r.inside_length, r.max_radius);
+            if (r.jam) out += fmt::format("false,{:.9f},{},{}\n", r.jam->time, r.jam->handle, to_string(r.jam->kind));
+            else out += "true,,,\n";
+        }
+    };
+    rows("ratio", study.by_ratio);
+    rows("entry_radius", study.by_entry);
+    return out;
 }
 
 }  // namespace dragon

@@ -160,13 +160,13 @@ void check_drawable(const Resolver& r, const Film& film, int index, const ShotPl
 
 }  // namespace
 
-Film::Film(const Storyboard& board) : impl_(std::make_unique<Impl>()) {
+Film::Film(const Storyboard& board, RunOutputs* outputs) : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     m.settings = board.film;
     m.file = board.file;
     const double fps = board.film.fps;
     try {
-        m.theme = load_theme(board.film.theme, board.asset_dir);
+        m.theme = load_theme(board.film.theme, board.asset_dir, outputs);
     } catch (const InputError& e) {
         throw StoryboardError(board.file, 0, "film", "theme", e.what());
     }

@@ -16,7 +16,7 @@ EncodeStats write_film(const Film& film, const std::string& path, VideoOptions o
     return encode_frames(path, opt, film.frame_count(), [&](int index, cairo_t* cr) { film.paint(index, cr); }, progress);
 }
 
-void write_film_frame(const Film& film, double at, const std::string& path, double dpi) {
+void write_film_frame(const Film& film, double at, const std::string& path, double dpi, RunOutputs* outputs) {
     const double fps = film.settings().fps;
     if (!(at >= 0 && at < film.duration()))
         throw InputError(Key::at, error_value(at),
@@ -28,7 +28,7 @@ void write_film_frame(const Film& film, double at, const std::string& path, doub
         film.paint(index, cr.get());
     }
     // A palette PNG, as the gallery's: a third of the bytes, no visible change to a drawing.
-    render::write_png8(surface.get(), path, 256, dpi);
+    render::write_png8(surface.get(), path, 256, dpi, {}, outputs);
 }
 
 }  // namespace dragon

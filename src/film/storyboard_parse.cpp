@@ -6,6 +6,7 @@
 
 #include "dragon/film.hpp"
 #include "dragon/input_file.hpp"
+#include "dragon/input_files.hpp"
 #include "storyboard_values.hpp"
 
 namespace dragon {
@@ -61,6 +62,7 @@ struct Context {
     std::string default_scenario;  // [film] scenario
     // Each scenario file read once, however many shots name it.
     std::map<std::string, Scenario> loaded;
+    RunOutputs* outputs = nullptr;  // the run whose inputs the scenario files are, if any
 };
 
 // The scenario a name stands for: a preset of the asset folder, or a .toml file beside the
@@ -73,7 +75,7 @@ Scenario named_scenario(const Where& w, Context& cx, const std::string& name, co
     if (!file && !std::filesystem::exists(path))
         w.fail(key, fmt::format("'{}' is neither a preset in {} nor a .toml file", shown_text(name), cx.asset_dir));
     try {
-        return cx.loaded[path] = load_scenario(path);
+        return cx.loaded[path] = load_scenario(path, {}, cx.outputs);
     } catch (const InputError& e) {
         w.fail(key, e.what());
     }
@@ -256,7 +258,7 @@ Shot shot_of(const Where& w, Context& cx, const toml::table& t) {
 }  // namespace
 
 Storyboard parse_storyboard(const std::string& toml_text, const std::string& file, const std::string& base_dir,
-                            const std::string& asset_dir) {
+                            const std::string& asset_dir, RunOutputs* outputs) {
     Storyboard board;
     board.file = file;
     toml::table root;
@@ -266,7 +268,7 @@ Storyboard parse_storyboard(const std::string& toml_text, const std::string& fil
         throw InputError(fmt::format("storyboard '{}' is not valid TOML (line {}, column {}): {}", file,
                                      e.source().begin.line, e.source().begin.column, e.description()));
     }
-    Context cx{file, base_dir, asset_dir.empty() ? find_asset_dir() : asset_dir, "", {}};
+    Context cx{file, base_dir, asset_dir.empty() ? find_asset_dir() : asset_dir, "", {}, outputs};
     board.asset_dir = cx.asset_dir;
     const Where top{file, 0, "film"};
     film::check_keys(top, root, {"film", "shot"}, "a storyboard (a [film] table and [[shot]] tables)");
@@ -308,10 +310,10 @@ Storyboard parse_storyboard(const std::string& toml_text, const std::string& fil
     return board;
 }
 
-Storyboard load_storyboard(const std::string& path, const std::string& asset_dir) {
-    const std::string text = read_toml_input(path, "storyboard");
+Storyboard load_storyboard(const std::string& path, const std::string& asset_dir, RunOutputs* outputs) {
+    const std::string text = read_toml_input(path, "storyboard", outputs);
     const std::string base = std::filesystem::path(path).parent_path().string();
-    return parse_storyboard(text, path, base.empty() ? "." : base, asset_dir);
+    return parse_storyboard(text, path, base.empty() ? "." : base, asset_dir, outputs);
 }
 
 }  // namespace dragon

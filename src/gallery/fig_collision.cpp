@@ -334,7 +334,7 @@ void pitch_states(const Context& c, const std::string& path) {
         for (std::size_t i = 0; i < fitted.lines.size(); ++i)
             render::text(cr, th.font, fitted.size, gap + inner, title_top * 0.7 + line_h * static_cast<double>(i),
                          fitted.lines[i], 0.0, 0.0, true);
-    }, page, &th);
+    }, page, &th, c.opt.outputs);
     write_data(c, path, data);
 }
 

@@ -59,7 +59,7 @@ void turnaround_scene(const Context& c, const std::string& path) {
     double fastest = 0;
     for (const Handle& h : f.handles) fastest = std::max(fastest, h.speed);
     SceneOptions so = c.scene_options();
-    so.theme = load_theme("dark", c.opt.asset_dir);
+    so.theme = load_theme("dark", c.opt.asset_dir, c.opt.outputs);
     so.title_band = true;  // a title hides nothing
     so.colour_by_speed = true;
     so.camera = Camera::at({0, 0}, 2.0 * sc.path.turn_radius + 9.0);

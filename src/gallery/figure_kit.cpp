@@ -121,7 +121,7 @@ void write_data(const Context& c, const std::string& figure_path, const FigureDa
     };
     line(data.header);
     for (const auto& row : data.rows) line(row);
-    AtomicFile out(path.string());
+    AtomicFile out(path.string(), c.opt.outputs);
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(out.temp_path().c_str(), "wb"), &std::fclose);
     if (!f) throw out.write_error(std::strerror(errno));
     if (std::fwrite(text.data(), 1, text.size(), f.get()) != text.size() || std::fflush(f.get()) != 0)
@@ -155,10 +155,10 @@ std::vector<std::uint32_t> role_colours(const Theme& th) {
 }
 
 void write_picture(int w, int h, const std::string& path, int colours, const std::function<void(cairo_t*)>& paint,
-                   const Page& page, const Theme* theme) {
+                   const Page& page, const Theme* theme, RunOutputs* outputs) {
     const render::PictureFormat format = render::picture_format(path);
     if (format != render::PictureFormat::png) {
-        render::write_vector(path, format, w, h, paint, page);
+        render::write_vector(path, format, w, h, paint, page, outputs);
         return;
     }
     // The gallery is kept small (it lives in the repository): palette PNGs.
@@ -167,7 +167,8 @@ void write_picture(int w, int h, const std::string& path, int colours, const std
         cairo::Context cr = cairo::make_context(surface.get());
         paint(cr.get());
     }
-    render::write_png8(surface.get(), path, colours, page.dpi, theme ? role_colours(*theme) : std::vector<std::uint32_t>{});
+    render::write_png8(surface.get(), path, colours, page.dpi, theme ? role_colours(*theme) : std::vector<std::uint32_t>{},
+                       outputs);
 }
 
 void Context::tell(const std::string& text) const {
@@ -193,7 +194,8 @@ void write_scene(const Context& c, Scene scene, double gallery_w, double gallery
     if (!c.titles()) scene.annotation.clear();
     const Context::Size z = c.size(gallery_w, gallery_h);
     scene.text_px = z.text_px;
-    write_picture(z.w, z.h, path, colours, [&](cairo_t* cr) { draw(cr, scene, z.w, z.h); }, z.page, &scene.theme);
+    write_picture(z.w, z.h, path, colours, [&](cairo_t* cr) { draw(cr, scene, z.w, z.h); }, z.page, &scene.theme,
+                  c.opt.outputs);
 }
 
 void write_plot(const Context& c, Plot plot, double gallery_w, double gallery_h, const std::string& path) {
@@ -201,7 +203,8 @@ void write_plot(const Context& c, Plot plot, double gallery_w, double gallery_h,
     if (!c.titles()) plot.title.clear(), plot.note.clear();
     const Context::Size z = c.size(gallery_w, gallery_h);
     plot.text_px = z.text_px;
-    write_picture(z.w, z.h, path, 64, [&](cairo_t* cr) { draw_plot(cr, plot, 0, 0, z.w, z.h); }, z.page, &plot.theme);
+    write_picture(z.w, z.h, path, 64, [&](cairo_t* cr) { draw_plot(cr, plot, 0, 0, z.w, z.h); }, z.page, &plot.theme,
+                  c.opt.outputs);
 }
 
 }  // namespace dragon::fig

@@ -78,8 +78,9 @@ void draw_panels(cairo_t* cr, const std::vector<Scene>& panels, const std::vecto
 // map stays smooth), an SVG or a PDF.
 // `theme`: its role colours (role_colours) stay exact in a palette PNG, so a legend's tail is
 // the tail's blue in every format.
+// `outputs`: the run it belongs to (FigureOptions::outputs).
 void write_picture(int w, int h, const std::string& path, int colours, const std::function<void(cairo_t*)>& paint,
-                   const Page& page = {}, const Theme* theme = nullptr);
+                   const Page& page = {}, const Theme* theme = nullptr, RunOutputs* outputs = nullptr);
 // The colours of the theme's roles (ground, text, head, body, tail, touching, singled out,
 // outline, handles, contact, paths, turning space) as 0xRRGGBB: what a palette keeps exactly.
 std::vector<std::uint32_t> role_colours(const Theme& theme);

@@ -55,7 +55,7 @@ void write_figures(const std::string& dir, const Scenario& base, const FigureOpt
     if (!(opt.scale >= kMinFigureScale && opt.scale <= 8))
         throw InputError(fmt::format("figure scale {} is not allowed: use {}..8 (smaller, the plots' text would fall "
                                      "under the {:g} px floor)", opt.scale, kMinFigureScale, kMinTextPx));
-    if (!make_output_folder(dir)) throw InputError(fmt::format("cannot create the figure folder {}", dir));
+    if (!make_output_folder(dir, opt.outputs)) throw InputError(fmt::format("cannot create the figure folder {}", dir));
     fig::Context ctx{base, opt, nullptr, ""};
     ctx.base.path.kind = PathKind::spiral;
     ctx.answers = std::make_shared<fig::Answers>(ctx.base);

@@ -11,9 +11,9 @@ namespace dragon {
 namespace {
 
 // What pictures and clips share: theme, language, colours, guides and text.
-SceneOptions common_options(const LookRequest& look, const std::string& asset_dir) {
+SceneOptions common_options(const LookRequest& look, const std::string& asset_dir, RunOutputs* outputs) {
     SceneOptions so;
-    so.theme = load_theme(look.theme, asset_dir);
+    so.theme = load_theme(look.theme, asset_dir, outputs);
     so.language = parse_language(look.lang);
     so.colour_by_speed = look.speed_colours;
     so.show_guides = so.show_turning_space = look.guides;
@@ -31,8 +31,8 @@ void check_zoom(double zoom) {
                          fmt::format("give the view's width in metres, {:g}..{:g}", kMinViewExtent, kMaxViewExtent));
 }
 
-SceneOptions picture_scene_options(const LookRequest& look, const std::string& asset_dir) {
-    SceneOptions so = common_options(look, asset_dir);
+SceneOptions picture_scene_options(const LookRequest& look, const std::string& asset_dir, RunOutputs* outputs) {
+    SceneOptions so = common_options(look, asset_dir, outputs);
     so.annotation = look.annotation;
     so.show_legend = look.legend;
     so.show_inset = look.inset;
@@ -53,11 +53,11 @@ SceneOptions picture_scene_options(const LookRequest& look, const std::string& a
     return so;
 }
 
-SceneOptions clip_scene_options(const LookRequest& look, const std::string& asset_dir) {
+SceneOptions clip_scene_options(const LookRequest& look, const std::string& asset_dir, RunOutputs* outputs) {
     if (look.centre)
         throw InputError(Key::centre, fmt::format("{} {}", error_value(look.centre->x()), error_value(look.centre->y())),
                          "a clip's view is fixed on the origin, or follows the head (follow head)");
-    SceneOptions so = common_options(look, asset_dir);
+    SceneOptions so = common_options(look, asset_dir, outputs);
     if (look.follow_head) so.camera = Camera::follow(look.zoom.value_or(kFollowedClipWidth));
     else if (look.zoom) so.camera = Camera::at({0.0, 0.0}, *look.zoom);
     return so;

@@ -417,10 +417,10 @@ PlotArea draw_plot(cairo_t* cr, const Plot& p, double x, double y, double w, dou
     return area;
 }
 
-void render_plot_png(const Plot& plot, int w, int h, const std::string& path) {
+void render_plot_png(const Plot& plot, int w, int h, const std::string& path, RunOutputs* outputs) {
     if (w < 100 || h < 100 || w > 16384 || h > 16384)
         throw InputError(fmt::format("plot size {} x {} px is not allowed: each side must be 100..16384", w, h));
-    AtomicFile out(path);
+    AtomicFile out(path, outputs);
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
     {
         cairo::Context cr = cairo::make_context(surface.get());

@@ -87,7 +87,7 @@ std::string encode_png(int w, int h, const std::vector<png_bytep>& rows, const s
 }  // namespace
 
 void write_png8(cairo_surface_t* surface, const std::string& path, int max_colours, double dpi,
-                const std::vector<std::uint32_t>& keep) {
+                const std::vector<std::uint32_t>& keep, RunOutputs* outputs) {
     cairo_surface_flush(surface);
     const int w = cairo_image_surface_get_width(surface), h = cairo_image_surface_get_height(surface);
     const int stride = cairo_image_surface_get_stride(surface);
@@ -130,7 +130,7 @@ void write_png8(cairo_surface_t* surface, const std::string& path, int max_colou
         png_set_compression_level(png, 9);
         png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);  // palette images: no filter compresses best
     });
-    AtomicFile out(path);
+    AtomicFile out(path, outputs);
     write_text_file(out, bytes);
     out.commit();
 }

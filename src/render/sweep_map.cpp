@@ -172,7 +172,8 @@ void require_map_format(const std::string& path) {
         throw InputError(Key::plot, path, "use .png, .svg or .pdf");
 }
 
-void write_sweep_map(const SweepMap& map_in, const std::string& path, const std::optional<PrintSize>& print) {
+void write_sweep_map(const SweepMap& map_in, const std::string& path, const std::optional<PrintSize>& print,
+                     RunOutputs* outputs) {
     require_map_format(path);
     const render::PictureFormat format = render::picture_format(path);
     SweepMap map = map_in;
@@ -191,10 +192,10 @@ void write_sweep_map(const SweepMap& map_in, const std::string& path, const std:
     }
     const auto paint = [&](cairo_t* cr) { draw_sweep_map(cr, map, w, h); };
     if (format != render::PictureFormat::png) {
-        render::write_vector(path, format, w, h, paint, page);
+        render::write_vector(path, format, w, h, paint, page, outputs);
         return;
     }
-    AtomicFile out(path);
+    AtomicFile out(path, outputs);
     cairo::Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
     if (const cairo_status_t st = cairo_surface_status(surface.get()))
         throw SolverError(fmt::format("creating the image surface: {}", cairo_status_to_string(st)));

@@ -81,10 +81,10 @@ bool font_exists(const std::string& family) {
 // the other input files, so that a typo ([colour]) or the wrong file (a storyboard) is not
 // silently the light theme. `check_font`: the font must be installed (a user's file; the
 // assets' own themes name a font and fall back when it is missing).
-Theme parse_theme(const fs::path& file, bool check_font) {
+Theme parse_theme(const fs::path& file, bool check_font, RunOutputs* outputs) {
     const std::string path = file.string();
     const std::string where = fmt::format("theme file '{}'", shown_text(path, 4096));
-    const std::string text = read_toml_input(path, "theme file");
+    const std::string text = read_toml_input(path, "theme file", outputs);
     toml::table doc;
     try {
         doc = toml::parse(text, path);
@@ -165,13 +165,13 @@ std::string find_asset_dir(const std::string& hint) {
                     "no folder there holds themes/ (name the assets folder; the dragon tool takes it from $DRAGON_ASSETS)");
 }
 
-Theme load_theme(const std::string& name_or_path, const std::string& asset_dir) {
+Theme load_theme(const std::string& name_or_path, const std::string& asset_dir, RunOutputs* outputs) {
     const fs::path given(name_or_path);
     std::error_code ec;
     if (given.extension() == ".toml" || name_or_path.find('/') != std::string::npos) {
         if (fs::is_directory(given, ec))
             throw InputError(fmt::format("theme file '{}' is a folder: give a .toml file", shown_text(name_or_path, 4096)));
-        return parse_theme(given, true);
+        return parse_theme(given, true, outputs);
     }
     const fs::path file = fs::path(find_asset_dir(asset_dir)) / "themes" / (name_or_path + ".toml");
     if (!fs::is_regular_file(file, ec)) {
@@ -181,7 +181,7 @@ Theme load_theme(const std::string& name_or_path, const std::string& asset_dir) 
                                      shown_text(name_or_path), here ? fmt::format(" (the file here is ./{})",
                                                                                  shown_text(name_or_path)) : ""));
     }
-    return parse_theme(file, false);
+    return parse_theme(file, false, outputs);
 }
 
 }  // namespace dragon

@@ -61,9 +61,9 @@ void write_through(AtomicFile& out, Put&& put) {
 
 }  // namespace
 
-void write_csv(const std::vector<Frame>& frames, const std::string& path, int digits) {
+void write_csv(const std::vector<Frame>& frames, const std::string& path, int digits, RunOutputs* outputs) {
     check_digits(digits);
-    AtomicFile out(path);
+    AtomicFile out(path, outputs);
     write_through(out, [&](std::FILE* f) { return put_csv(frames, f, digits); });
     out.commit();
 }
@@ -74,9 +74,9 @@ void print_csv(const std::vector<Frame>& frames, std::FILE* out, int digits) {
         throw FileError("standard output", "write the table to", std::strerror(errno));
 }
 
-void write_json(const std::vector<Frame>& frames, const std::string& path, int digits) {
+void write_json(const std::vector<Frame>& frames, const std::string& path, int digits, RunOutputs* outputs) {
     check_digits(digits);
-    AtomicFile out(path);
+    AtomicFile out(path, outputs);
     fmt::memory_buffer buf;
     auto put = [&buf]<typename... A>(fmt::format_string<A...> f, A&&... a) {
         fmt::format_to(std::back_inserter(buf), f, std::forward<A>(a)...);
@@ -102,11 +102,12 @@ void write_json(const std::vector<Frame>& frames, const std::string& path, int d
     out.commit();
 }
 
-void write_table(const std::vector<Frame>& frames, const std::string& path, int digits, const WorkbookOptions& workbook) {
+void write_table(const std::vector<Frame>& frames, const std::string& path, int digits, const WorkbookOptions& workbook,
+                 RunOutputs* outputs) {
     const std::string ext = extension_of(path);
-    if (ext == ".csv") return write_csv(frames, path, digits);
-    if (ext == ".json") return write_json(frames, path, digits);
-    if (ext == ".xlsx") return write_result_xlsx(frames, path, workbook);
+    if (ext == ".csv") return write_csv(frames, path, digits, outputs);
+    if (ext == ".json") return write_json(frames, path, digits, outputs);
+    if (ext == ".xlsx") return write_result_xlsx(frames, path, workbook, outputs);
     throw InputError(fmt::format("output '{}' has extension '{}': use .csv, .json or .xlsx", path, ext));
 }
 

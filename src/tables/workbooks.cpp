@@ -33,14 +33,16 @@ void save(const xlsx::Workbook& book, const AtomicFile& out, int level) {
 
 }  // namespace
 
-void write_result_xlsx(const std::vector<Frame>& frames, const std::string& path, const WorkbookOptions& options) {
-    AtomicFile out(path);
+void write_result_xlsx(const std::vector<Frame>& frames, const std::string& path, const WorkbookOptions& options,
+                       RunOutputs* outputs) {
+    AtomicFile out(path, outputs);
     write_result_xlsx(frames, out, options);
     out.commit();
 }
 
-void write_result2_xlsx(const Frame& frame, const std::string& path, const WorkbookOptions& options) {
-    AtomicFile out(path);
+void write_result2_xlsx(const Frame& frame, const std::string& path, const WorkbookOptions& options,
+                        RunOutputs* outputs) {
+    AtomicFile out(path, outputs);
     write_result2_xlsx(frame, out, options);
     out.commit();
 }

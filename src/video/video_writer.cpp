@@ -119,7 +119,7 @@ struct VideoWriter::Impl {
     bool finished = false;
 
     Impl(const std::string& path, const VideoOptions& o)
-        : format(video_format_for(path)), opt(checked(o, format)), file(path) {
+        : format(video_format_for(path)), opt(checked(o, format)), file(path, o.outputs) {
         const CodecChoice choice = codec_for(format);
         // The muxer by the target's name: the temporary file's name is not the user's choice.
         const AVOutputFormat* oformat = av_guess_format(nullptr, path.c_str(), nullptr);

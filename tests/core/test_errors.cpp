@@ -1,16 +1,12 @@
 // The library's errors as data: an input error names the value in the library's own terms, the
 // value as given and what is allowed (the CLI words them with its flags); a moment past the end
-// of the valid motion carries the jam; a file that cannot be written is a FileError naming it.
+// of the valid motion carries the jam. (A file that cannot be written is a FileError naming it:
+// tests/io/test_atomic_file.cpp.)
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
-
 #include "dragon/analyses.hpp"
-#include "dragon/atomic_file.hpp"
 #include "dragon/errors.hpp"
 #include "dragon/turnaround.hpp"
-#include "support/scratch.hpp"
 
 using namespace dragon;
 
@@ -64,14 +60,3 @@ TEST(Errors, AMomentPastTheValidMotionCarriesTheJam) {
     EXPECT_EQ(std::string(past.what()).find("--"), std::string::npos) << past.what();
 }
 
-TEST(Errors, AFileThatCannotBeWrittenIsAFileError) {
-    const std::filesystem::path dir = dragon_test::scratch_dir() / "vanishing";
-    std::filesystem::create_directories(dir);
-    const std::string target = (dir / "t.csv").string();
-    AtomicFile out(target);
-    std::ofstream(out.temp_path()) << "t,handle,x,y,speed\n";
-    std::filesystem::remove_all(dir);  // the folder goes away before the rename
-    const auto e = caught<FileError>([&] { out.commit(); });
-    EXPECT_EQ(e.path(), target);
-    EXPECT_FALSE(e.reason().empty());
-}

@@ -1,26 +1,17 @@
-// validate() checks the values a computation reads and no others; scenario files say which
-// values they set, and their own mistakes (a folder, [[dragon]], a stray key) are named.
+// validate() checks the values a computation reads and no others; a scenario's TOML text says
+// which values it sets, and its own mistakes ([[dragon]], a stray key) are named. (Files:
+// tests/io/test_scenario_file.cpp.)
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "dragon/chain.hpp"
 #include "dragon/scenario.hpp"
-#include "support/scratch.hpp"
 
-namespace fs = std::filesystem;
 using namespace dragon;
 
 namespace {
-
-std::string write_toml(const std::string& name, const std::string& text) {
-    const fs::path p = dragon_test::scratch_dir() / name;
-    std::ofstream(p) << text;
-    return p.string();
-}
 
 // The message and the values named by validate(s, values), or "" if it accepts.
 std::pair<std::string, ScenarioValues> refusal(const Scenario& s, ScenarioValues values) {
@@ -80,9 +71,9 @@ TEST(ScenarioValues, RefusalsNameTheValuesOfTheRule) {
         << what;
 }
 
-TEST(ScenarioFile, SaysWhichValuesItSets) {
-    const std::string path = write_toml("some.toml", "[dragon]\nwidth = 0.25\nbench_count = 5\n[path]\npitch = 0.1\n");
-    const LoadedScenario loaded = read_scenario_file(path);
+TEST(ScenarioText, SaysWhichValuesItSets) {
+    const LoadedScenario loaded =
+        parse_scenario_toml("[dragon]\nwidth = 0.25\nbench_count = 5\n[path]\npitch = 0.1\n", "some.toml");
     EXPECT_EQ(loaded.values, value::width | value::bench_count | value::pitch);
     EXPECT_EQ(loaded.scenario.bench.width, 0.25);
     EXPECT_EQ(loaded.scenario.bench.bench_count, 5);
@@ -90,22 +81,20 @@ TEST(ScenarioFile, SaysWhichValuesItSets) {
     EXPECT_EQ(loaded.scenario.bench.head_length, Scenario{}.bench.head_length);  // untouched
 }
 
-TEST(ScenarioFile, MistakesAreNamed) {
-    auto message = [](const std::string& path) {
+TEST(ScenarioText, MistakesAreNamed) {
+    auto message = [](const std::string& text) {
         try {
-            read_scenario_file(path);
+            parse_scenario_toml(text, "s.toml");
         } catch (const InputError& e) {
             return std::string(e.what());
         }
         return std::string("accepted");
     };
-    const std::string folder = dragon_test::scratch_dir().string();
-    EXPECT_EQ(message(folder), "scenario file '" + folder + "' is a folder: give a .toml file");
-    const std::string array = write_toml("array.toml", "[[dragon]]\nwidth = 0.3\n");
-    EXPECT_NE(message(array).find("[[dragon]] is not allowed: write the section once, as [dragon]"), std::string::npos)
-        << message(array);
-    const std::string stray = write_toml("stray.toml", "pitch = 0.5\n");
-    EXPECT_NE(message(stray).find("key 'pitch' is outside any section"), std::string::npos) << message(stray);
-    const std::string unknown = write_toml("unknown.toml", "[dragons]\nwidth = 0.3\n");
-    EXPECT_NE(message(unknown).find("unknown section [dragons]"), std::string::npos) << message(unknown);
+    const std::string array = message("[[dragon]]\nwidth = 0.3\n");
+    EXPECT_NE(array.find("scenario file 's.toml': [[dragon]] is not allowed: write the section once, as [dragon]"),
+              std::string::npos) << array;
+    const std::string stray = message("pitch = 0.5\n");
+    EXPECT_NE(stray.find("key 'pitch' is outside any section"), std::string::npos) << stray;
+    const std::string unknown = message("[dragons]\nwidth = 0.3\n");
+    EXPECT_NE(unknown.find("unknown section [dragons]"), std::string::npos) << unknown;
 }

@@ -24,6 +24,7 @@
 #include "cli/scenario_flags.hpp"
 #include "cli/sweep_row_check.hpp"
 #include "cli/sweep_setup.hpp"
+#include "dragon/row_files.hpp"
 #include "dragon/sweep.hpp"
 #include "fuzz_check.hpp"
 

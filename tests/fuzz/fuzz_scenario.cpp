@@ -23,6 +23,7 @@
 
 #include "cli/scenario_flags.hpp"
 #include "dragon/chain.hpp"
+#include "dragon/input_files.hpp"
 #include "dragon/scenario.hpp"
 #include "fuzz_check.hpp"
 
@@ -96,7 +97,7 @@ void fuzz_flags(const std::vector<std::string>& words) {
     }
     Scenario s;
     try {
-        s = flags.resolve();
+        s = flags.resolve(nullptr);  // no run: the fuzzer checks values, not outputs
     } catch (const InputError&) {
         return;
     }

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "dragon/analyses.hpp"
+#include "dragon/input_files.hpp"
 #include "dragon/render.hpp"
 #include "gallery/figures.hpp"
 #include "support/cli_run.hpp"

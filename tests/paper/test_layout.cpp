@@ -63,7 +63,7 @@ std::vector<Picture> drawn_by(const std::string& args) {
     {
         dragon::RunOutputs outputs;  // nothing is put in place: the files are not the point
         dragon::InlineExecutor here;  // every picture drawn on this thread, where the log records
-        EXPECT_EQ(reg.at(app.get_subcommands().front()->get_name())(here), 0) << args;
+        EXPECT_EQ(reg.at(app.get_subcommands().front()->get_name())(here, outputs), 0) << args;
     }
     std::vector<Picture> out;
     for (const LayoutItem& p : log.placed()) {

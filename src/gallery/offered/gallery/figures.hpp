@@ -40,6 +40,9 @@ struct FigureOptions {
     // Hears every text each figure puts on its picture (titles, notes, captions, labels, axis
     // names), with the figure's name: what the figures say, without reading their pixels.
     std::function<void(const std::string& figure, const std::string& text)> on_text;
+    // The run the figures (and the folder made for them) belong to: see dragon/atomic_file.hpp.
+    // Null: each file put in place as soon as it is written.
+    RunOutputs* outputs = nullptr;
 };
 
 struct FigureInfo {

@@ -18,7 +18,7 @@ namespace dragon::render {
 // `keep` (0xRRGGBB): colours kept exactly, each an entry of its own, where the picture holds
 // them (the theme's role colours: role_colours).
 void write_png8(cairo_surface_t* surface, const std::string& path, int max_colours = 256, double dpi = 0,
-                const std::vector<std::uint32_t>& keep = {});
+                const std::vector<std::uint32_t>& keep = {}, RunOutputs* outputs = nullptr);
 
 // An image surface (RGB24 or opaque ARGB32) as a 24-bit PNG's bytes, stating `dpi` (> 0) as
 // its resolution. Throws SolverError if libpng fails.

@@ -7,6 +7,7 @@
 #include <cairo.h>
 
 #include "dragon/picture_bytes.hpp"
+#include "dragon/atomic_file.hpp"
 #include "dragon/picture_size.hpp"
 
 namespace dragon::render {
@@ -21,7 +22,7 @@ PictureFormat picture_format(const std::string& path);
 // text, selectable and searchable. With a page size (a print size's), the PDF page and the SVG
 // are exactly that many points, the w x h px drawing scaled onto them.
 void write_vector(const std::string& path, PictureFormat format, int w, int h,
-                  const std::function<void(cairo_t*)>& paint, const Page& page = {});
+                  const std::function<void(cairo_t*)>& paint, const Page& page = {}, RunOutputs* outputs = nullptr);
 // The same picture's bytes (what write_vector writes). Throws SolverError if Cairo fails.
 std::string vector_bytes(PictureFormat format, int w, int h, const std::function<void(cairo_t*)>& paint,
                          const Page& page = {});

@@ -1,16 +1,15 @@
 // The rows' file of a sweep: rows appended whole and durable, a torn last line (a kill while it
 // was written) dropped on reading and cut off on reopening, so the next row starts on its own
-// line; and run_sweep, which makes every scenario not yet done exactly once and hands the rows
-// over one at a time.
+// line (dragon/row_files.hpp); and a sweep file read from disk.
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <filesystem>
 #include <fstream>
-#include <set>
 #include <string>
 #include <vector>
 
+#include "dragon/input_files.hpp"
+#include "dragon/row_files.hpp"
 #include "dragon/sweep.hpp"
 #include "support/scratch.hpp"
 
@@ -69,41 +68,6 @@ TEST(SweepRows, TornLastLineIsDroppedAndCutOffBeforeTheNextRow) {
     text = scan(file, 2);
     EXPECT_EQ(preamble.size(), 2u);
     EXPECT_EQ(text.rows, 0u);
-}
-
-TEST(SweepRun, EachScenarioNotDoneIsMadeOnceAndEmittedOneAtATime) {
-    const SweepGrid grid({parse_axis("width=0.1:0.5:9"), parse_axis("speed=1,2,3")});
-    std::vector<bool> done(grid.size(), false);
-    for (std::size_t i = 0; i < grid.size(); i += 4) done[i] = true;
-    ThreadPool pool(3);
-    for (const Shard shard : {Shard{1, 1}, Shard{2, 5}}) {
-        std::vector<std::atomic<int>> made(grid.size());
-        std::atomic<int> inside{0};
-        std::set<std::size_t> emitted;
-        std::int64_t last_progress = 0, total = 0;
-        run_sweep<std::string>(
-            grid, shard, done, pool,
-            [&](std::size_t i, int) {
-                ++made[i];
-                return csv_line(grid.cells(i));
-            },
-            [&](std::size_t i, std::string&& row) {
-                EXPECT_EQ(inside++, 0);  // never two at once
-                EXPECT_EQ(row, csv_line(grid.cells(i)));
-                EXPECT_TRUE(emitted.insert(i).second);
-                --inside;
-            },
-            [&](std::int64_t d, std::int64_t t) { last_progress = d, total = t; });
-        std::size_t expected = 0;
-        for (std::size_t i = 0; i < grid.size(); ++i) {
-            const bool wanted = shard.holds(i) && !done[i];
-            EXPECT_EQ(made[i].load(), wanted ? 1 : 0) << i;
-            EXPECT_EQ(emitted.count(i), wanted ? 1u : 0u) << i;
-            expected += wanted;
-        }
-        EXPECT_EQ(static_cast<std::size_t>(total), expected);
-        EXPECT_EQ(last_progress, total);
-    }
 }
 
 TEST(SweepFile, ReadsTheCommandLinesKeys) {

@@ -26,24 +26,8 @@ const char* kind_of(mode_t mode) {
 
 }  // namespace
 
-std::string shown_text(const std::string& text, std::size_t most) {
-    std::string out;
-    std::size_t shown = 0;
-    for (const char c : text) {
-        if (shown == most) break;
-        ++shown;
-        const auto u = static_cast<unsigned char>(c);
-        if (c == '\n') out += "\\n";
-        else if (c == '\r') out += "\\r";
-        else if (c == '\t') out += "\\t";
-        else if (u < 0x20 || u == 0x7f) out += fmt::format("\\x{:02x}", u);
-        else out += c;
-    }
-    if (shown < text.size()) out += fmt::format("... ({} characters)", text.size());
-    return out;
-}
-
-InputFile::InputFile(const std::string& path, std::string what, const char* expected, bool output_too)
+InputFile::InputFile(const std::string& path, std::string what, const char* expected, bool output_too,
+                     RunOutputs* outputs)
     : path_(path), what_(std::move(what)) {
     // Not blocking: opening a FIFO for reading would otherwise wait for a writer for ever.
     fd_ = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
@@ -67,7 +51,7 @@ InputFile::InputFile(const std::string& path, std::string what, const char* expe
     ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) & ~O_NONBLOCK);
     if (!output_too) {
         try {
-            run_outputs::note_input(st.st_dev, st.st_ino, what_, path_);
+            run_outputs::note_input(outputs, st.st_dev, st.st_ino, what_, path_);
         } catch (...) {
             ::close(fd_);
             throw;
@@ -102,8 +86,8 @@ std::string InputFile::read_rest(std::size_t max_bytes, const std::string& limit
     return text;
 }
 
-std::string read_toml_input(const std::string& path, const std::string& what) {
-    InputFile file(path, what, "a .toml file");
+std::string read_toml_input(const std::string& path, const std::string& what, RunOutputs* outputs) {
+    InputFile file(path, what, "a .toml file", false, outputs);
     return file.read_rest(kMaxTomlBytes, "1 MiB");
 }
 

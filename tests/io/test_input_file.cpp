@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "dragon/input_file.hpp"
+#include "dragon/input_files.hpp"
 #include "dragon/scenario.hpp"
 #include "dragon/sweep.hpp"
 #include "support/scratch.hpp"

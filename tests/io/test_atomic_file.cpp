@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -17,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "dragon/atomic_file.hpp"
+#include "dragon/input_files.hpp"
 #include "dragon/scenario.hpp"
 #include "support/scratch.hpp"
 
@@ -42,9 +44,9 @@ std::vector<std::string> hidden_files(const fs::path& dir) {
     return out;
 }
 
-std::string refusal(const std::string& target) {
+std::string refusal(const std::string& target, RunOutputs* run = nullptr) {
     try {
-        AtomicFile f(target);
+        AtomicFile f(target, run);
     } catch (const InputError& e) {
         return e.what();
     }
@@ -149,8 +151,8 @@ mode_t mode_of(const fs::path& p) {
     return ::stat(p.c_str(), &st) == 0 ? st.st_mode & 07777 : 0;
 }
 
-void write_through(const std::string& target, const std::string& text) {
-    AtomicFile f(target);
+void write_through(const std::string& target, const std::string& text, RunOutputs* run = nullptr) {
+    AtomicFile f(target, run);
     write(f.temp_path(), text);
     f.commit();
 }
@@ -315,8 +317,8 @@ TEST(RunOutputs, FilesArePutInPlaceOnlyWhenTheRunCommits) {
     write((dir / "kept.csv").string(), "old");
     {
         RunOutputs run;
-        write_through((dir / "kept.csv").string(), "new");
-        write_through((dir / "fresh.csv").string(), "new");
+        write_through((dir / "kept.csv").string(), "new", &run);
+        write_through((dir / "fresh.csv").string(), "new", &run);
         EXPECT_EQ(read(dir / "kept.csv"), "old");  // held
         EXPECT_FALSE(fs::exists(dir / "fresh.csv"));
     }  // the run failed: nothing new
@@ -325,9 +327,13 @@ TEST(RunOutputs, FilesArePutInPlaceOnlyWhenTheRunCommits) {
     EXPECT_TRUE(hidden_files(dir).empty());
     {
         RunOutputs run;
-        write_through((dir / "kept.csv").string(), "new");
-        write_through((dir / "fresh.csv").string(), "new");
-        EXPECT_THROW(RunOutputs second, std::logic_error);
+        write_through((dir / "kept.csv").string(), "new", &run);
+        write_through((dir / "fresh.csv").string(), "new", &run);
+        // A file given no run is put in place at once, a run open or not.
+        fs::remove(dir / "alone.csv");
+        write_through((dir / "alone.csv").string(), "at once");
+        EXPECT_EQ(read(dir / "alone.csv"), "at once");
+        EXPECT_FALSE(fs::exists(dir / "fresh.csv"));
         run.commit();
     }
     EXPECT_EQ(read(dir / "kept.csv"), "new");
@@ -343,25 +349,31 @@ TEST(RunOutputs, NoOutputIsAnInputOfTheRun) {
     fs::create_symlink(sc, link);
     {
         RunOutputs run;
-        load_scenario(sc.string());
+        load_scenario(sc.string(), {}, &run);
         // Through any name of the same file: a link, or the path itself.
         for (const fs::path& p : {sc, link}) {
-            const std::string why = refusal(p.string());
+            const std::string why = refusal(p.string(), &run);
             EXPECT_EQ(why, "output path '" + p.string() + "' is the scenario file '" + sc.string() +
                                "' this run reads: give the output another name, so that the input is not lost");
         }
     }
     {
         RunOutputs run;
-        AtomicFile out(link.string());  // the output first, then the input: refused when read
+        AtomicFile out(link.string(), &run);  // the output first, then the input: refused when read
         try {
-            load_scenario(sc.string());
+            load_scenario(sc.string(), {}, &run);
             ADD_FAILURE() << "read";
         } catch (const InputError& e) {
             EXPECT_EQ(std::string(e.what()), "the scenario file '" + sc.string() + "' is also the output '" +
                                                  link.string() + "': give the output another name, so that the input "
                                                                  "is not lost");
         }
+    }
+    // Another run knows nothing of this one's inputs.
+    {
+        RunOutputs run, other;
+        load_scenario(sc.string(), {}, &run);
+        EXPECT_EQ(refusal(sc.string(), &other), "accepted");
     }
     // Outside a run, a program may read a file and write it later.
     load_scenario(sc.string());
@@ -381,7 +393,7 @@ TEST(RunOutputs, FilesCommittedFromSeveralThreadsArePlacedTogether) {
                 for (int k = 0; k < 8; ++k) {
                     char name[32];
                     std::snprintf(name, sizeof name, "f%d-%d.csv", t, k);
-                    write_through((dir / name).string(), "x");
+                    write_through((dir / name).string(), "x", &run);
                 }
             });
         for (std::thread& w : writers) w.join();
@@ -392,4 +404,56 @@ TEST(RunOutputs, FilesCommittedFromSeveralThreadsArePlacedTogether) {
     int placed = 0;
     for (const auto& e : fs::directory_iterator(dir)) placed += read(e.path()) == "x";
     EXPECT_EQ(placed, 32);
+}
+
+// Two runs open at once, each on its own thread (two Python calls, say): each holds its own
+// files, and one that fails takes only its own with it.
+TEST(RunOutputs, TwoRunsOnTwoThreadsKeepTheirFilesApart) {
+    const fs::path dir = dragon_test::scratch_dir() / "two_runs";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::atomic<int> opened{0};
+    // Each run waits for the other to be open before it writes, so that both are open at once.
+    const auto both_open = [&] {
+        ++opened;
+        while (opened.load() < 2) std::this_thread::yield();
+    };
+    std::thread committed([&] {
+        RunOutputs run;
+        both_open();
+        for (int k = 0; k < 5; ++k) write_through((dir / ("kept" + std::to_string(k) + ".csv")).string(), "a", &run);
+        ASSERT_TRUE(make_output_folder((dir / "kept_folder").string(), &run));
+        run.commit();
+    });
+    std::thread failed([&] {
+        RunOutputs run;
+        both_open();
+        for (int k = 0; k < 5; ++k) write_through((dir / ("lost" + std::to_string(k) + ".csv")).string(), "b", &run);
+        ASSERT_TRUE(make_output_folder((dir / "lost_folder" / "inner").string(), &run));
+    });  // never committed: as a run that failed
+    committed.join();
+    failed.join();
+    for (int k = 0; k < 5; ++k) {
+        EXPECT_EQ(read(dir / ("kept" + std::to_string(k) + ".csv")), "a") << k;
+        EXPECT_FALSE(fs::exists(dir / ("lost" + std::to_string(k) + ".csv"))) << k;
+    }
+    EXPECT_TRUE(fs::is_directory(dir / "kept_folder"));
+    EXPECT_FALSE(fs::exists(dir / "lost_folder"));
+    EXPECT_TRUE(hidden_files(dir).empty());
+}
+
+TEST(AtomicFile, AFileThatCannotBeWrittenIsAFileError) {
+    const fs::path dir = dragon_test::scratch_dir() / "vanishing";
+    fs::create_directories(dir);
+    const std::string target = (dir / "t.csv").string();
+    AtomicFile out(target);
+    std::ofstream(out.temp_path()) << "t,handle,x,y,speed\n";
+    fs::remove_all(dir);  // the folder goes away before the rename
+    try {
+        out.commit();
+        ADD_FAILURE() << "committed";
+    } catch (const FileError& e) {
+        EXPECT_EQ(e.path(), target);
+        EXPECT_FALSE(e.reason().empty());
+    }
 }

@@ -1,5 +1,5 @@
-// A sweep's rows on disk: CSV fields, reading a rows' file back (dropping a torn last line), and
-// the durable append-only log rows are written to as they finish.
+// A sweep's rows on disk: reading a rows' file back (dropping a torn last line), and the durable
+// append-only log rows are written to as they finish.
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -7,61 +7,20 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 
 #include <fmt/format.h>
 
 #include "file_placement.hpp"
 #include "run_outputs.hpp"
 #include "dragon/input_file.hpp"
-#include "dragon/sweep.hpp"
+#include "dragon/row_files.hpp"
 
 namespace dragon {
-
-std::string csv_field(std::string_view text) {
-    if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
-    std::string out = "\"";
-    for (char c : text) {
-        if (c == '"') out += '"';
-        out += c;
-    }
-    return out + "\"";
-}
-
-std::string csv_line(const std::vector<std::string>& fields) {
-    std::string out;
-    for (std::size_t k = 0; k < fields.size(); ++k) {
-        if (k) out += ',';
-        out += csv_field(fields[k]);
-    }
-    return out;
-}
-
-std::vector<std::string> split_csv(std::string_view line) {
-    std::vector<std::string> out(1);
-    bool quoted = false;
-    for (std::size_t i = 0; i < line.size(); ++i) {
-        const char c = line[i];
-        if (quoted) {
-            if (c != '"') out.back() += c;
-            else if (i + 1 < line.size() && line[i + 1] == '"') out.back() += '"', ++i;
-            else quoted = false;
-        } else if (c == '"') {
-            quoted = true;
-        } else if (c == ',') {
-            out.emplace_back();
-        } else {
-            out.back() += c;
-        }
-    }
-    if (quoted) throw InputError(fmt::format("a CSV line has an unclosed quote: {:.60}", line));
-    return out;
-}
 
 RowFileScan scan_row_file(const std::string& path, std::size_t preamble_lines,
                           const std::function<void(const std::vector<std::string>&)>& on_preamble,
                           const std::function<void(const std::string&)>& on_row, const RowFileLimits& limits) {
-    InputFile file(path, limits.what, "a .csv file", limits.output_too);
+    InputFile file(path, limits.what, "a .csv file", limits.output_too, limits.outputs);
     RowFileScan out;
     bool heard = false;
     std::size_t number = 0;  // of the line being read
@@ -123,7 +82,7 @@ RowFileScan scan_row_file(const std::string& path, std::size_t preamble_lines,
 }
 
 std::string read_first_line(const std::string& path, const RowFileLimits& limits) {
-    InputFile file(path, limits.what, "a .csv file", limits.output_too);
+    InputFile file(path, limits.what, "a .csv file", limits.output_too, limits.outputs);
     std::string line;
     // Only the first line is wanted: reading stops at its end.
     char buffer[4096];
@@ -195,7 +154,7 @@ void RowLog::append(const std::string& line) {
     write_durably(fd_, line + "\n", path_);
 }
 
-void RowLog::finish(const std::string& target) {
+void RowLog::finish(const std::string& target, RunOutputs* outputs) {
     const std::lock_guard<std::mutex> hold(lock_);
     if (::close(fd_) != 0) {
         fd_ = -1;
@@ -210,7 +169,7 @@ void RowLog::finish(const std::string& target) {
     }
     struct stat st {};
     if (::stat(path_.c_str(), &st) == 0) p.new_mode = st.st_mode & 0777;  // made with 0666 less the umask
-    if (run_outputs::hold(p, -1)) return;
+    if (run_outputs::hold(outputs, p, -1)) return;
     placement::place_all({p});
 }
 

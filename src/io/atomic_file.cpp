@@ -30,7 +30,7 @@ std::string extension_of(const std::string& path) {
     return ext;
 }
 
-AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {
+AtomicFile::AtomicFile(std::string target, RunOutputs* outputs) : target_(std::move(target)), outputs_(outputs) {
     if (target_.empty()) throw InputError("output path is empty: give a file name");
     const std::string shown = shown_text(target_, 4096);
     place_ = placement::resolve_target(target_);
@@ -43,7 +43,7 @@ AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {
     if (::access(dir.c_str(), W_OK) != 0)
         throw InputError(fmt::format("output path '{}' is not writable: no permission to write in '{}'", shown,
                                      shown_text(dir.string(), 4096)));
-    run_outputs::note_output(target_, place_);
+    run_outputs::note_output(outputs_, target_, place_);
     temp_ = placement::hidden_name(place_, "tmp");
     // Registered before the file exists, so a kill at any later moment finds it.
     live_slot_ = live_temp::add(temp_);
@@ -83,7 +83,7 @@ placement::Placement placement_of(const std::string& temp, const std::string& pl
 
 void AtomicFile::commit() {
     const placement::Placement p = placement_of(temp_, place_, target_, new_mode_);
-    if (run_outputs::hold(p, live_slot_)) {
+    if (run_outputs::hold(outputs_, p, live_slot_)) {
         // The run owns the temporary file now, and its entry for a kill's cleanup.
         committed_ = true;
         live_slot_ = -1;
@@ -99,18 +99,25 @@ void AtomicFile::commit() {
 FileError AtomicFile::write_error(const std::string& reason) const { return FileError(target_, "write", reason); }
 
 void commit_together(const std::vector<AtomicFile*>& files) {
-    std::vector<placement::Placement> all;
-    for (const AtomicFile* f : files) all.push_back(placement_of(f->temp_, f->place_, f->target_, f->new_mode_));
-    bool held = true;
-    for (std::size_t i = 0; i < files.size() && held; ++i) held = run_outputs::hold(all[i], files[i]->live_slot_);
-    if (held) {
-        for (AtomicFile* f : files) f->committed_ = true, f->live_slot_ = -1;
-        return;
-    }
-    placement::place_all(all);
+    // A file given a run goes with that run's files; the others are placed together now.
+    std::vector<placement::Placement> now;
+    std::vector<AtomicFile*> placed;
     for (AtomicFile* f : files) {
+        if (!f->outputs_) {
+            now.push_back(placement_of(f->temp_, f->place_, f->target_, f->new_mode_));
+            placed.push_back(f);
+        }
+    }
+    placement::place_all(now);
+    for (AtomicFile* f : placed) {
         f->committed_ = true;
         live_temp::drop(f->live_slot_);
+        f->live_slot_ = -1;
+    }
+    for (AtomicFile* f : files) {
+        if (!f->outputs_) continue;
+        run_outputs::hold(f->outputs_, placement_of(f->temp_, f->place_, f->target_, f->new_mode_), f->live_slot_);
+        f->committed_ = true;
         f->live_slot_ = -1;
     }
 }
