@@ -73,6 +73,7 @@ void register_film(CLI::App& app, Registry& reg) {
             throw InputError(fmt::format("--colours {} is not allowed for .{}: it sets a GIF's palette", *opt->colours,
                                          to_string(format)));
         Storyboard board = load_storyboard(opt->story, asset_dir());
+        print_warnings(board.warnings);
         if (!opt->size.empty()) {
             const PictureSize size = parse_picture_size(opt->size, kMaxVideoSide);
             board.film.width = size.width;
