@@ -32,6 +32,7 @@ import os
 import sys
 import threading
 import time
+import warnings
 from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
 
 from . import _benchdragon as _core
@@ -76,8 +77,14 @@ class Scenario:
 
     @classmethod
     def from_toml(cls, path: Union[str, os.PathLike], **overrides: float) -> "Scenario":
-        """The scenario a TOML file describes (as ``dragon --scenario FILE``), keywords over it."""
-        values, _given = _core._scenario_from_toml(os.fspath(path))
+        """The scenario a TOML file describes (as ``dragon --scenario FILE``), keywords over it.
+
+        An old name in the file (``[motion] head_speed``, the sections ``[dragon]``, ``[path]``,
+        ``[motion]``) is read with a ``FutureWarning`` naming the key to write instead, one per
+        old name."""
+        values, _given, old_names = _core._scenario_from_toml(os.fspath(path))
+        for message in old_names:
+            warnings.warn(message, FutureWarning, stacklevel=2)
         return cls(**{**values, **overrides})
 
     def replace(self, **changes: float) -> "Scenario":
@@ -677,7 +684,8 @@ def film(storyboard: Union[str, os.PathLike], out: Union[str, os.PathLike], *, a
     """A storyboard's shots assembled into one film (``dragon film``): `out` is .mp4, .webm or
     .gif, or .png with `at` (s into the film) for one poster frame. `size` (width, height) and
     `fps` override the storyboard's [film] settings; `crf`, `preset`, `tune`, `colours` are the
-    encoder's. Storyboards are TOML (see ``ASSETS/films/contest.toml``)."""
+    encoder's. Storyboards are TOML (see ``ASSETS/films/contest.toml``); an old name in a
+    scenario file a shot names is read with a ``FutureWarning`` naming the key to write instead."""
     encoder = {"crf": crf}
     if preset is not None:
         encoder["preset"] = preset
@@ -688,7 +696,8 @@ def film(storyboard: Union[str, os.PathLike], out: Union[str, os.PathLike], *, a
     dims = None if size is None else _picture_size(size)
     callback, close = _progress(progress, "frames", "film")
     try:
-        return _core._film(os.fspath(storyboard), os.fspath(out), dims, fps, at, encoder, ASSETS, callback)
+        return _core._film(os.fspath(storyboard), os.fspath(out), dims, fps, at, encoder, ASSETS, callback,
+                           lambda message: warnings.warn(message, FutureWarning, stacklevel=3))
     finally:
         close()
 
