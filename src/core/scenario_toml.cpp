@@ -8,7 +8,7 @@
 namespace dragon {
 
 std::string scenario_toml(const Scenario& s) {
-    std::string out = "# A scenario: dragon COMMAND --scenario FILE.toml (the keys as `dragon keys` names them)\n";
+    std::string out = "# A scenario: one key a value, named as the key table names it (dragon/keys.hpp)\n";
     for (const KeyInfo& k : all_keys()) {
         if (!in_scenario_file(k.key)) continue;
         if (k.key == Key::path) {
