@@ -10,10 +10,10 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 printf '[dragon\nwidth = 0.3\n' > bad.toml
-printf '[dragon]\nwidht = 0.3\n' > unknown.toml
+printf 'widht = 0.3\n' > unknown.toml
 printf '[[dragon]]\nwidth = 0.3\n' > array.toml
-printf '[dragon]\nwidth = nan\n' > nan.toml
-printf '[path]\npitch = 0.1\n' > narrow.toml
+printf 'width = nan\n' > nan.toml
+printf 'pitch = 0.1\n' > narrow.toml
 # Storyboards (tests/cli/test_cli_film.cpp, tests/film/test_storyboard.cpp)
 small='[film]\nsize = "96x64"\nfps = 5\n'
 printf "$small"'[[shot]]\nfrom = 10\nto = 12\nrate = 2\n' > story.toml
@@ -212,10 +212,10 @@ row render --time 1 --theme /tmp -o x.png
 
 header "Hostile and corrupt input files (tests/cli/test_cli_hostile.cpp; times and memory: scripts/limits.sh)"
 # Each made just before its row (row removes *.png and the like after each).
-printf '[dragon]\nwidth=0.3\n' > sc.csv; row simulate --to 1 --scenario sc.csv -o sc.csv
+printf 'width=0.3\n' > sc.csv; row simulate --to 1 --scenario sc.csv -o sc.csv
 ln -sf sc.csv link.csv; row simulate --to 1 --scenario sc.csv -o link.csv
-printf 'measure="max-speed"\nvary=["arc-ratio=1,2"]\n' > s2.csv; row sweep s2.csv -o s2.csv
-printf 'scenario="sc.csv"\nmeasure="max-speed"\nvary=["arc-ratio=1,2"]\n' > s3.toml; row sweep s3.toml -o sc.csv
+printf 'measure="max-speed"\nvary=["arc_ratio=1,2"]\n' > s2.csv; row sweep s2.csv -o s2.csv
+printf 'scenario="sc.csv"\nmeasure="max-speed"\nvary=["arc_ratio=1,2"]\n' > s3.toml; row sweep s3.toml -o sc.csv
 printf '[film]\nsize="320x180"\n[[shot]]\ntitle="a"\nduration=1\n' > st.png; row film st.png -o st.png --at 0.5
 printf '[colours]\nhead="#ff0000"\n' > t.png; row render --time 1 --theme ./t.png -o t.png
 "$dragon" sweep --vary pitch=0.5,0.6 --measure collide -q -o good.csv
@@ -238,7 +238,7 @@ row sweep --vary pitch=0.5,0.6 --measure collide --resume -o linked.csv
 row sweep merge m.csv part.csv
 row simulate --to 1 --scenario /dev/zero
 row sweep /dev/zero
-printf 'scenario="/dev/zero"\nmeasure="max-speed"\nvary=["arc-ratio=1,2"]\n' > s4.toml; row sweep s4.toml
+printf 'scenario="/dev/zero"\nmeasure="max-speed"\nvary=["arc_ratio=1,2"]\n' > s4.toml; row sweep s4.toml
 row sweep merge m.csv good.csv /dev/zero
 mkfifo fifo
 row simulate --to 1 --scenario fifo
@@ -258,7 +258,7 @@ row film shots.toml -o poster.png --at 0.5
 row film title.toml -o poster.png --at 0.5
 row film captions.toml -o poster.png --at 0.5
 row sweep --vary arc-ratio=1,2 --measure max-speed --limit nan
-printf 'measure="max-speed"\nvary=["arc-ratio=1,2"]\n[max-speed]\nlimit="1e999"\n' > s5.toml; row sweep s5.toml
+printf 'measure="max-speed"\nvary=["arc_ratio=1,2"]\n[max-speed]\nlimit="1e999"\n' > s5.toml; row sweep s5.toml
 row sweep --vary width=0.3,0.31 --measure min-pitch --grid 0
 row sweep --vary width=0.3,0.31 --measure min-pitch --lo 0.5 --hi 0.4
 printf 'bogus=1\n' > th1.toml; row render --time 1 --theme th1.toml -o x.png
@@ -269,7 +269,7 @@ printf 'font="No Such Font Anywhere"\n' > th5.toml; row render --time 1 --theme 
 row render --time 1 --theme /dev/zero -o x.png
 row render --time 1 --theme fifo -o x.png
 row render --time 1 --theme ./fifo -o x.png
-printf '[dragon]\nwidth = 9223372036854775807\n' > wide.toml; row simulate --to 1 --scenario wide.toml
+printf 'width = 9223372036854775807\n' > wide.toml; row simulate --to 1 --scenario wide.toml
 ln -sf /dev/zero zero.toml
 printf '[film]\nsize="320x180"\nscenario="zero.toml"\n[[shot]]\nto=3\nrate=1\n' > story-zero.toml; row film story-zero.toml -o x.mp4
 printf '[film]\nsize="320x180"\n[[shot]]\nfrom=[1]\nto=3\nrate=1\n' > story-list.toml; row film story-list.toml -o x.mp4

@@ -37,8 +37,9 @@ echo '## Keys'
 echo
 echo 'Every value a user can set, from the library'"'"'s one description (`include/dragon/keys.hpp`):'
 echo 'flags and the web page'"'"'s URL spell a name with hyphens, TOML files and Python with'
-echo 'underscores; "-" under flag: the library'"'"'s and Python'"'"'s only. `dragon keys --json` prints the'
-echo 'same as JSON.'
+echo 'underscores (the name below; a scenario file'"'"'s old sections `[dragon]`, `[path]`, `[motion]` are'
+echo 'read with a warning, see usage.md); "-" under flag: the library'"'"'s and Python'"'"'s only.'
+echo '`dragon keys --json` prints the same as JSON.'
 echo
 echo '```text'
 "$dragon" keys

@@ -28,7 +28,7 @@ row() {
 }
 header() { printf '\n## %s\n\n| Case | Exit | Seconds | MB | First line on stderr |\n|---|---|---|---|---|\n' "$1"; }
 
-printf '[dragon]\nwidth=0.3\n' > sc.csv
+printf 'width=0.3\n' > sc.csv
 printf 'measure="max-speed"\nvary=["arc-ratio=1,2"]\n' > s2.csv
 printf '[film]\nsize="320x180"\n[[shot]]\ntitle="a"\nduration=1\n' > st.png
 "$dragon" sweep --vary pitch=0.5,0.6 --measure collide -q -o good.csv

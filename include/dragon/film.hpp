@@ -146,6 +146,8 @@ struct Storyboard {
     std::string asset_dir;  // where its presets and named themes were looked for
     FilmSettings film;       // the [film] table
     std::vector<Shot> shots;  // in film order
+    // One per old name in a scenario file its shots name (each file read once), in the order read.
+    KeyWarnings warnings;
 };
 
 // Reads a storyboard: unknown keys, wrong types, values out of range and more than the limits

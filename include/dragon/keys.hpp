@@ -9,6 +9,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace dragon {
 
@@ -45,11 +46,25 @@ struct KeyInfo {
     ScenarioValues scenario = 0;  // the scenario value it sets (value::*), 0 for none
 };
 
+// A file used an old name for a key and was read all the same: which key, the old name as the
+// file wrote it ("[motion] head_speed", "body-length"), and one sentence naming the file, the old
+// name and the key's name today. The library returns these with what it read (a scenario, a
+// sweep file, a storyboard) and never prints them; the CLI prints each as a warning line on
+// stderr, Python warns with a FutureWarning.
+struct KeyWarning {
+    Key key;               // the key the old name sets
+    std::string old_name;  // as the file wrote it
+    std::string message;   // "scenario file 'x.toml': [motion] head_speed is an old name: write speed = 1 ..."
+};
+using KeyWarnings = std::vector<KeyWarning>;
+
 // Every key, in the order of the enum (key_info(k).key == k).
 std::span<const KeyInfo> all_keys();
 const KeyInfo& key_info(Key k);
 // The key named `name` (hyphens and underscores alike), or nullptr.
 const KeyInfo* find_key(std::string_view name);
+// The key named `name` exactly as TOML files and Python spell it (underscores), or nullptr.
+const KeyInfo* find_toml_key(std::string_view name);
 // The name with hyphens: the CLI's flag without "--", the web page's URL key.
 std::string hyphenated(Key k);
 // The scenario key that sets `value` (one value:: bit; the lowest one of several), Key::none if none.

@@ -2,8 +2,10 @@
 // Contest defaults are built in; a TOML file and command-line flags override them.
 #pragma once
 
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "dragon/errors.hpp"
 
@@ -105,17 +107,44 @@ void validate(const Scenario& s, ScenarioValues values);
 // validate(s, values_read(s.path.kind)): what a Simulation of s needs.
 void validate(const Scenario& s);
 
-// A scenario read from a TOML file, and which values the file set.
+// A scenario file: flat keys named as the key table names them (dragon/keys.hpp), one rule for
+// every front end: the flag's name with underscores.
+//     pitch = 0.55        # --pitch
+//     speed = 1.0         # --speed
+//     bench_count = 223   # --bench-count
+//     path = "spiral"     # --path
+// The old form, sections [dragon], [path] and [motion] with [path] kind and [motion] head_speed,
+// is read too, each old name with one KeyWarning naming its key today.
+
+// A scenario read from a TOML file, which values the file set, and a warning for each old name.
 struct LoadedScenario {
     Scenario scenario;          // the file's values over the base
     ScenarioValues values = 0;  // the values the file set
+    KeyWarnings warnings;       // one per old name the file used, section by section
 };
-// A TOML scenario's `text` over `base` (missing keys keep base's values), `origin` naming it in
-// messages (its file's path); throws InputError for malformed TOML, an unknown section or key,
-// or a value of the wrong type. Values are not range-checked here: validate() does that for
-// those a computation reads. (read_scenario_file and load_scenario, dragon/input_files.hpp,
-// read a file; the io component.)
+
+// An old name a scenario file may still use: "[section] name", and the key it sets today.
+struct OldScenarioName {
+    std::string_view section;  // "dragon", "path" or "motion"
+    std::string_view name;     // "head_speed"
+    Key key;                   // Key::speed
+};
+// Every old name, section by section.
+std::span<const OldScenarioName> old_scenario_names();
+// Whether a scenario file holds this key: every key that sets a scenario value, and the path.
+bool in_scenario_file(Key k);
+
+// A scenario from a TOML file's text over `base` (missing keys keep base's values); `origin`
+// names the file in messages. Throws InputError for malformed TOML, an unknown section or key
+// (listing the allowed ones), a value of the wrong type (with its Key), or one key given in both
+// forms (naming both). Values are not range-checked here: validate() does that for those a
+// computation reads. Reads no file (read_scenario_file and load_scenario, dragon/input_files.hpp,
+// the io component, read one).
 LoadedScenario parse_scenario_toml(const std::string& text, const std::string& origin, Scenario base = {});
+
+// The scenario as a file in today's form, every value written (a key per line, path first): what
+// parse_scenario_toml reads back to `s`, digit for digit.
+std::string scenario_toml(const Scenario& s);
 
 // "spiral" or "turnaround".
 const char* to_string(PathKind k);

@@ -129,14 +129,18 @@ void run_sweep(const SweepGrid& grid, Shard shard, const std::vector<bool>& done
     });
 }
 
-// What a sweep file says about the sweep: read from a TOML file of the same keys as the
-// command line (see assets/sweeps/). Values stay text, as on a command line; the caller parses
-// them as it parses its flags.
+// What a sweep file says about the sweep (see assets/sweeps/): the command line's keys, a
+// scenario value named as TOML names it (body_length), as in a scenario file. Values stay text,
+// as on a command line; the caller parses them as it parses its flags.
 struct SweepFile {
-    std::vector<std::string> measures;  // measure = ["min-pitch", ...]
-    std::vector<std::string> vary;      // vary = ["width=0.20:0.40:21", ...], the first axis first
-    std::string scenario;               // scenario = "file.toml", relative to the sweep file; "" if none
-    // [fixed] name = value: scenario flags without their dashes, each value as text.
+    std::vector<std::string> measures;  // measure = ["min-pitch", ...]: the measures' (commands') names
+    // vary = ["width=0.20:0.40:21", "body_length=1.6:2.8:25"], the first axis first; held as
+    // --vary takes them, the name with hyphens ("body-length=1.6:2.8:25").
+    std::vector<std::string> vary;
+    // scenario = "file.toml": as written (parse_sweep_file), relative to the sweep file's folder
+    // once read_sweep_file has read it; "" if none.
+    std::string scenario;
+    // [fixed] name = value: the scenario value's key name (underscores), its value as text.
     std::vector<std::pair<std::string, std::string>> fixed;
     // [measure] key = value (a table per measure): ("min-pitch", "lo", "width+0.05").
     struct Option {
@@ -145,11 +149,13 @@ struct SweepFile {
         std::string value;    // "width+0.05", as text
     };
     std::vector<Option> options;  // one per key given
+    // One per old name read: a scenario value named as its flag is (body-length), in [fixed] or vary.
+    KeyWarnings warnings;
 };
 // The sweep file's TOML `text`, `origin` naming it in messages (its path: a scenario it names
-// is relative to it). Throws InputError naming the origin and the key for malformed TOML, an
-// unknown key, or a value of the wrong type. (read_sweep_file, dragon/input_files.hpp, reads
-// the file; the io component.)
+// is relative to it). Throws InputError naming the file and the key for malformed TOML, an
+// unknown key or scenario value (listing the allowed names), or a value of the wrong type.
+// Reads no file (read_sweep_file, dragon/input_files.hpp, the io component, reads one).
 SweepFile parse_sweep_file(const std::string& text, const std::string& origin);
 
 }  // namespace dragon

@@ -32,6 +32,7 @@ import os
 import sys
 import threading
 import time
+import warnings
 from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
 
 from . import _benchdragon as _core
@@ -76,8 +77,14 @@ class Scenario:
 
     @classmethod
     def from_toml(cls, path: Union[str, os.PathLike], **overrides: float) -> "Scenario":
-        """The scenario a TOML file describes (as ``dragon --scenario FILE``), keywords over it."""
-        values, _given = _core._scenario_from_toml(os.fspath(path))
+        """The scenario a TOML file describes (as ``dragon --scenario FILE``), keywords over it.
+
+        An old name in the file (``[motion] head_speed``, the sections ``[dragon]``, ``[path]``,
+        ``[motion]``) is read with a ``FutureWarning`` naming the key to write instead, one per
+        old name."""
+        values, _given, old_names = _core._scenario_from_toml(os.fspath(path))
+        for message in old_names:
+            warnings.warn(message, FutureWarning, stacklevel=2)
         return cls(**{**values, **overrides})
 
     def replace(self, **changes: float) -> "Scenario":
@@ -691,7 +698,8 @@ def film(storyboard: Union[str, os.PathLike], out: Union[str, os.PathLike], *, a
     .gif, or .png with `at` (s into the film) for one poster frame. `size` (width, height) and
     `fps` override the storyboard's [film] settings; `crf`, `preset`, `tune`, `colours` are the
     encoder's; `workers` the threads that draw its frames (0: one per core). Storyboards are TOML
-    (see ``ASSETS/films/contest.toml``)."""
+    (see ``ASSETS/films/contest.toml``); an old name in a scenario file a shot names is read with a
+    ``FutureWarning`` naming the key to write instead."""
     workers = _workers(workers)
     encoder = {"crf": crf}
     if preset is not None:
@@ -703,7 +711,8 @@ def film(storyboard: Union[str, os.PathLike], out: Union[str, os.PathLike], *, a
     dims = None if size is None else _picture_size(size)
     callback, close = _progress(progress, "frames", "film")
     try:
-        return _core._film(os.fspath(storyboard), os.fspath(out), dims, fps, at, encoder, ASSETS, callback, workers)
+        return _core._film(os.fspath(storyboard), os.fspath(out), dims, fps, at, encoder, ASSETS, callback, workers,
+                           lambda message: warnings.warn(message, FutureWarning, stacklevel=3))
     finally:
         close()
 

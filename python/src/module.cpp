@@ -35,8 +35,11 @@ PYBIND11_MODULE(_benchdragon, m) {
                           if (c == '-') c = '_';
                       given[name.c_str()] = all[name.c_str()];
                   }
-              return py::make_tuple(all, given);
-          });
+              py::list warnings;
+              for (const dragon::KeyWarning& w : loaded.warnings) warnings.append(w.message);
+              return py::make_tuple(all, given, warnings);
+          },
+          "(every value, the values the file set, a message per old name it used) of a scenario file.");
     m.def("_validate",
           [](const py::dict& values, const std::string& path) {
               dragon::Scenario s = scenario_from(values);

@@ -255,9 +255,10 @@ void bind_pictures(py::module_& m) {
     m.def("_film",
           [](const std::string& storyboard, const std::string& out, const py::object& size, const py::object& fps,
              const py::object& at, const py::dict& enc, const std::string& assets, const py::object& progress,
-             int workers) {
+             int workers, const py::object& warn) {
               const bool poster = !at.is_none();
               Storyboard board = load_storyboard(storyboard, assets);
+              for (const KeyWarning& w : board.warnings) warn(w.message);  // old names, said before the work
               if (!size.is_none()) {
                   const auto [w, h] = size.cast<std::pair<int, int>>();
                   const PictureSize checked = parse_picture_size(fmt::format("{}x{}", w, h), kMaxVideoSide);
@@ -300,7 +301,7 @@ void bind_pictures(py::module_& m) {
               return d;
           },
           py::arg("storyboard"), py::arg("out"), py::arg("size"), py::arg("fps"), py::arg("at"), py::arg("encoder"),
-          py::arg("assets"), py::arg("progress"), py::arg("workers"));
+          py::arg("assets"), py::arg("progress"), py::arg("workers"), py::arg("warn"));
 }
 
 }  // namespace dragon::python

@@ -74,6 +74,7 @@ void register_film(CLI::App& app, Registry& reg) {
         // Options of another format's encoder are refused before the storyboard is read.
         if (!poster) encoder_options(encoder, format);
         Storyboard board = load_storyboard(opt->story, asset_dir(), &outputs);
+        print_warnings(board.warnings);
         if (!opt->size.empty()) {
             const PictureSize size = parse_picture_size(opt->size, kMaxVideoSide);
             board.film.width = size.width;

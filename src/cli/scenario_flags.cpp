@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "status.hpp"
 #include "dragon/input_file.hpp"
 #include "dragon/input_files.hpp"
 
@@ -118,18 +119,18 @@ void ScenarioFlags::fill(const std::string& scenario_file,
     if (file_.empty()) file_ = scenario_file;
     for (const auto& [name, text] : values) {
         // Named copy: clang 14 (the fuzz build) cannot capture a structured binding.
-        const std::string flag = "--" + name;
+        const KeyInfo* key = find_toml_key(name);
+        const std::string flag = key ? "--" + hyphenated(key->key) : std::string();
         const auto f = std::find_if(std::begin(kFlags), std::end(kFlags), [&](const FlagInfo& i) { return flag == i.name; });
         if (f == std::end(kFlags))
-            throw InputError(fmt::format("{}: {} is not a scenario flag (use the flags' names without their dashes: "
-                                         "width, body-length, ...)", source, shown_text(name)));
+            throw InputError(fmt::format("{}: {} is not a scenario value", source, shown_text(name)));
         char* end = nullptr;
         const double v = std::strtod(text.c_str(), &end);
         if (text.empty() || end != text.c_str() + text.size())
             throw InputError(fmt::format("{}: {} = {} is not allowed: give a number", source, name, shown_text(text)));
         if (f->value == value::bench_count) {
             if (v != std::floor(v) || !(std::abs(v) <= 1e9))
-                throw InputError(fmt::format("{}: bench-count = {} is not allowed: give a whole number", source,
+                throw InputError(fmt::format("{}: bench_count = {} is not allowed: give a whole number", source,
                                              shown_text(text)));
             if (!bench_count_) bench_count_ = static_cast<long long>(v);
             continue;
@@ -145,6 +146,8 @@ Scenario ScenarioFlags::resolve(ScenarioValues reads, const std::string& why, Ru
     ScenarioValues from_file = 0, from_flags = 0;
     if (!file_.empty()) {
         LoadedScenario loaded = read_scenario_file(file_, s, outputs);
+        if (!warned_) print_warnings(loaded.warnings);
+        warned_ = true;
         s = loaded.scenario;
         from_file = loaded.values;
     }

@@ -42,7 +42,8 @@ public:
     // Registers --scenario and the flags of the values `use` reads (and --path if it chooses).
     void add_to(CLI::App* sub, ScenarioUse use);
     // The scenario, validated for the values the command reads on its path (InputError names a
-    // bad value, and the file when the value came from it). Refuses a flag the chosen path does
+    // bad value, and the file when the value came from it). The file's old names are printed as
+    // warnings on stderr, once. Refuses a flag the chosen path does
     // not read (--turn-pitch on the spiral, say). The path kind is the command's: the one
     // --path or the file picks, else its only path, else (both paths) the spiral. The --scenario
     // file is one of the inputs of `outputs`' run.
@@ -54,8 +55,8 @@ public:
     // The scenario flags given on the command line, one bit per value.
     ScenarioValues given() const;
     // Values from elsewhere (a sweep file) under the command line: `scenario_file` if --scenario
-    // was not given, and each (flag name without dashes, value) whose flag was not. Throws
-    // InputError naming `source` for a name that is no scenario flag or a value that is no number.
+    // was not given, and each (key name, value: SweepFile::fixed) whose flag was not. Throws
+    // InputError naming `source` for a name that is no scenario value or a value that is no number.
     void fill(const std::string& scenario_file, const std::vector<std::pair<std::string, std::string>>& values,
               const std::string& source);
 
@@ -73,6 +74,8 @@ private:
     std::optional<double> pitch_, speed_, head_length_, body_length_, width_, hole_offset_;
     std::optional<double> start_turn_, turn_radius_, turn_pitch_, arc_ratio_;
     std::optional<long long> bench_count_;
+    // The scenario file's warnings (old names) are printed once, however often it is read.
+    mutable bool warned_ = false;
 };
 
 }  // namespace dragon::cli

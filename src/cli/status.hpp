@@ -18,7 +18,7 @@
 namespace dragon::cli {
 
 inline void add_quiet_flag(CLI::App* sub, bool& quiet) {
-    sub->add_flag("-q,--quiet", quiet, "Nothing on stderr but errors: no progress line, no 'wrote' lines");
+    sub->add_flag("-q,--quiet", quiet, "Nothing on stderr but errors and warnings: no progress line, no 'wrote' lines");
 }
 
 // The lines saying that a file was written, held until the run's files are in place: a command's
@@ -42,6 +42,13 @@ void status(bool quiet, fmt::format_string<A...> f, A&&... args) {
     const std::string line = shown_text(fmt::format(f, std::forward<A>(args)...), 8192);
     if (line.rfind("wrote ", 0) == 0) held_status_lines().push_back(line);
     else fmt::print(stderr, "{}\n", line);
+}
+
+// Each warning of a file that used an old name, one line each on stderr: "dragon: warning: ...".
+// Printed with --quiet too, as the notes about an answer are: the file works today, and will not
+// when the old names go.
+inline void print_warnings(const KeyWarnings& warnings) {
+    for (const KeyWarning& w : warnings) fmt::print(stderr, "dragon: warning: {}\n", shown_text(w.message, 8192));
 }
 
 // Throws std::system_error if what was printed on stdout did not all reach it (a full disk, a

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "status.hpp"
 #include "window_flags.hpp"
 #include "dragon/input_file.hpp"
 #include "dragon/input_files.hpp"
@@ -72,6 +73,7 @@ SweepSetup make_setup(const SweepRequest& request, ScenarioFlags& flags, RunOutp
     SweepRequest req = request;
     if (!req.file.empty()) {
         const SweepFile f = read_sweep_file(req.file, outputs);
+        print_warnings(f.warnings);
         // An axis of the command line replaces the file's of the same name; the others follow it.
         std::vector<std::string> vary;
         for (const std::string& v : f.vary) {

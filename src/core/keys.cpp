@@ -108,6 +108,13 @@ const KeyInfo* find_key(std::string_view name) {
     return nullptr;
 }
 
+const KeyInfo* find_toml_key(std::string_view name) {
+    if (name.empty()) return nullptr;
+    for (const KeyInfo& k : kKeys)
+        if (k.name == name) return &k;
+    return nullptr;
+}
+
 std::string hyphenated(Key k) {
     std::string out(key_info(k).name);
     for (char& c : out)

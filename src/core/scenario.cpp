@@ -1,10 +1,13 @@
 #include "dragon/constants.hpp"
 #include "dragon/scenario.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <optional>
-#include <set>
+#include <sstream>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -131,95 +134,197 @@ void validate(const Scenario& s, ScenarioValues values) {
     if (has(values, turn_pitch | width)) require_wider_pitch(turn_pitch, s.path.turn_pitch, b.width);
 }
 
-LoadedScenario parse_scenario_toml(const std::string& text, const std::string& origin, Scenario base) {
-    const std::string& path = origin;  // as the messages below name the text
-    toml::table root;
-    try {
-        root = toml::parse(text, path);
-    } catch (const toml::parse_error& e) {
-        const auto& where = e.source().begin;
-        throw InputError(fmt::format("scenario file '{}' is not valid TOML (line {}, column {}): {}",
-                                     path, where.line, where.column, e.description()));
-    }
+namespace {
 
-    LoadedScenario out{base, 0};
-    Scenario& s = out.scenario;
-    const std::set<std::string> sections = {"dragon", "path", "motion"};
-    for (const auto& [key, node] : root) {
-        const std::string name(key.str());
-        if (node.is_table() && sections.count(name)) continue;
-        if (node.is_array_of_tables() && sections.count(name))
-            throw InputError(fmt::format("scenario file '{}': [[{}]] is not allowed: write the section once, as [{}]",
-                                         path, name, name));
-        if (node.is_table())
-            throw InputError(fmt::format("scenario file '{}': unknown section [{}] (allowed: [dragon], [path], "
-                                         "[motion])", shown_text(path, 4096), shown_text(name)));
-        throw InputError(fmt::format("scenario file '{}': key '{}' is outside any section: keys belong under "
-                                     "[dragon], [path] or [motion]", shown_text(path, 4096), shown_text(name)));
-    }
-    auto number = [&](const toml::table& t, const std::string& section, const std::string& key, double& dst,
-                      ScenarioValues v) {
-        const toml::node* n = t.get(key);
-        if (!n) return;
-        // A whole number too is a number, however large: out of range is validate()'s to say
-        // (value<double>() gives none for an integer a double cannot hold exactly).
-        std::optional<double> x = n->value<double>();
-        if (!x && n->is_integer()) x = static_cast<double>(*n->value_exact<std::int64_t>());
-        if (x) {
-            dst = *x;
-            out.values |= v;
-            return;
-        }
-        throw InputError(fmt::format("scenario file '{}': [{}] {} must be a number", path, section, key));
-    };
-    auto check_keys = [&](const toml::table& t, const std::string& section,
-                          const std::set<std::string>& allowed) {
-        for (const auto& [key, node] : t) {
-            (void)node;
-            if (!allowed.count(std::string(key.str()))) {
-                std::string list;
-                for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-                throw InputError(fmt::format("scenario file '{}': unknown key [{}] {} (allowed: {})",
-                                             shown_text(path, 4096), section, shown_text(std::string(key.str())), list));
-            }
-        }
-    };
+constexpr OldScenarioName kOldNames[] = {
+    {"dragon", "bench_count", Key::bench_count}, {"dragon", "head_length", Key::head_length},
+    {"dragon", "body_length", Key::body_length}, {"dragon", "width", Key::width},
+    {"dragon", "hole_offset", Key::hole_offset}, {"path", "kind", Key::path},
+    {"path", "pitch", Key::pitch},               {"path", "start_turn", Key::start_turn},
+    {"path", "turn_radius", Key::turn_radius},   {"path", "turn_pitch", Key::turn_pitch},
+    {"path", "arc_ratio", Key::arc_ratio},       {"motion", "head_speed", Key::speed},
+};
 
-    if (const toml::table* t = root["dragon"].as_table()) {
-        check_keys(*t, "dragon", {"bench_count", "head_length", "body_length", "width", "hole_offset"});
-        if (const toml::node* n = t->get("bench_count")) {
-            auto v = n->value_exact<int64_t>();
-            if (!v || *v < 1 || *v > 1000000)
-                throw InputError(fmt::format("scenario file '{}': [dragon] bench_count must be an "
-                                             "integer from 1 to 1000000", path));
-            s.bench.bench_count = static_cast<int>(*v);
-            out.values |= value::bench_count;
+bool is_old_section(std::string_view name) { return name == "dragon" || name == "path" || name == "motion"; }
+
+// A value as the file gives it, for messages: a string in double quotes, a number as short as
+// it reads back (2.2, not toml++'s 2.2000000000000002).
+std::string toml_text(const toml::node& n) {
+    if (const std::optional<std::string> text = n.value_exact<std::string>()) return "\"" + shown_text(*text) + "\"";
+    if (const std::optional<std::int64_t> i = n.value_exact<std::int64_t>()) return std::to_string(*i);
+    if (const std::optional<double> d = n.value_exact<double>()) return error_value(*d);
+    std::ostringstream out;
+    n.visit([&](const auto& v) { out << v; });
+    return shown_text(out.str());
+}
+
+// Whether the text has today's `path = ...` at its top level and the old section [path]: TOML
+// refuses a key and a table of one name, so such a file never parses, and the parser's words
+// would not say why.
+bool has_path_key_and_section(const std::string& text) {
+    const auto skip_blanks = [](std::string_view v) {
+        while (!v.empty() && (v.front() == ' ' || v.front() == '\t')) v.remove_prefix(1);
+        return v;
+    };
+    // "path" then, past blanks, `next`: "path =", "[ path ]".
+    const auto path_then = [&](std::string_view v, char next) {
+        if (!v.starts_with("path")) return false;
+        v = skip_blanks(v.substr(4));
+        return !v.empty() && v.front() == next;
+    };
+    bool top = true, key = false, section = false;
+    for (std::size_t at = 0; at < text.size();) {
+        const std::size_t end = std::min(text.find('\n', at), text.size());
+        const std::string_view line = skip_blanks(std::string_view(text).substr(at, end - at));
+        at = end + 1;
+        if (line.starts_with('[')) {
+            top = false;
+            section = section || path_then(skip_blanks(line.substr(1)), ']');
+        } else if (top) {
+            key = key || path_then(line, '=');
         }
-        number(*t, "dragon", "head_length", s.bench.head_length, value::head_length);
-        number(*t, "dragon", "body_length", s.bench.body_length, value::body_length);
-        number(*t, "dragon", "width", s.bench.width, value::width);
-        number(*t, "dragon", "hole_offset", s.bench.hole_offset, value::hole_offset);
     }
-    if (const toml::table* t = root["path"].as_table()) {
-        check_keys(*t, "path", {"kind", "pitch", "start_turn", "turn_radius", "turn_pitch", "arc_ratio"});
-        if (const toml::node* n = t->get("kind")) {
-            auto v = n->value<std::string>();
+    return key && section;
+}
+
+// The allowed keys, for a message: the key table's names.
+std::string allowed_keys() {
+    std::string out;
+    for (const KeyInfo& k : all_keys())
+        if (in_scenario_file(k.key)) out += (out.empty() ? "" : ", ") + std::string(k.name);
+    return out;
+}
+
+// Reads one file's keys into a LoadedScenario, each key once, whichever form names it.
+class ScenarioReader {
+public:
+    ScenarioReader(const std::string& origin, Scenario base)
+        : where_(fmt::format("scenario file '{}'", shown_text(origin, 4096))), out_{base, 0, {}} {}
+
+    // `written`: the key as the file names it ("pitch", "[path] pitch"), for messages.
+    void take(Key key, const toml::node& n, const std::string& written) {
+        const std::string shown = toml_text(n);
+        for (const auto& [k, first] : taken_)
+            if (k == key)
+                throw InputError(key, shown, fmt::format("{} once", key_info(key).name),
+                                 fmt::format("{}: {} and {} both set the {}: write it once, as {} at the top level",
+                                             where_, first, written, key_info(key).words, key_info(key).name));
+        taken_.emplace_back(key, written);
+        Scenario& s = out_.scenario;
+        if (key == Key::path) {
+            const std::optional<std::string> v = n.value_exact<std::string>();
             if (v && *v == "spiral") s.path.kind = PathKind::spiral;
             else if (v && *v == "turnaround") s.path.kind = PathKind::turnaround;
-            else throw InputError(fmt::format("scenario file '{}': [path] kind must be \"spiral\" or "
-                                              "\"turnaround\"", path));
+            else refuse(key, shown, "\"spiral\" or \"turnaround\"", written);
+            return;
         }
-        number(*t, "path", "pitch", s.path.pitch, value::pitch);
-        number(*t, "path", "start_turn", s.path.start_turn, value::start_turn);
-        number(*t, "path", "turn_radius", s.path.turn_radius, value::turn_radius);
-        number(*t, "path", "turn_pitch", s.path.turn_pitch, value::turn_pitch);
-        number(*t, "path", "arc_ratio", s.path.arc_ratio, value::arc_ratio);
+        if (key == Key::bench_count) {
+            const std::optional<std::int64_t> v = n.value_exact<std::int64_t>();
+            if (!v || *v < 1 || *v > kMaxBenchCount)
+                refuse(key, shown, fmt::format("a whole number of benches, 1 to {}", kMaxBenchCount), written);
+            s.bench.bench_count = static_cast<int>(*v);
+            out_.values |= value::bench_count;
+            return;
+        }
+        // A whole number too is a number, however large: out of range is validate()'s to say
+        // (value<double>() gives none for an integer a double cannot hold exactly).
+        std::optional<double> x = n.value<double>();
+        if (!x && n.is_integer()) x = static_cast<double>(*n.value_exact<std::int64_t>());
+        if (!x) refuse(key, shown, "a number", written);
+        const ScenarioValues v = key_info(key).scenario;
+        *slot(s, v) = *x;
+        out_.values |= v;
     }
-    if (const toml::table* t = root["motion"].as_table()) {
-        check_keys(*t, "motion", {"head_speed"});
-        number(*t, "motion", "head_speed", s.head_speed, value::head_speed);
+
+    // An old name read: one warning, naming the key today and the value to write.
+    void warn_old(Key key, const std::string& written, const toml::node& n) {
+        out_.warnings.push_back({key, written,
+                                 fmt::format("{}: {} is an old name: write {} = {} at the top level", where_, written,
+                                             key_info(key).name, toml_text(n))});
     }
-    return out;
+
+    const std::string& where() const { return where_; }
+    LoadedScenario result() && { return std::move(out_); }
+
+private:
+    [[noreturn]] void refuse(Key key, const std::string& shown, const std::string& allowed,
+                             const std::string& written) const {
+        throw InputError(key, shown, allowed,
+                         fmt::format("{}: {} = {} is not allowed: give {}", where_, written, shown, allowed));
+    }
+
+    static double* slot(Scenario& s, ScenarioValues v) {
+        if (v == value::pitch) return &s.path.pitch;
+        if (v == value::head_speed) return &s.head_speed;
+        if (v == value::head_length) return &s.bench.head_length;
+        if (v == value::body_length) return &s.bench.body_length;
+        if (v == value::width) return &s.bench.width;
+        if (v == value::hole_offset) return &s.bench.hole_offset;
+        if (v == value::start_turn) return &s.path.start_turn;
+        if (v == value::turn_radius) return &s.path.turn_radius;
+        if (v == value::turn_pitch) return &s.path.turn_pitch;
+        return &s.path.arc_ratio;
+    }
+
+    std::string where_;
+    LoadedScenario out_;
+    std::vector<std::pair<Key, std::string>> taken_;  // each key read, as the file named it
+};
+
+}  // namespace
+
+std::span<const OldScenarioName> old_scenario_names() { return kOldNames; }
+
+bool in_scenario_file(Key k) { return k == Key::path || key_info(k).scenario != 0; }
+
+LoadedScenario parse_scenario_toml(const std::string& text, const std::string& origin, Scenario base) {
+    toml::table root;
+    try {
+        root = toml::parse(text, origin);
+    } catch (const toml::parse_error& e) {
+        if (has_path_key_and_section(text))
+            throw InputError(Key::path, "[path]", "path once",
+                             fmt::format("scenario file '{}': path and the old section [path] cannot both be in one "
+                                         "file (TOML takes one of the two): write [path]'s keys at the top level",
+                                         shown_text(origin, 4096)));
+        const auto& where = e.source().begin;
+        throw InputError(fmt::format("scenario file '{}' is not valid TOML (line {}, column {}): {}",
+                                     shown_text(origin, 4096), where.line, where.column, e.description()));
+    }
+    ScenarioReader reader(origin, base);
+    const std::string& where = reader.where();
+    // Today's keys first, then the old sections': a key in both forms is refused naming both.
+    for (const auto& [key, node] : root) {
+        const std::string name(key.str());
+        if (is_old_section(name) && node.is_table()) continue;
+        if (is_old_section(name) && node.is_array_of_tables())
+            throw InputError(fmt::format("{}: [[{}]] is not allowed: write its keys at the top level ({})", where,
+                                         name, allowed_keys()));
+        if (node.is_table())
+            throw InputError(fmt::format("{}: unknown section [{}]: write the keys at the top level (allowed: {})",
+                                         where, shown_text(name), allowed_keys()));
+        const KeyInfo* info = find_toml_key(name);
+        if (!info || !in_scenario_file(info->key))
+            throw InputError(fmt::format("{}: unknown key '{}' (allowed: {})", where, shown_text(name), allowed_keys()));
+        reader.take(info->key, node, name);
+    }
+    for (const std::string_view section : {"dragon", "path", "motion"}) {
+        const toml::table* t = root.get_as<toml::table>(section);
+        if (!t) continue;
+        for (const auto& [key, node] : *t) {
+            const std::string name(key.str());
+            const auto old = std::find_if(std::begin(kOldNames), std::end(kOldNames), [&](const OldScenarioName& o) {
+                return o.section == section && o.name == name;
+            });
+            if (old == std::end(kOldNames))
+                throw InputError(fmt::format("{}: unknown key [{}] {} (allowed: {}, at the top level)", where, section,
+                                             shown_text(name), allowed_keys()));
+            const std::string written = fmt::format("[{}] {}", section, name);
+            reader.take(old->key, node, written);
+            reader.warn_old(old->key, written, node);
+        }
+    }
+    return std::move(reader).result();
 }
 
 }  // namespace dragon

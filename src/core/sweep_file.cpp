@@ -1,9 +1,12 @@
-// A sweep described in a TOML file: the same keys as the command line's, so that a map can be
-// made again from its file (assets/sweeps/).
+// A sweep described in a TOML file, parsed from its text (sweep_file_read.cpp reads the file):
+// the command line's keys, a scenario value named as TOML names it (body_length), so that a map
+// can be made again from its file (assets/sweeps/). The flag's spelling (body-length), the old
+// one, is read with a warning.
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
 #include "dragon/shown_text.hpp"
+#include "dragon/scenario.hpp"
 #include "dragon/sweep.hpp"
 
 namespace dragon {
@@ -46,41 +49,79 @@ std::string beside(const std::string& origin, const std::string& name) {
 }  // namespace
 
 SweepFile parse_sweep_file(const std::string& text, const std::string& origin) {
-    const std::string& path = origin;  // as the messages below name the text
+    const std::string where = fmt::format("sweep file '{}'", shown_text(origin, 4096));
     toml::table root;
     try {
-        root = toml::parse(text, path);
+        root = toml::parse(text, origin);
     } catch (const toml::parse_error& e) {
-        const auto& where = e.source().begin;
-        throw InputError(fmt::format("sweep file '{}' is not valid TOML (line {}, column {}): {}", path, where.line,
-                                     where.column, e.description()));
+        const auto& at = e.source().begin;
+        throw InputError(fmt::format("{} is not valid TOML (line {}, column {}): {}", where, at.line, at.column,
+                                     e.description()));
     }
     SweepFile out;
+    // The scenario value a name sets: today's name (underscores), or the flag's (hyphens), the
+    // old one, which `warn` then says in one line; nullptr for no scenario value.
+    const auto scenario_value_named = [](const std::string& name) -> const KeyInfo* {
+        const KeyInfo* k = find_key(name);
+        return k && in_scenario_file(k->key) && k->key != Key::path ? k : nullptr;
+    };
+    const auto warn = [&](const KeyInfo& k, const std::string& old_name, const std::string& written,
+                          const std::string& today) {
+        out.warnings.push_back({k.key, old_name, fmt::format("{}: {} is an old name: write {}", where, written, today)});
+    };
+    const auto value_names = [] {
+        std::string list;
+        for (const KeyInfo& k : all_keys())
+            if (in_scenario_file(k.key) && k.key != Key::path) list += (list.empty() ? "" : ", ") + std::string(k.name);
+        return list;
+    };
     for (const auto& [key, node] : root) {
         const std::string name(key.str());
         if (name == "measure") {
-            out.measures = text_list(node, path, "measure");
+            out.measures = text_list(node, origin, "measure");
         } else if (name == "vary") {
-            out.vary = text_list(node, path, "vary");
+            // Each NAME=VALUES with today's name; kept with the flag's name, as --vary takes it.
+            for (const std::string& spec : text_list(node, origin, "vary")) {
+                const std::size_t eq = spec.find('=');
+                const std::string axis = spec.substr(0, eq);
+                const KeyInfo* k = eq == std::string::npos ? nullptr : scenario_value_named(axis);
+                if (!k)
+                    throw InputError(fmt::format("{}: vary \"{}\" is not allowed: give NAME=FROM:TO:COUNT or "
+                                                 "NAME=V1,V2,... with NAME one of {}", where, shown_text(spec), value_names()));
+                const std::string values = spec.substr(eq);
+                if (k->name != axis)
+                    warn(*k, axis, fmt::format("vary \"{}\"", shown_text(spec)),
+                         fmt::format("\"{}{}\"", k->name, shown_text(values)));
+                out.vary.push_back(hyphenated(k->key) + values);
+            }
         } else if (name == "scenario") {
             auto s = node.value_exact<std::string>();
-            if (!s) throw InputError(fmt::format("sweep file '{}': scenario must be a file name", path));
+            if (!s) throw InputError(fmt::format("{}: scenario must be a file name", where));
             // Relative to the sweep file, so that the pair can move together.
-            out.scenario = beside(path, *s);
+            out.scenario = beside(origin, *s);
         } else if (const toml::table* t = node.as_table()) {
             for (const auto& [k, v] : *t) {
+                const std::string key_name(k.str());
                 const std::optional<std::string> value = as_text(v);
                 if (!value)
-                    throw InputError(fmt::format("sweep file '{}': [{}] {} must be a number or a string",
-                                                 shown_text(path, 4096), shown_text(name),
-                                                 shown_text(std::string(k.str()))));
-                if (name == "fixed") out.fixed.emplace_back(std::string(k.str()), *value);
-                else out.options.push_back({name, std::string(k.str()), *value});
+                    throw InputError(fmt::format("{}: [{}] {} must be a number or a string", where, shown_text(name),
+                                                 shown_text(key_name)));
+                if (name != "fixed") {
+                    out.options.push_back({name, key_name, *value});
+                    continue;
+                }
+                const KeyInfo* info = scenario_value_named(key_name);
+                if (!info)
+                    throw InputError(fmt::format("{}: [fixed] {} is not a scenario value (allowed: {})", where,
+                                                 shown_text(key_name), value_names()));
+                if (info->name != key_name)
+                    warn(*info, key_name, fmt::format("[fixed] {}", shown_text(key_name)),
+                         fmt::format("{} = {}", info->name, shown_text(*value)));
+                out.fixed.emplace_back(std::string(info->name), *value);
             }
         } else {
-            throw InputError(fmt::format("sweep file '{}': unknown key '{}' (allowed: measure, vary, scenario, "
-                                         "[fixed] and a table of options per measure)", shown_text(path, 4096),
-                                         shown_text(name)));
+            throw InputError(fmt::format("{}: unknown key '{}' (allowed: measure, vary, scenario, "
+                                         "[fixed] and a table of options per measure)", where, shown_text(name)));
         }
     }
     return out;

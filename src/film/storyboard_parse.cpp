@@ -7,6 +7,7 @@
 #include "dragon/film.hpp"
 #include "dragon/input_file.hpp"
 #include "dragon/input_files.hpp"
+#include "dragon/sweep.hpp"
 #include "storyboard_values.hpp"
 
 namespace dragon {
@@ -40,22 +41,17 @@ namespace {
 
 using film::Where;
 
-// Keys that set a scenario value over the shot's scenario file, and the value each sets.
-struct Override {
-    const char* key;
-    ScenarioValues value;
-};
-constexpr Override overrides[] = {
-    {"pitch", value::pitch},           {"speed", value::head_speed},     {"start_turn", value::start_turn},
-    {"turn_radius", value::turn_radius}, {"turn_pitch", value::turn_pitch}, {"arc_ratio", value::arc_ratio},
-    {"bench_count", value::bench_count}, {"head_length", value::head_length}, {"body_length", value::body_length},
-    {"width", value::width},             {"hole_offset", value::hole_offset},
-};
+// A shot's key that sets a scenario value over its scenario file: the key table's name
+// (pitch, speed, bench_count, ...), as a scenario file names it.
+bool sets_scenario_value(const KeyInfo& k) { return k.scenario != 0; }
 
-const std::set<std::string> view_keys = {"scenario", "path",  "pitch", "speed",         "start_turn",
-                                         "turn_radius", "turn_pitch", "arc_ratio", "bench_count", "head_length",
-                                         "body_length", "width", "hole_offset", "from",
-                                         "to",       "camera", "speed_colours", "guides", "label"};
+// A scene's keys: its scenario, the scenario's values, its window and what it shows.
+std::set<std::string> view_keys() {
+    std::set<std::string> keys = {"scenario", "path", "from", "to", "camera", "speed_colours", "guides", "label"};
+    for (const KeyInfo& k : all_keys())
+        if (sets_scenario_value(k)) keys.insert(std::string(k.name));
+    return keys;
+}
 
 struct Context {
     std::string file, base_dir, asset_dir;
@@ -63,6 +59,7 @@ struct Context {
     // Each scenario file read once, however many shots name it.
     std::map<std::string, Scenario> loaded;
     RunOutputs* outputs = nullptr;  // the run whose inputs the scenario files are, if any
+    KeyWarnings warnings;  // the scenario files' old names, each file's once
 };
 
 // The scenario a name stands for: a preset of the asset folder, or a .toml file beside the
@@ -75,7 +72,9 @@ Scenario named_scenario(const Where& w, Context& cx, const std::string& name, co
     if (!file && !std::filesystem::exists(path))
         w.fail(key, fmt::format("'{}' is neither a preset in {} nor a .toml file", shown_text(name), cx.asset_dir));
     try {
-        return cx.loaded[path] = load_scenario(path, {}, cx.outputs);
+        LoadedScenario read = read_scenario_file(path, {}, cx.outputs);
+        cx.warnings.insert(cx.warnings.end(), read.warnings.begin(), read.warnings.end());
+        return cx.loaded[path] = read.scenario;
     } catch (const InputError& e) {
         w.fail(key, e.what());
     }
@@ -95,36 +94,28 @@ Scenario scenario_of(const Where& w, Context& cx, const toml::table& t, const st
         else w.fail(prefix + "path", fmt::format("'{}' is not a path: use \"spiral\" or \"turnaround\"", shown_text(kind)));
     }
     ScenarioValues set = 0;
-    for (const Override& o : overrides) {
-        const toml::node* n = t.get(o.key);
+    for (const KeyInfo& k : all_keys()) {
+        if (!sets_scenario_value(k)) continue;
+        const toml::node* n = t.get(k.name);
         if (!n) continue;
-        const std::string key = prefix + o.key;
-        if (o.value == value::bench_count) {
+        const std::string key = prefix + std::string(k.name);
+        if (k.scenario == value::bench_count) {
             const std::optional<std::int64_t> c = n->value_exact<std::int64_t>();
-            if (!c || *c < 1 || *c > 1000000) w.fail(key, "must be a whole number of benches, 1 to 1000000");
+            if (!c || *c < 1 || *c > kMaxBenchCount)
+                w.fail(key, fmt::format("must be a whole number of benches, 1 to {}", kMaxBenchCount));
             s.bench.bench_count = static_cast<int>(*c);
         } else {
-            const double v = film::number(w, *n, key);
-            if (o.value == value::pitch) s.path.pitch = v;
-            if (o.value == value::head_speed) s.head_speed = v;
-            if (o.value == value::start_turn) s.path.start_turn = v;
-            if (o.value == value::turn_radius) s.path.turn_radius = v;
-            if (o.value == value::turn_pitch) s.path.turn_pitch = v;
-            if (o.value == value::arc_ratio) s.path.arc_ratio = v;
-            if (o.value == value::head_length) s.bench.head_length = v;
-            if (o.value == value::body_length) s.bench.body_length = v;
-            if (o.value == value::width) s.bench.width = v;
-            if (o.value == value::hole_offset) s.bench.hole_offset = v;
+            set_parameter(s, *find_sweep_parameter(hyphenated(k.key)), film::number(w, *n, key));
         }
-        set |= o.value;
+        set |= k.scenario;
     }
     try {
         validate(s);
     } catch (const ScenarioError& e) {
         // Named by the shot's own key when it set one of the values the rule involves.
         std::string key = prefix + "scenario";
-        for (const Override& o : overrides)
-            if ((e.values & o.value) && (set & o.value)) key = prefix + o.key;
+        for (const KeyInfo& k : all_keys())
+            if (sets_scenario_value(k) && (e.values & k.scenario) && (set & k.scenario)) key = prefix + std::string(k.name);
         w.fail(key, e.what());
     }
     return s;
@@ -207,7 +198,8 @@ Shot shot_of(const Where& w, Context& cx, const toml::table& t) {
         return s;
     }
     std::set<std::string> allowed = common;
-    allowed.insert(view_keys.begin(), view_keys.end());
+    const std::set<std::string> scene = view_keys();
+    allowed.insert(scene.begin(), scene.end());
     if (const toml::node* split = t.get("split")) {
         s.kind = Shot::Kind::split;
         allowed.insert("split");
@@ -220,7 +212,7 @@ Shot shot_of(const Where& w, Context& cx, const toml::table& t) {
             const std::string prefix = fmt::format("split[{}].", i + 1);
             const toml::table* pane = a->get(i)->as_table();
             if (!pane) w.fail(prefix.substr(0, prefix.size() - 1), "must be a table of a scene's keys");
-            film::check_keys(w, *pane, view_keys, "a split scene", prefix);
+            film::check_keys(w, *pane, scene, "a split scene", prefix);
             s.views.push_back(view_of(w, cx, shared, pane, prefix));
         }
     } else {
@@ -268,7 +260,7 @@ Storyboard parse_storyboard(const std::string& toml_text, const std::string& fil
         throw InputError(fmt::format("storyboard '{}' is not valid TOML (line {}, column {}): {}", file,
                                      e.source().begin.line, e.source().begin.column, e.description()));
     }
-    Context cx{file, base_dir, asset_dir.empty() ? find_asset_dir() : asset_dir, "", {}, outputs};
+    Context cx{file, base_dir, asset_dir.empty() ? find_asset_dir() : asset_dir, "", {}, outputs, {}};
     board.asset_dir = cx.asset_dir;
     const Where top{file, 0, "film"};
     film::check_keys(top, root, {"film", "shot"}, "a storyboard (a [film] table and [[shot]] tables)");
@@ -307,6 +299,7 @@ Storyboard parse_storyboard(const std::string& toml_text, const std::string& fil
         if (const toml::node* n = t.get("name")) w.name = fmt::format("\"{}\"", film::text(w, *n, "name"));
         board.shots.push_back(shot_of(w, cx, t));
     }
+    board.warnings = std::move(cx.warnings);
     return board;
 }
 

@@ -143,7 +143,7 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(Cli, MalformedScenarioFileIsRefused) {
     const fs::path bad = scratch() / "bad.toml", unknown = scratch() / "unknown.toml";
     std::ofstream(bad) << "[dragon\nwidth = 0.3\n";
-    std::ofstream(unknown) << "[dragon]\nwidht = 0.3\n";
+    std::ofstream(unknown) << "widht = 0.3\n";
     for (const fs::path& f : {bad, unknown}) {
         const CliRun r = dragon("simulate --to 1 --scenario " + f.string());
         EXPECT_EQ(r.code, 2);

@@ -101,7 +101,7 @@ TEST(CliFlags, AFlagNotTakenIsRefusedWithTheReason) {
 TEST(CliFlags, AValueTheCommandDoesNotReadCannotFailIt) {
     // A pitch narrower than a bench: wrong for the plain spiral, of no concern to min-pitch
     // (it searches the pitch), the turnaround commands, or solve --only q4.
-    const std::string file = toml("narrow.toml", "[path]\npitch = 0.1\n");
+    const std::string file = toml("narrow.toml", "pitch = 0.1\n");
     const auto q3 = run_dragon("min-pitch --scenario " + file + " --lo 0.44 --hi 0.46 --grid 0.01");
     EXPECT_EQ(q3.code, 0) << q3.err;
     EXPECT_TRUE(contains(q3.out, "minimum pitch")) << q3.out;
@@ -124,7 +124,7 @@ TEST(CliFlags, AValueTheCommandDoesNotReadCannotFailIt) {
 }
 
 TEST(CliFlags, ABadValueInTheFileNamesTheFile) {
-    const std::string file = toml("nan-width.toml", "[dragon]\nwidth = nan\n");
+    const std::string file = toml("nan-width.toml", "width = nan\n");
     const auto r = run_dragon("simulate --to 1 --scenario " + file);
     EXPECT_EQ(r.code, 2);
     EXPECT_EQ(count_lines(r.err), 1) << r.err;

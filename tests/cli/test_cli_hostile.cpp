@@ -115,14 +115,14 @@ const std::vector<Hostile> kCases = {
     // file by any name: a link too), refused before any work.
     {"simulate_over_its_scenario",
      [](const fs::path& d) {
-         write(d / "sc.csv", "[dragon]\nwidth = 0.3\n");
+         write(d / "sc.csv", "width = 0.3\n");
          return std::vector<std::string>{"simulate", "--to", "1", "--scenario", (d / "sc.csv").string(), "-o",
                                          (d / "sc.csv").string()};
      },
      "output path '@/sc.csv' is the scenario file '@/sc.csv' this run reads"},
     {"simulate_over_its_scenario_through_a_link",
      [](const fs::path& d) {
-         write(d / "sc.csv", "[dragon]\nwidth = 0.3\n");
+         write(d / "sc.csv", "width = 0.3\n");
          fs::create_symlink(d / "sc.csv", d / "link.csv");
          return std::vector<std::string>{"simulate", "--to", "1", "--scenario", (d / "sc.csv").string(), "-o",
                                          (d / "link.csv").string()};
@@ -130,14 +130,14 @@ const std::vector<Hostile> kCases = {
      "output path '@/link.csv' is the scenario file '@/sc.csv' this run reads"},
     {"collide_over_its_scenario",
      [](const fs::path& d) {
-         write(d / "sc.json", "[dragon]\nwidth = 0.3\n");
+         write(d / "sc.json", "width = 0.3\n");
          return std::vector<std::string>{"collide", "--scenario", (d / "sc.json").string(), "-o",
                                          (d / "sc.json").string()};
      },
      "is the scenario file '@/sc.json' this run reads"},
     {"turnaround_over_its_scenario",
      [](const fs::path& d) {
-         write(d / "sc.csv", "[path]\nturn_pitch = 1.7\n");
+         write(d / "sc.csv", "turn_pitch = 1.7\n");
          return std::vector<std::string>{"turnaround", "--no-clearance", "--scenario", (d / "sc.csv").string(), "-o",
                                          (d / "sc.csv").string()};
      },
@@ -152,7 +152,7 @@ const std::vector<Hostile> kCases = {
      "the theme file '@/t.png' is also the output '@/t.png': give the output another name"},
     {"video_over_its_scenario",
      [](const fs::path& d) {
-         write(d / "v.gif", "[dragon]\nwidth = 0.3\n");
+         write(d / "v.gif", "width = 0.3\n");
          return std::vector<std::string>{"video", "--to", "1", "--size", "64x48", "--scenario", (d / "v.gif").string(),
                                          "-o", (d / "v.gif").string()};
      },
@@ -165,7 +165,7 @@ const std::vector<Hostile> kCases = {
      "output path '@/st.png' is the storyboard '@/st.png' this run reads"},
     {"film_over_a_scenario_its_storyboard_names",
      [](const fs::path& d) {
-         write(d / "sc.toml", "[dragon]\nwidth = 0.3\n");
+         write(d / "sc.toml", "width = 0.3\n");
          fs::create_symlink(d / "sc.toml", d / "poster.png");
          write(d / "st.toml", story_head + "scenario = \"sc.toml\"\n[[shot]]\nfrom = 0\nto = 1\nrate = 1\n");
          return std::vector<std::string>{"film", (d / "st.toml").string(), "-o", (d / "poster.png").string(), "--at",
@@ -175,7 +175,7 @@ const std::vector<Hostile> kCases = {
     {"figures_over_their_scenario",
      [](const fs::path& d) {
          fs::create_directories(d / "figs");
-         write(d / "figs" / "plot_s_curve.png", "[dragon]\nwidth = 0.3\n");
+         write(d / "figs" / "plot_s_curve.png", "width = 0.3\n");
          return std::vector<std::string>{"figures", "--only", "plot_s_curve", "--scale", "0.65", "--scenario",
                                          (d / "figs" / "plot_s_curve.png").string(), "-o", (d / "figs").string()};
      },
@@ -183,27 +183,27 @@ const std::vector<Hostile> kCases = {
     {"solve_over_its_scenario",
      [](const fs::path& d) {
          fs::create_directories(d / "out");
-         write(d / "out" / "summary.json", "[dragon]\nwidth = 0.3\n");
+         write(d / "out" / "summary.json", "width = 0.3\n");
          return std::vector<std::string>{"solve", "--only", "q1", "--scenario", (d / "out" / "summary.json").string(),
                                          "-o", (d / "out").string()};
      },
      "is the scenario file '@/out/summary.json' this run reads"},
     {"sweep_over_its_sweep_file",
      [](const fs::path& d) {
-         write(d / "s2.csv", "measure = \"max-speed\"\nvary = [\"arc-ratio=1,2\"]\n");
+         write(d / "s2.csv", "measure = \"max-speed\"\nvary = [\"arc_ratio=1,2\"]\n");
          return std::vector<std::string>{"sweep", (d / "s2.csv").string(), "-o", (d / "s2.csv").string()};
      },
      "output path '@/s2.csv' is the sweep file '@/s2.csv' this run reads"},
     {"sweep_over_the_scenario_its_file_names",
      [](const fs::path& d) {
-         write(d / "sc.csv", "[dragon]\nwidth = 0.3\n");
-         write(d / "s.toml", "scenario = \"sc.csv\"\nmeasure = \"max-speed\"\nvary = [\"arc-ratio=1,2\"]\n");
+         write(d / "sc.csv", "width = 0.3\n");
+         write(d / "s.toml", "scenario = \"sc.csv\"\nmeasure = \"max-speed\"\nvary = [\"arc_ratio=1,2\"]\n");
          return std::vector<std::string>{"sweep", (d / "s.toml").string(), "-o", (d / "sc.csv").string()};
      },
      "is the scenario file '@/sc.csv' this run reads"},
     {"sweep_plot_over_its_sweep_file",
      [](const fs::path& d) {
-         write(d / "s.png", "measure = \"max-speed\"\nvary = [\"arc-ratio=1,2\"]\n");
+         write(d / "s.png", "measure = \"max-speed\"\nvary = [\"arc_ratio=1,2\"]\n");
          return std::vector<std::string>{"sweep", (d / "s.png").string(), "--plot", (d / "s.png").string()};
      },
      "output path '@/s.png' is the sweep file '@/s.png' this run reads"},
@@ -297,7 +297,7 @@ const std::vector<Hostile> kCases = {
      "sweep file '/dev/zero' is a device"},
     {"sweep_files_scenario_dev_zero",
      [](const fs::path& d) {
-         write(d / "s.toml", "scenario = \"/dev/zero\"\nmeasure = \"max-speed\"\nvary = [\"arc-ratio=1,2\"]\n");
+         write(d / "s.toml", "scenario = \"/dev/zero\"\nmeasure = \"max-speed\"\nvary = [\"arc_ratio=1,2\"]\n");
          return std::vector<std::string>{"sweep", (d / "s.toml").string()};
      },
      "scenario file '/dev/zero' is a device"},
@@ -364,7 +364,7 @@ const std::vector<Hostile> kCases = {
      "--limit nan is not allowed: it must be a finite speed > 0 m/s"},
     {"sweep_file_limit_1e999",
      [](const fs::path& d) {
-         write(d / "s.toml", "measure = \"max-speed\"\nvary = [\"arc-ratio=1,2\"]\n[max-speed]\nlimit = \"1e999\"\n");
+         write(d / "s.toml", "measure = \"max-speed\"\nvary = [\"arc_ratio=1,2\"]\n[max-speed]\nlimit = \"1e999\"\n");
          return std::vector<std::string>{"sweep", (d / "s.toml").string()};
      },
      "sweep file '@/s.toml': [max-speed] limit = 1e999 is not allowed: it must be a finite speed > 0 m/s"},
@@ -407,7 +407,7 @@ const std::vector<Hostile> kCases = {
      "theme file '@/t.toml': font \"No Such Font Anywhere\" is not installed"},
     {"scenario_width_out_of_integer_range",
      [](const fs::path& d) {
-         write(d / "sc.toml", "[dragon]\nwidth = 9223372036854775807\n");
+         write(d / "sc.toml", "width = 9223372036854775807\n");
          return std::vector<std::string>{"simulate", "--to", "1", "--scenario", (d / "sc.toml").string()};
      },
      "scenario file '@/sc.toml': width = 9.223372036854776e+18 is not allowed: it must be from 0.001 m to 1000 m"},
@@ -444,7 +444,7 @@ const std::vector<Hostile> kCases = {
          return std::vector<std::string>{"sweep", (d / "s.toml").string(), "--vary", "arc-ratio=1", "--measure",
                                          "max-speed"};
      },
-     "sweep file '@/s.toml': [fixed]: wid\\x00th is not a scenario flag"},
+     "sweep file '@/s.toml': [fixed] wid\\x00th is not a scenario value (allowed: pitch, speed,"},
     {"a_900_kB_key",
      [](const fs::path& d) {
          write(d / "sc.toml", "[dragon]\n" + std::string(900000, 'k') + " = 1\n");

@@ -196,8 +196,8 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(CliSweep, JsonRowsAndASweepFileSayWhatTheFlagsSay) {
     const fs::path dir = dragon_test::scratch_dir();
     const sweep_test::Table flags = sweep("--vary arc-ratio=1.5,2 --measure max-speed --bench-count 20 --limit 1.8");
-    std::ofstream(dir / "spec.toml") << "measure = \"max-speed\"\nvary = [\"arc-ratio=1.5,2\"]\n"
-                                        "[fixed]\nbench-count = 20\n[max-speed]\nlimit = 1.8\n";
+    std::ofstream(dir / "spec.toml") << "measure = \"max-speed\"\nvary = [\"arc_ratio=1.5,2\"]\n"
+                                        "[fixed]\nbench_count = 20\n[max-speed]\nlimit = 1.8\n";
     const sweep_test::Table file = sweep((dir / "spec.toml").string());
     EXPECT_EQ(file.spec, flags.spec);
     EXPECT_EQ(file.header, flags.header);

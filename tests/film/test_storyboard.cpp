@@ -1,9 +1,11 @@
 // Storyboards read into data, and every kind of bad input named by its shot and key.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <ostream>
 
 #include "dragon/film.hpp"
+#include "support/scratch.hpp"
 
 using namespace dragon;
 
@@ -211,3 +213,27 @@ TEST(Storyboard, ScenarioFilesAreFoundBesideTheStoryboard) {
 }
 
 }  // namespace
+
+// A shot's scenario values are the key table's names, as in a scenario file; a scenario file in
+// the old form is read with its warnings on the storyboard, once however many shots name it.
+TEST(Storyboard, AnOldScenarioFilesWarningsComeBackOnce) {
+    const std::string dir = dragon_test::scratch_dir().string();
+    std::ofstream(dir + "/old-form.toml") << "[motion]\nhead_speed = 2\n[dragon]\nwidth = 0.25\n";
+    const std::string story = "[film]\nscenario = \"old-form.toml\"\n"
+                              "[[shot]]\nfrom = 10\nto = 11\nrate = 2\n"
+                              "[[shot]]\nfrom = 11\nto = 12\nrate = 2\nbench_count = 50\nspeed = 3\n";
+    const Storyboard b = parse_storyboard(story, "s.toml", dir, assets);
+    ASSERT_EQ(b.shots.size(), 2u);
+    EXPECT_EQ(b.shots[0].views[0].scenario.head_speed, 2.0);
+    EXPECT_EQ(b.shots[0].views[0].scenario.bench.width, 0.25);
+    EXPECT_EQ(b.shots[1].views[0].scenario.head_speed, 3.0);  // the shot's own key over the file
+    EXPECT_EQ(b.shots[1].views[0].scenario.bench.bench_count, 50);
+    ASSERT_EQ(b.warnings.size(), 2u);
+    EXPECT_EQ(b.warnings[0].key, Key::width);  // [dragon] before [motion]
+    EXPECT_EQ(b.warnings[1].key, Key::speed);
+    EXPECT_NE(b.warnings[1].message.find("[motion] head_speed is an old name: write speed = 2"), std::string::npos);
+    // Today's form: no warning.
+    std::ofstream(dir + "/today-form.toml") << "speed = 2\nwidth = 0.25\n";
+    EXPECT_TRUE(parse_storyboard("[film]\nscenario = \"today-form.toml\"\n[[shot]]\nfrom = 10\nto = 11\nrate = 2\n", "s.toml",
+                                 dir, assets).warnings.empty());
+}

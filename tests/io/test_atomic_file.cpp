@@ -344,7 +344,7 @@ TEST(RunOutputs, FilesArePutInPlaceOnlyWhenTheRunCommits) {
 TEST(RunOutputs, NoOutputIsAnInputOfTheRun) {
     const fs::path dir = dragon_test::scratch_dir();
     const fs::path sc = dir / "sc.csv", link = dir / "sc-link.csv";
-    write(sc.string(), "[dragon]\nwidth = 0.3\n");
+    write(sc.string(), "width = 0.3\n");
     fs::remove(link);
     fs::create_symlink(sc, link);
     {
@@ -378,7 +378,7 @@ TEST(RunOutputs, NoOutputIsAnInputOfTheRun) {
     // Outside a run, a program may read a file and write it later.
     load_scenario(sc.string());
     EXPECT_EQ(refusal(sc.string()), "accepted");
-    EXPECT_EQ(read(sc), "[dragon]\nwidth = 0.3\n");
+    EXPECT_EQ(read(sc), "width = 0.3\n");
 }
 
 TEST(RunOutputs, FilesCommittedFromSeveralThreadsArePlacedTogether) {

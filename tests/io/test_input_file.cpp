@@ -33,8 +33,8 @@ bool has(const std::string& text, const std::string& part) { return text.find(pa
 
 TEST(InputFile, ReadsARegularFileWhole) {
     const fs::path p = dragon_test::scratch_dir() / "a.toml";
-    std::ofstream(p) << "[dragon]\nwidth = 0.3\n";
-    EXPECT_EQ(read_toml_input(p.string(), "scenario file"), "[dragon]\nwidth = 0.3\n");
+    std::ofstream(p) << "width = 0.3\n";
+    EXPECT_EQ(read_toml_input(p.string(), "scenario file"), "width = 0.3\n");
 }
 
 TEST(InputFile, NamesWhatIsWrongWithTheFile) {

@@ -70,26 +70,50 @@ TEST(SweepRows, TornLastLineIsDroppedAndCutOffBeforeTheNextRow) {
     EXPECT_EQ(text.rows, 0u);
 }
 
-TEST(SweepFile, ReadsTheCommandLinesKeys) {
+TEST(SweepFile, ReadsTheCommandLinesKeysWithTomlsNames) {
     const fs::path file = dragon_test::scratch_dir() / "map.toml";
     std::ofstream(file) << "measure = [\"min-pitch\", \"max-speed\"]\n"
-                           "vary = [\"width=0.2:0.4:3\", \"body-length=1.6,2.2\"]\n"
+                           "vary = [\"width=0.2:0.4:3\", \"body_length=1.6,2.2\"]\n"
                            "scenario = \"base.toml\"\n"
-                           "[fixed]\nbench-count = 100\nspeed = 1.5\n"
+                           "[fixed]\nbench_count = 100\nspeed = 1.5\n"
                            "[min-pitch]\nlo = \"width+0.05\"\ngrid = 0.005\n";
     const SweepFile f = read_sweep_file(file.string());
     EXPECT_EQ(f.measures, (std::vector<std::string>{"min-pitch", "max-speed"}));
+    // Held as --vary takes them.
     EXPECT_EQ(f.vary, (std::vector<std::string>{"width=0.2:0.4:3", "body-length=1.6,2.2"}));
     EXPECT_EQ(f.scenario, (dragon_test::scratch_dir() / "base.toml").string());  // beside the sweep file
     ASSERT_EQ(f.fixed.size(), 2u);
-    EXPECT_EQ(f.fixed[0], (std::pair<std::string, std::string>{"bench-count", "100"}));
+    EXPECT_EQ(f.fixed[0], (std::pair<std::string, std::string>{"bench_count", "100"}));
     EXPECT_EQ(f.fixed[1], (std::pair<std::string, std::string>{"speed", "1.5"}));
     ASSERT_EQ(f.options.size(), 2u);
     EXPECT_EQ(f.options[1].value, "width+0.05");
-    for (const char* bad : {"vary = 3\n", "measure = [1]\n", "colour = \"red\"\n", "[fixed]\nwidth = true\n", "vary = [\n"}) {
+    EXPECT_TRUE(f.warnings.empty());
+    for (const char* bad : {"vary = 3\n", "measure = [1]\n", "colour = \"red\"\n", "[fixed]\nwidth = true\n", "vary = [\n",
+                            "[fixed]\nzoom = 2\n", "vary = [\"path=1,2\"]\n", "vary = [\"widht=1,2\"]\n"}) {
         std::ofstream(file) << bad;
         EXPECT_THROW(read_sweep_file(file.string()), InputError) << bad;
     }
+}
+
+TEST(SweepFile, TheFlagsSpellingIsAnOldNameWithOneWarningEach) {
+    const SweepFile today = parse_sweep_file("vary = [\"turn_pitch=1,2\", \"arc_ratio=1:2:3\"]\n[fixed]\nbody_length = 2\n",
+                                             "today.toml");
+    const SweepFile old = parse_sweep_file("vary = [\"turn-pitch=1,2\", \"arc-ratio=1:2:3\"]\n[fixed]\nbody-length = 2\n",
+                                           "old.toml");
+    EXPECT_EQ(old.vary, today.vary);
+    EXPECT_EQ(old.fixed, today.fixed);
+    EXPECT_TRUE(today.warnings.empty());
+    // One each, in the order of the file's keys ([fixed] before vary).
+    ASSERT_EQ(old.warnings.size(), 3u);
+    EXPECT_EQ(old.warnings[0].key, Key::body_length);
+    EXPECT_EQ(old.warnings[0].message, "sweep file 'old.toml': [fixed] body-length is an old name: write body_length = 2");
+    EXPECT_EQ(old.warnings[1].key, Key::turn_pitch);
+    EXPECT_EQ(old.warnings[1].old_name, "turn-pitch");
+    EXPECT_EQ(old.warnings[1].message,
+              "sweep file 'old.toml': vary \"turn-pitch=1,2\" is an old name: write \"turn_pitch=1,2\"");
+    EXPECT_EQ(old.warnings[2].key, Key::arc_ratio);
+    // Parsing reads no file; the scenario it names is beside it, joined as text.
+    EXPECT_EQ(parse_sweep_file("scenario = \"base.toml\"\n", "a/b.toml").scenario, "a/base.toml");
 }
 
 TEST(SweepRows, LinesPastTheirLimitAndForeignLineEndsAreRefusedAsRead) {

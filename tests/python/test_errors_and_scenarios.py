@@ -2,6 +2,7 @@
 
 import os
 import pickle
+import warnings
 
 import pytest
 
@@ -21,10 +22,46 @@ def test_scenario_is_a_value():
 
 def test_scenario_from_toml_is_the_tools(tmp_path, dragon_json):
     f = tmp_path / "s.toml"
-    f.write_text("[path]\npitch = 0.6\n[dragon]\nbench_count = 80\n")
-    s = bd.Scenario.from_toml(f)
+    f.write_text("pitch = 0.6\nbench_count = 80\n")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # today's names: no warning
+        s = bd.Scenario.from_toml(f)
     assert s.pitch == 0.6 and s.bench_count == 80
     assert bd.collide(s).to_dict() == dragon_json("collide", "--scenario", str(f))
+
+
+def test_old_toml_names_warn_once_each_naming_the_key(tmp_path, dragon):
+    old = tmp_path / "old.toml"
+    old.write_text("[path]\nkind = \"turnaround\"\npitch = 0.6\n[motion]\nhead_speed = 2\n")
+    today = tmp_path / "today.toml"
+    today.write_text("path = \"turnaround\"\npitch = 0.6\nspeed = 2\n")
+    with pytest.warns(FutureWarning) as caught:
+        s = bd.Scenario.from_toml(old)
+    assert s == bd.Scenario.from_toml(today) and s.speed == 2.0
+    messages = [str(w.message) for w in caught]
+    assert len(messages) == 3, messages
+    assert f"scenario file '{old}': [motion] head_speed is an old name: write speed = 2 at the top level" in messages
+    assert any("[path] kind is an old name: write path = \"turnaround\"" in m for m in messages)
+    # The tool says the same words, one warning line each.
+    done = dragon("collide", "--json", "--scenario", str(old))
+    assert sorted(done.stderr.splitlines()) == sorted("dragon: warning: " + m for m in messages)
+    # A key in both forms is refused, naming both.
+    both = tmp_path / "both.toml"
+    both.write_text("speed = 1\n[motion]\nhead_speed = 2\n")
+    with pytest.raises(bd.InputError) as e:
+        bd.Scenario.from_toml(both)
+    assert "speed and [motion] head_speed both set" in str(e.value)
+    assert e.value.field == "speed"
+
+
+def test_a_storyboards_old_scenario_file_warns(tmp_path):
+    (tmp_path / "old.toml").write_text("[path]\npitch = 0.6\n")
+    board = tmp_path / "story.toml"
+    board.write_text("[film]\nsize = \"96x64\"\nscenario = \"old.toml\"\n[[shot]]\nfrom = 10\nto = 11\nrate = 2\n")
+    with pytest.warns(FutureWarning, match=r"\[path\] pitch is an old name: write pitch = 0.6") as caught:
+        bd.film(board, tmp_path / "p.png", at=0.2, progress=False)
+    assert len(caught) == 1
+    assert (tmp_path / "p.png").exists()
 
 
 @pytest.mark.parametrize("values,field", [

@@ -584,27 +584,14 @@ function pythonCall() {
   ].join('\n');
 }
 
+/** The scenario as the tool reads it (--scenario FILE.toml): one key a value, each named as its
+ * flag with underscores (the page's URL key is the flag's name: --bench-count, #bench-count=). */
 function scenarioToml() {
   const k = state.keys;
   return [
     '# A scenario saved by docs/explorer.html: dragon <command> --scenario this.toml',
-    '[dragon]',
-    `bench_count = ${k['bench-count']}`,
-    `head_length = ${k['head-length']}`,
-    `body_length = ${k['body-length']}`,
-    `width = ${k.width}`,
-    `hole_offset = ${k['hole-offset']}`,
-    '',
-    '[path]',
-    `kind = "${state.path}"`,
-    `pitch = ${k.pitch}`,
-    `start_turn = ${k['start-turn']}`,
-    `turn_radius = ${k['turn-radius']}`,
-    `turn_pitch = ${k['turn-pitch']}`,
-    `arc_ratio = ${k['arc-ratio']}`,
-    '',
-    '[motion]',
-    `head_speed = ${k.speed}`,
+    `path = "${state.path}"`,
+    ...KEYS.map(({ flag }) => `${flag.replace(/-/g, '_')} = ${k[flag]}`),
     '',
   ].join('\n');
 }
