@@ -33,7 +33,7 @@ enum class Key : std::uint8_t {
     video_size, fps, speedup, hold, at, crf_h264, crf_vp9, crf_gif, preset, tune, colours, threads, keyint,
     frame_count, film_frame_count,
     // Files.
-    out, tables, compression_level,
+    out, resume, tables, compression_level,
 };
 
 // One key's description: how each front end spells it, its unit and what it means.

@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import io
 import json
+import logging
 import os
 import sys
 import threading
@@ -42,7 +43,7 @@ __version__ = "0.1.0"
 __all__ = [
     "Scenario", "Simulation", "Frame", "Frames", "ValidRange", "Result", "CollideResult", "MinPitchResult",
     "TurnaroundResult", "MaxSpeedResult", "SolveResult", "collide", "min_pitch", "turnaround", "max_speed",
-    "solve", "sweep", "Picture", "render", "video", "film", "InputError", "FileError", "SolverError", "ASSETS",
+    "solve", "sweep", "merge_sweep", "Picture", "render", "video", "film", "InputError", "FileError", "SolverError", "ASSETS",
 ]
 
 #: The package's own assets (colour themes, scenario presets, storyboards).
@@ -736,10 +737,36 @@ def _sweep_rows(spec: str, indices: Sequence[int], stop: Optional[Callable[[], b
     return _core._sweep_rows(spec, list(indices), stop)
 
 
+def _shard(shard: Any) -> str:
+    """`shard` as the library reads it: "K/N" (None: the whole sweep)."""
+    if shard is None:
+        return ""
+    if isinstance(shard, str):
+        return shard
+    if isinstance(shard, (tuple, list)) and len(shard) == 2 and all(isinstance(v, int) and not isinstance(v, bool)
+                                                                   for v in shard):
+        return f"{shard[0]}/{shard[1]}"
+    allowed = 'give "K/N" or (K, N), the K-th of N parts'
+    error = InputError(f"shard {shard!r} is not allowed: {allowed}")
+    error.field, error.value, error.allowed, error.jam = "shard", repr(shard), allowed, None
+    raise error
+
+
+def _rows_frame(header: Sequence[str], rows: Iterable[tuple], spec: str):
+    """The rows (scenario, CSV line) as the DataFrame sweep() returns: in the grid's order."""
+    import pandas as pd
+
+    text = ",".join(header) + "\n" + "".join(line + "\n" for _, line in sorted(rows, key=lambda r: r[0]))
+    frame = pd.read_csv(io.StringIO(text))
+    frame.attrs["sweep"] = spec[len("# dragon sweep "):]
+    return frame
+
+
 def sweep(vary: Mapping[str, Any], measure: Union[str, Sequence[str]], fixed: Optional[Mapping[str, float]] = None,
           *, lo: Union[None, float, str] = None, hi: Union[None, float, str] = None, grid: Optional[float] = None,
-          limit: Optional[float] = None, from_: Moment = None, to: Moment = None, executor: Any = None,
-          chunk: Optional[int] = None,
+          limit: Optional[float] = None, from_: Moment = None, to: Moment = None,
+          out: Union[None, str, os.PathLike] = None, resume: bool = False, shard: Union[None, str, Sequence[int]] = None,
+          executor: Any = None, chunk: Optional[int] = None,
           progress: Union[bool, Callable[[int, int], None], None] = True):
     """Answers over the design space (``dragon sweep``), as a pandas DataFrame with the tool's
     columns: a column per varied value, then each measure's answer with its keys prefixed by the
@@ -754,16 +781,38 @@ def sweep(vary: Mapping[str, Any], measure: Union[str, Sequence[str]], fixed: Op
     ``submit(fn, *args)`` returning futures with ``result()`` (a ThreadPoolExecutor, a
     ProcessPoolExecutor, a Dask ``distributed.Client``, mpi4py's MPIPoolExecutor); by default a
     thread pool with a worker per core (the rows release the GIL).
-    """
-    import pandas as pd
 
+    `out` (a .csv path) also writes the rows to a file exactly as ``dragon sweep -o`` does: into
+    ``OUT.csv.partial``, each chunk's rows made durable as the chunk is done, renamed to `out`
+    when all are there. ``resume=True`` goes on with such a file, the tool's or this function's,
+    after a kill: the rows it holds are taken (checked, a torn last line cut off, failed rows made
+    again) and only the rest computed; the DataFrame holds them all, and ``attrs["resumed"]``
+    says how many came from the file (the lines the tool prints, "resuming: ...", go to the
+    ``benchdragon`` logger). Without `resume`, an unfinished sweep's file is refused, never
+    overwritten. A row whose measure failed (not the scenario's fault) leaves the file
+    unfinished, with a RuntimeWarning: resume it to make that row again. `shard` ("K/N" or
+    (K, N)) makes only the K-th of N disjoint parts, as the tool's ``--shard``; merge_sweep()
+    joins the parts' files.
+    """
     measures = [measure] if isinstance(measure, str) else list(measure)
-    spec, header, count = _core._sweep_setup([_axis(k, v) for k, v in vary.items()], measures, dict(fixed or {}),
-                                             lo, hi, grid, limit, from_, to)
+    spec, header, count, part, parts = _core._sweep_setup([_axis(k, v) for k, v in vary.items()], measures,
+                                                          dict(fixed or {}), lo, hi, grid, limit, from_, to,
+                                                          _shard(shard))
+    rows_file = None
+    resumed: list = []
+    if out is None:
+        _core._check_sweep_output("", bool(resume))
+        todo = list(range(part - 1, count, parts))
+    else:
+        rows_file = _core._SweepFile(spec, os.fspath(out), bool(resume))
+        resumed = rows_file.resumed
+        for note in rows_file.notes:
+            logging.getLogger("benchdragon").info(note)
+        todo = rows_file.todo()
     workers = os.cpu_count() or 1
     if chunk is None:
-        chunk = max(1, min(64, count // (4 * workers) or 1))
-    chunks = [list(range(k, min(count, k + chunk))) for k in range(0, count, chunk)]
+        chunk = max(1, min(64, len(todo) // (4 * workers) or 1))
+    chunks = [todo[j:j + chunk] for j in range(0, len(todo), chunk)]
     own = executor is None
     if own:
         from concurrent.futures import ThreadPoolExecutor
@@ -773,15 +822,20 @@ def sweep(vary: Mapping[str, Any], measure: Union[str, Sequence[str]], fixed: Op
     stopping = threading.Event()
     callback, close = _progress(progress, "scenarios", "sweep")
     lines: list = [None] * len(chunks)
+    failed = 0
     try:
         futures = [executor.submit(_sweep_rows, spec, c, stopping.is_set if threads else None) for c in chunks]
         done = 0
         try:
-            for k, f in enumerate(futures):
-                lines[k] = f.result()
-                done += len(chunks[k])
+            # In the grid's order: each chunk's rows are appended (and made durable) once it and
+            # those before it are done.
+            for j, f in enumerate(futures):
+                lines[j] = f.result()
+                if rows_file is not None:
+                    failed += rows_file.append(chunks[j], lines[j])
+                done += len(chunks[j])
                 if callback:
-                    callback(done, count)
+                    callback(done, len(todo))
         except BaseException:
             stopping.set()
             for f in futures:
@@ -791,7 +845,26 @@ def sweep(vary: Mapping[str, Any], measure: Union[str, Sequence[str]], fixed: Op
         close()
         if own:
             executor.shutdown(wait=True, cancel_futures=True)
-    text = ",".join(header) + "\n" + "".join(line + "\n" for chunk_lines in lines for line in chunk_lines)
-    frame = pd.read_csv(io.StringIO(text))
-    frame.attrs["sweep"] = spec[len("# dragon sweep "):]
+    if rows_file is not None:
+        if failed == 0:
+            rows_file.finish()
+        else:
+            warnings.warn(f"{failed} of {len(todo)} rows failed (their status says why): the rows stay in "
+                          f"{rows_file.partial}, and resume=True makes the failed ones again", RuntimeWarning,
+                          stacklevel=2)
+    made = ((scenario, line) for c, chunk_lines in zip(chunks, lines) for scenario, line in zip(c, chunk_lines))
+    frame = _rows_frame(header, [*resumed, *made], spec)
+    frame.attrs["resumed"] = len(resumed)
     return frame
+
+
+def merge_sweep(out: Union[str, os.PathLike], parts: Sequence[Union[str, os.PathLike]]):
+    """A sweep's parts (the files of its shards, the tool's or sweep()'s) joined into `out` (a
+    .csv), as ``dragon sweep merge OUT.csv PART.csv...`` joins them, byte for byte: the rows in
+    the files' order, every scenario checked to be there exactly once, `out` written
+    all-or-nothing. Returns the whole sweep as sweep() would (a DataFrame in the grid's order,
+    ``attrs["sweep"]`` the whole sweep's description). Raises InputError naming the file and the
+    line at fault: a part of another sweep, a torn last line (resume that part first), a row that
+    is no scenario of the sweep, a scenario twice, or scenarios missing."""
+    spec, header, rows = _core._merge_sweep(os.fspath(out), [os.fspath(p) for p in parts])
+    return _rows_frame(header, rows, spec)

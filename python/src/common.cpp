@@ -37,6 +37,16 @@ void raise_with(const py::object& type, const std::string& message, const py::di
 
 }  // namespace
 
+void raise_input_error(const InputError& e, const std::string& field) {
+    py::dict a;
+    a["field"] = field;
+    a["value"] = e.value();
+    a["allowed"] = e.allowed();
+    a["jam"] = py::none();
+    raise_with(input_error, e.what(), a);
+    throw py::error_already_set();
+}
+
 void register_errors(py::module_& m) {
     const py::object builtins = py::module_::import("builtins");
     const auto make = [&](const char* name, const char* base, const char* doc) {

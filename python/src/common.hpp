@@ -26,6 +26,9 @@ namespace py = pybind11;
 // benchdragon.InputError (a ValueError), FileError (an OSError), SolverError (a RuntimeError),
 // made in the module and translated from the library's exceptions.
 void register_errors(py::module_& m);
+// Raises e as benchdragon.InputError naming `field`, the keyword that gave its value where the
+// key's usual keyword is not it (a sweep's `out`, a picture's `path`).
+[[noreturn]] void raise_input_error(const InputError& e, const std::string& field);
 
 // A scenario from keyword values named as the CLI's flags in snake_case (bench_count=100), over
 // the contest's defaults; each value checked on its own range (rules between values are checked

@@ -12,6 +12,7 @@ namespace dragon::python {
 void bind_simulation(py::module_& m);
 void bind_answers(py::module_& m);
 void bind_sweep(py::module_& m);
+void bind_sweep_files(py::module_& m);
 void bind_pictures(py::module_& m);
 }  // namespace dragon::python
 
@@ -50,5 +51,6 @@ PYBIND11_MODULE(_benchdragon, m) {
     bind_simulation(m);
     bind_answers(m);
     bind_sweep(m);
+    bind_sweep_files(m);
     bind_pictures(m);
 }

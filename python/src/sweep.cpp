@@ -11,12 +11,13 @@
 namespace dragon::python {
 
 void bind_sweep(py::module_& m) {
-    // (first line, header, scenario count) of a sweep: vary as NAME=VALUES specs (names as the
-    // CLI's flags), measures, the fixed values as Scenario keywords, and the options.
+    // (first line, header, scenario count, K, N) of a sweep, or of its part K of N: vary as
+    // NAME=VALUES specs (names as the CLI's flags), measures, the fixed values as Scenario
+    // keywords, the options, and the shard ("K/N", or "" for the whole sweep).
     m.def("_sweep_setup",
           [](const std::vector<std::string>& vary, const std::vector<std::string>& measures, const py::dict& fixed,
              const py::object& lo, const py::object& hi, const py::object& grid, const py::object& limit,
-             const py::object& from, const py::object& to) {
+             const py::object& from, const py::object& to, const std::string& shard) {
               SweepAsked asked;
               asked.vary = vary;
               asked.measures = measures;
@@ -30,6 +31,7 @@ void bind_sweep(py::module_& m) {
               if (!limit.is_none()) asked.limit = limit.cast<double>();
               asked.from = text(from);
               asked.to = text(to);
+              asked.shard = shard;
               const Scenario given = scenario_from(fixed);
               for (const auto& [key, v] : fixed) {
                   std::string flag = py::str(key);
@@ -56,10 +58,11 @@ void bind_sweep(py::module_& m) {
                   validate(given, fixed_values);
                   return given;
               });
-              return py::make_tuple(spec_line(setup), header(setup), setup.grid.size());
+              return py::make_tuple(spec_line(setup), header(setup), setup.grid.size(), setup.shard.index,
+                                    setup.shard.count);
           },
           py::arg("vary"), py::arg("measures"), py::arg("fixed"), py::arg("lo"), py::arg("hi"), py::arg("grid"),
-          py::arg("limit"), py::arg("from_"), py::arg("to"));
+          py::arg("limit"), py::arg("from_"), py::arg("to"), py::arg("shard") = "");
 
     // The CSV lines of the rows at `indices` of the sweep whose first line is `spec`, made on the
     // calling thread with the GIL released (Ctrl-C stops it between rows and inside them). `stop`,

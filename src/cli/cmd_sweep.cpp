@@ -1,7 +1,8 @@
 // dragon sweep: the answers mapped over the design space; dragon sweep merge: a sweep's parts
-// joined. Thin: the grid, rows and runs are the library's (dragon/sweep.hpp), the answers the
-// commands' (cli/answers.hpp).
+// joined. Thin: the grid, rows, their files, resuming and merging are the library's
+// (dragon/sweep.hpp, sweep_setup.hpp, sweep_files.hpp); here are the flags, stdout and stderr.
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <thread>
@@ -10,14 +11,16 @@
 
 #include "commands.hpp"
 #include "scenario_flags.hpp"
+#include "progress.hpp"
+#include "report.hpp"
 #include "status.hpp"
-#include "sweep_merge.hpp"
 #include "sweep_plot.hpp"
-#include "sweep_run.hpp"
+#include "sweep_setup.hpp"
 #include "wording.hpp"
 #include "print_flags.hpp"
 #include "render_flags.hpp"
 #include "dragon/atomic_file.hpp"
+#include "dragon/sweep_files.hpp"
 
 namespace dragon::cli {
 
@@ -26,7 +29,9 @@ namespace {
 struct SweepOptions {
     ScenarioFlags scenario;
     SweepRequest request;
-    SweepOutput output;
+    SweepOutputRequest output;  // -o, --resume
+    bool json = false;          // each row as a JSON object on stdout
+    bool quiet = false;
     std::string plot;
     PrintFlags print;  // the map's size on a page
     std::string lang = "en", merge_lang = "en";  // the map's words
@@ -61,8 +66,6 @@ int run_merge(const SweepOptions& opt, RunOutputs& outputs) {
     if (opt.merge_files.size() < 2)
         throw InputError("dragon sweep merge needs OUT.csv and the files to merge: dragon sweep merge OUT.csv PART.csv...");
     const std::string out = opt.merge_files.front();
-    if (extension_of(out) != ".csv")
-        throw InputError(fmt::format("{} has extension '{}': the merged sweep is written as .csv", out, extension_of(out)));
     const std::vector<std::string> parts(opt.merge_files.begin() + 1, opt.merge_files.end());
     const SweepSetup whole = whole_sweep(parts, &outputs);
     const std::optional<PrintSize> print = plot_print(opt.merge_print, opt.merge_plot);
@@ -73,9 +76,16 @@ int run_merge(const SweepOptions& opt, RunOutputs& outputs) {
     }
     std::optional<MapCollector> maps;
     if (!opt.merge_plot.empty()) maps.emplace(whole);
-    const std::size_t rows = merge_parts(whole, out, parts, [&](const std::string& row) {
-        if (maps) maps->add(row);
-    }, &outputs);
+    std::size_t rows = 0;
+    try {
+        rows = merge_sweep_parts(whole, out, parts, [&](std::size_t, const std::string& row) {
+            if (maps) maps->add(row);
+        }, &outputs);
+    } catch (const InputError& e) {
+        // The merged file is OUT.csv, the first of the files, not --out.
+        if (e.key() != Key::out) throw;
+        throw InputError(fmt::format("{} is not allowed: {}", e.value(), e.allowed()));
+    }
     status(opt.merge_quiet, "wrote {}: {} from {}", out, count_of(static_cast<long long>(rows), "row"),
            count_of(static_cast<long long>(parts.size()), "file"));
     if (maps) write_plot(opt.merge_plot, *maps, print, language, opt.merge_quiet, outputs);
@@ -106,11 +116,12 @@ int run(SweepOptions& opt, Executor& tool_pool, RunOutputs& outputs) {
     if (opt.workers && *opt.workers < 1)
         throw InputError(fmt::format("--workers {} is not allowed: at least 1", *opt.workers));
     const SweepSetup setup = make_setup(opt.request, opt.scenario, &outputs);
-    const int workers = sweep_workers(opt.workers, setup.shard.size(setup.grid.size()), opt.output.quiet);
+    const int workers = sweep_workers(opt.workers, setup.shard.size(setup.grid.size()), opt.quiet);
     std::optional<ThreadPool> own_pool;  // --workers: a pool of that size for this sweep
     if (workers > 0) own_pool.emplace(workers);
     Executor& ex = own_pool ? static_cast<Executor&>(*own_pool) : tool_pool;
-    check_output(opt.output, &outputs);
+    opt.output.outputs = &outputs;  // the rows and the plot are this run's outputs
+    check_sweep_output(opt.output);
     const std::optional<PrintSize> print = plot_print(opt.print, opt.plot);
     const Language language = parse_language(opt.lang);
     if (!opt.plot.empty()) {
@@ -120,13 +131,28 @@ int run(SweepOptions& opt, Executor& tool_pool, RunOutputs& outputs) {
     // The map's values only when a map is asked for: a row is otherwise never held.
     std::optional<MapCollector> maps;
     if (!opt.plot.empty()) maps.emplace(setup);
-    const SweepTally t = run_rows(setup, opt.output, ex, [&](const std::string& row) {
+    const bool to_stdout = opt.output.out.empty();
+    if (to_stdout && !opt.json) {
+        fmt::print("{}\n{}\n", spec_line(setup), csv_line(header(setup)));
+        std::fflush(stdout);
+    }
+    ProgressLine progress("scenarios", opt.quiet);
+    SweepCallbacks heard;
+    heard.on_row = [&](std::size_t, const std::string& row) {
         if (maps) maps->add(row);
-    }, &outputs);
-    if (!opt.output.out.empty())
-        status(opt.output.quiet, "wrote {}: {}{}", opt.output.out, count_of(static_cast<long long>(t.done_before + t.made), "row"),
+    };
+    heard.on_made = [&](const SweepRow& row) {
+        if (to_stdout && !opt.json) fmt::print("{}\n", row.csv);
+        if (opt.json) print_json(row.json);
+        if (to_stdout || opt.json) require_stdout_written();  // each row out as it finishes
+    };
+    heard.on_note = [&](const std::string& note) { status(opt.quiet, "{}", note); };
+    heard.progress = [&](std::int64_t made, std::int64_t total) { progress.update(made, total); };
+    const SweepTally t = write_sweep(setup, opt.output, ex, heard);
+    if (!to_stdout)
+        status(opt.quiet, "wrote {}: {}{}", opt.output.out, count_of(static_cast<long long>(t.done_before + t.made), "row"),
                t.done_before ? fmt::format(" ({} new)", t.made) : "");
-    if (maps) write_plot(opt.plot, *maps, print, language, opt.output.quiet, outputs);
+    if (maps) write_plot(opt.plot, *maps, print, language, opt.quiet, outputs);
     // A run that fails leaves no finished file: the rows stay in the partial one, and --resume
     // makes the failed rows again.
     if (t.failed > 0)
@@ -170,7 +196,7 @@ void register_sweep(CLI::App& app, Registry& reg) {
                     "Rows to this .csv, each made durable as it finishes (into OUT.csv.partial, renamed when all are "
                     "there); without it, onto stdout");
     sub->add_flag("--resume", opt->output.resume, "Go on with the rows -o already holds; compute only the rest");
-    sub->add_flag("--json", opt->output.json, "Each row as one JSON object on stdout, one a line, as it finishes");
+    sub->add_flag("--json", opt->json, "Each row as one JSON object on stdout, one a line, as it finishes");
     sub->add_option("--shard", opt->request.shard, "K/N: run only the K-th of N disjoint parts (merge them after)");
     sub->add_option("--plot", opt->plot, "Also draw the map (.png, .svg or .pdf): line plots over one varied value, heat "
                                          "maps over two");
@@ -179,7 +205,7 @@ void register_sweep(CLI::App& app, Registry& reg) {
     sub->add_option("--workers", opt->workers,
                     fmt::format("Scenarios run at once (default: one per core; at most one per scenario and {} per "
                                 "core: more would only wait)", kWorkersPerCore));
-    add_quiet_flag(sub, opt->output.quiet);
+    add_quiet_flag(sub, opt->quiet);
 
     opt->merge = sub->add_subcommand("merge", "Joins a sweep's parts (its shards) into one file, checking every scenario "
                                               "is there once: dragon sweep merge OUT.csv PART.csv...");

@@ -31,7 +31,7 @@ bool has_flag(Key key) {
         case Key::lang: case Key::width_in: case Key::font_pt: case Key::dpi: case Key::plot: case Key::fps:
         case Key::speedup: case Key::hold: case Key::at: case Key::crf_h264: case Key::crf_vp9: case Key::crf_gif:
         case Key::preset: case Key::tune: case Key::colours: case Key::threads: case Key::film_frame_count:
-        case Key::tables: case Key::zoom: case Key::centre:
+        case Key::tables: case Key::zoom: case Key::centre: case Key::out: case Key::resume:
             return true;
         default: return false;
     }
@@ -53,7 +53,7 @@ std::string qualifier(Key key) {
 bool takes_flag(Key key) {
     if (has_flag(key) || key_info(key).scenario != 0) return true;
     switch (key) {
-        case Key::path: case Key::collision: case Key::only: case Key::out:
+        case Key::path: case Key::collision: case Key::only:
         case Key::width_cm: case Key::video_size:
             return true;
         default: return false;
@@ -73,6 +73,10 @@ std::string word(const InputError& e) {
     // A moment past the end of the valid motion: the jam in the CLI's own words.
     if (const auto* past = dynamic_cast<const PastTheValidMotion*>(&e))
         return fmt::format("{} {} is not allowed: {}", flag, e.value(), jam_sentence(past->jam));
+    // Going on with a sweep's rows (a flag of no value): refused, or needed and not given.
+    if (key == Key::resume)
+        return e.value() == "false" ? fmt::format("{}: add {} to go on with it, or remove it", e.allowed(), flag)
+                                    : fmt::format("{} is not allowed: {}", flag, e.allowed());
     // A file whose extension names no format: said as the other output flags say it.
     if (key == Key::plot)
         return fmt::format("{} {} has extension '{}': {}", flag, e.value(), extension_of(e.value()), e.allowed());

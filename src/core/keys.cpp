@@ -73,6 +73,7 @@ constexpr std::array kKeys = {
     KeyInfo{Key::frame_count, "frame_count", "frame count", "", "frames of a table or video"},
     KeyInfo{Key::film_frame_count, "frame_count", "film frame count", "", "frames of a film"},
     KeyInfo{Key::out, "out", "output file", "", "the file written"},
+    KeyInfo{Key::resume, "resume", "resume", "", "go on with a sweep's unfinished rows file instead of starting afresh"},
     KeyInfo{Key::tables, "tables", "table format", "", "the paper's tables: latex, markdown or csv"},
     KeyInfo{Key::compression_level, "compression_level", "compression level", "", "a workbook's zlib level, 0 to 9"},
 };

@@ -71,10 +71,11 @@ TEST(CliVocabulary, ASweepFilesOldNamesRunTheSameWithAWarningEach) {
                                                            "[fixed]\nbody_length = 2.1\n");
     const std::string sweep_old = write("sw-old.toml", "measure = \"turnaround\"\nvary = [\"arc-ratio=1,2\"]\n"
                                                        "[fixed]\nbody-length = 2.1\n");
-    const CliRun t = run_dragon("sweep " + sweep_today + " -q");
+    // One worker: the rows come out in the grid's order, so that the two runs' stdout compare.
+    const CliRun t = run_dragon("sweep " + sweep_today + " -q --workers 1");
     ASSERT_EQ(t.code, 0) << t.err;
     EXPECT_EQ(t.err, "");
-    const CliRun o = run_dragon("sweep " + sweep_old + " -q");
+    const CliRun o = run_dragon("sweep " + sweep_old + " -q --workers 1");
     ASSERT_EQ(o.code, 0) << o.err;
     EXPECT_EQ(o.out, t.out);
     EXPECT_EQ(warnings(o.err), 2) << o.err;

@@ -22,7 +22,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/scenario_flags.hpp"
-#include "cli/sweep_row_check.hpp"
+#include "dragon/sweep_row_check.hpp"
 #include "cli/sweep_setup.hpp"
 #include "dragon/row_files.hpp"
 #include "dragon/sweep.hpp"

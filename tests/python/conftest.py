@@ -20,11 +20,18 @@ def _dragon_path() -> Path:
 
 
 @pytest.fixture(scope="session")
-def dragon():
-    """Runs the tool; returns its CompletedProcess (text)."""
+def dragon_exe() -> Path:
+    """The tool's path, for a test that starts it itself (to kill it)."""
     exe = _dragon_path()
     if not exe.exists():
         pytest.skip(f"the dragon tool is not built at {exe} (set DRAGON_BIN)")
+    return exe
+
+
+@pytest.fixture(scope="session")
+def dragon(dragon_exe):
+    """Runs the tool; returns its CompletedProcess (text)."""
+    exe = dragon_exe
 
     def run(*args: str, check: bool = True) -> subprocess.CompletedProcess:
         done = subprocess.run([str(exe), *args], capture_output=True, text=True, timeout=600)

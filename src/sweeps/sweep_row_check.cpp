@@ -1,10 +1,11 @@
-#include "sweep_row_check.hpp"
+// Checking a row read back from a sweep's file (dragon/sweep_row_check.hpp).
+#include "dragon/sweep_row_check.hpp"
 
 #include <fmt/format.h>
 
 #include "dragon/input_file.hpp"
 
-namespace dragon::cli {
+namespace dragon {
 
 namespace {
 
@@ -85,4 +86,4 @@ RowCheck check_row(const SweepSetup& setup, const std::string& line) {
     return {index, "", failed};
 }
 
-}  // namespace dragon::cli
+}  // namespace dragon

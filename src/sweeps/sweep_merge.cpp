@@ -1,5 +1,4 @@
-#include "sweep_merge.hpp"
-
+// A sweep's parts joined into one file (dragon/sweep_files.hpp).
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -9,11 +8,12 @@
 
 #include <fmt/format.h>
 
-#include "sweep_row_check.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/input_file.hpp"
+#include "dragon/sweep_files.hpp"
+#include "dragon/sweep_row_check.hpp"
 
-namespace dragon::cli {
+namespace dragon {
 
 namespace {
 
@@ -36,14 +36,17 @@ RowFileLimits part_limits(const SweepSetup& whole, RunOutputs* outputs) {
 }  // namespace
 
 SweepSetup whole_sweep(const std::vector<std::string>& parts, RunOutputs* outputs) {
-    if (parts.empty()) throw InputError("dragon sweep merge needs the files to merge: dragon sweep merge OUT.csv PART.csv...");
-    // The first line is all it takes; merge_parts reads the rest.
+    if (parts.empty()) throw InputError("a merge needs the files to merge: give at least one part");
+    // The first line is all it takes; merge_sweep_parts reads the rest.
     const std::string spec = read_first_line(parts.front(), {"sweep part", false, outputs});
     return read_spec_line(whole_spec_line(spec, parts.front()), parts.front());
 }
 
-std::size_t merge_parts(const SweepSetup& whole, const std::string& out, const std::vector<std::string>& parts,
-                        const std::function<void(const std::string&)>& on_row, RunOutputs* outputs) {
+std::size_t merge_sweep_parts(const SweepSetup& whole, const std::string& out, const std::vector<std::string>& parts,
+                              const SweepRowHeard& on_row, RunOutputs* outputs) {
+    if (extension_of(out) != ".csv")
+        throw InputError(Key::out, out, fmt::format("a merged sweep is written as .csv (it has extension '{}')",
+                                                    extension_of(out)));
     const std::string spec = spec_line(whole), head = csv_line(header(whole));
     // Which file holds each scenario (0: none yet): 4 bytes a scenario, the rows never held.
     std::vector<std::uint32_t> owner(whole.grid.size(), 0);
@@ -86,13 +89,13 @@ std::size_t merge_parts(const SweepSetup& whole, const std::string& out, const s
                                                  describe_scenario(whole, *index), parts[owner[*index] - 1], path, number));
                 owner[*index] = static_cast<std::uint32_t>(f + 1);
                 fmt::print(sink.get(), "{}\n", line);
-                on_row(line);
+                if (on_row) on_row(*index, line);
                 ++rows;
             },
             part_limits(whole, outputs));
         if (scan.torn)
-            throw InputError(fmt::format("'{}' ends in a torn line: it is the rows of an unfinished run (go on with it "
-                                         "with --resume first)", path));
+            throw InputError(fmt::format("'{}' ends in a torn line: it is the rows of an unfinished run (resume it "
+                                         "first)", path));
     }
     std::size_t missing = 0, first = 0;
     for (std::size_t i = owner.size(); i-- > 0;)
@@ -106,4 +109,4 @@ std::size_t merge_parts(const SweepSetup& whole, const std::string& out, const s
     return rows;
 }
 
-}  // namespace dragon::cli
+}  // namespace dragon

@@ -1,16 +1,17 @@
-// A row read back from a sweep's file (--resume, sweep merge) is checked whole before it is
-// taken: a row cut short, one with cells added, a line of NULs or an edited cell would otherwise
-// pass into a "finished" file and onto its map.
+// A row read back from a sweep's file (a resumed sweep's, a merge's parts) is checked whole
+// before it is taken: a row cut short, one with cells added, a line of NULs or an edited cell
+// would otherwise pass into a "finished" file and onto its map.
 #pragma once
 
 #include <cstddef>
 #include <optional>
 #include <string>
 
-#include "sweep_setup.hpp"
 #include "dragon/row_files.hpp"
+#include "dragon/sweep.hpp"
+#include "dragon/sweep_setup.hpp"
 
-namespace dragon::cli {
+namespace dragon {
 
 // The longest cell a sweep writes is a status of a few notes, a few hundred characters: 4 KiB
 // leaves room, and bounds a row by the number of its columns.
@@ -37,4 +38,4 @@ struct RowCheck {
 };
 RowCheck check_row(const SweepSetup& setup, const std::string& line);
 
-}  // namespace dragon::cli
+}  // namespace dragon
