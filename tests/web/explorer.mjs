@@ -17,10 +17,6 @@ const argv = process.argv.slice(2);
 const dragonArg = argv.indexOf('--dragon') >= 0 ? argv[argv.indexOf('--dragon') + 1] : null;
 const dragon = [dragonArg, join(root, 'build/src/dragon'), '/work/main/build/src/dragon'].find((p) => p && existsSync(p)) ?? null;
 
-// DRAGON_WEB_EXACT=1: every value's text as the tool prints it, to the last digit (see close()).
-const exact = process.env.DRAGON_WEB_EXACT === '1';
-/** @type {string[]} */
-const lastDigits = [];
 let failures = 0;
 let checks = 0;
 /** @param {boolean} ok @param {string} what */
@@ -83,41 +79,13 @@ async function compareWithTool(page, command, keys, label) {
   for (const key of keys) {
     const mine = await valueOf(page, `${command}.${key}`);
     const tool = jsonLeafText(out, key);
-    if (mine !== null && tool !== undefined && mine !== tool && close(JSON.parse(mine), JSON.parse(tool), tolerance(command, key))) {
-      // Emscripten's libm (musl's) and glibc's round sin, cos, atan2, asinh, ... differently in
-      // the last bit: numbers the page and the tool compute then differ in their last digits.
-      lastDigits.push(`${label}: ${command}.${key}: page ${mine}, dragon ${tool}`);
-      check(!exact, `${label}: ${command}.${key}: page ${mine}, dragon ${tool} (DRAGON_WEB_EXACT=1)`);
-      continue;
-    }
+    // Every value's text as the tool prints it, to the last digit: the page and the tool compute
+    // with the library's own elementary functions (dragon/portable_math.hpp), not their C
+    // libraries' (musl's and glibc's round sin, atan2, asinh, ... differently in the last bit).
     check(mine !== null && mine === tool, `${label}: ${command}.${key}: page ${mine}, dragon ${tool} (${line})`);
   }
 }
 
-/**
- * How closely (relatively) a value of the page may differ from the tool's when libm rounds
- * differently: 1e-9, but where a smallest clearance or a largest speed is reached (a flat
- * minimum or maximum in time, located to about the square root of the rounding) 1e-7.
- * @param {string} command @param {string} key
- */
-function tolerance(command, key) {
-  const where = /(^|\.)(time|travel|head_arc)$/.test(key);
-  return where && (command === 'max-speed' || key.startsWith('clearance.')) ? 1e-7 : 1e-9;
-}
-
-/**
- * The same JSON, its numbers within `tol` of each other relatively.
- * @param {any} a @param {any} b @param {number} tol @returns {boolean}
- */
-function close(a, b, tol) {
-  if (typeof a === 'number' && typeof b === 'number') return Math.abs(a - b) <= tol * Math.max(1, Math.abs(a), Math.abs(b));
-  if (Array.isArray(a) && Array.isArray(b)) return a.length === b.length && a.every((x, i) => close(x, b[i], tol));
-  if (a && b && typeof a === 'object' && typeof b === 'object') {
-    const ka = Object.keys(a), kb = Object.keys(b);
-    return ka.length === kb.length && ka.every((k) => close(a[k], b[k], tol));
-  }
-  return a === b;
-}
 
 const Q = {
   collide: ['time', 'benches', 'head_radius', 'point', 'travel', 'evaluations', 'to', 'jam'],
@@ -268,11 +236,6 @@ for (const hash of scenarios) {
 }
 
 check(problems.length === 0, `offline and quiet: ${problems.join('; ')}`);
-if (lastDigits.length) {
-  console.log(`NOTE: ${lastDigits.length} values differ from the tool's in their last digits only (within 1e-9 relative, 1e-7 where a clearance or speed is extreme; ` +
-    'the WebAssembly build\'s libm rounds differently from glibc\'s); DRAGON_WEB_EXACT=1 fails on them:');
-  for (const l of lastDigits) console.log(`  ${l}`);
-}
 await browser.close();
 console.log(`${checks - failures} of ${checks} checks passed${dragon ? ` (answers compared with ${dragon})` : ''}`);
 process.exit(failures ? 1 : 0);
