@@ -75,9 +75,9 @@ public:
     // The run stays open: files handed to it afterwards wait for the next commit().
     void commit();
 
-    // What the run holds and reads: defined and used by the io component's file code only.
+    /// What the run holds and reads: defined and used by the io component's file code only.
     struct Files;
-    Files& files() { return *files_; }
+    Files& files() { return *files_; }  ///< the run's files (the io component's own use)
 
 private:
     std::unique_ptr<Files> files_;

@@ -56,7 +56,7 @@ struct KeyWarning {
     std::string old_name;  // as the file wrote it
     std::string message;   // "scenario file 'x.toml': [motion] head_speed is an old name: write speed = 1 ..."
 };
-using KeyWarnings = std::vector<KeyWarning>;
+using KeyWarnings = std::vector<KeyWarning>;  ///< a file's warnings, in the order of its keys
 
 // Every key, in the order of the enum (key_info(k).key == k).
 std::span<const KeyInfo> all_keys();

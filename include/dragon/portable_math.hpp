@@ -14,14 +14,14 @@
 
 namespace dragon::math {
 
-double sin(double x);
-double cos(double x);
-double tan(double x);
-double atan(double x);
-double atan2(double y, double x);
-double asin(double x);
-double hypot(double x, double y);
-double log1p(double x);
-double asinh(double x);
+double sin(double x);               ///< sine of x (radians)
+double cos(double x);               ///< cosine of x (radians)
+double tan(double x);               ///< tangent of x (radians)
+double atan(double x);              ///< arc tangent, in [-pi/2, pi/2]
+double atan2(double y, double x);   ///< the angle of (x, y), in [-pi, pi]
+double asin(double x);              ///< arc sine, in [-pi/2, pi/2]; NaN outside [-1, 1]
+double hypot(double x, double y);   ///< sqrt(x^2 + y^2) without overflow or underflow
+double log1p(double x);             ///< log(1 + x), accurate for small x
+double asinh(double x);             ///< inverse hyperbolic sine
 
 }  // namespace dragon::math

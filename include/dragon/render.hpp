@@ -296,6 +296,7 @@ void render_png(const Scene& scene, int width_px, int height_px, const std::stri
 // and text selectable; with a page, both exactly the page's size in points.
 void render_svg(const Scene& scene, int width_px, int height_px, const std::string& path, const Page& page = {},
                 RunOutputs* outputs = nullptr);
+/// The PDF of the scene (as render_svg: points at 96 px to the inch, or the page's size).
 void render_pdf(const Scene& scene, int width_px, int height_px, const std::string& path, const Page& page = {},
                 RunOutputs* outputs = nullptr);
 // The scene at a print size (its width on the page, its text in points; aspect: height over

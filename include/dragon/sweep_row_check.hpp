@@ -36,6 +36,7 @@ struct RowCheck {
     std::string problem;               // else why not
     bool failed = false;               // a good row whose status notes a measure as failed
 };
+/// The check above of one row (a line of the file, without its line end) against this sweep.
 RowCheck check_row(const SweepSetup& setup, const std::string& line);
 
 }  // namespace dragon

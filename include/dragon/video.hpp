@@ -110,13 +110,13 @@ inline constexpr int kSpeedColoursPalette = 256;
 // unset values are VideoOptions' defaults. An option of another format's encoder is refused,
 // not ignored: a preset for .webm would do nothing.
 struct EncoderRequest {
-    int width = VideoOptions{}.width;
-    int height = VideoOptions{}.height;
-    double fps = VideoOptions{}.fps;
-    std::optional<int> crf;
+    int width = VideoOptions{}.width;    ///< pixels
+    int height = VideoOptions{}.height;  ///< pixels
+    double fps = VideoOptions{}.fps;     ///< frames per second
+    std::optional<int> crf;              ///< quality (VideoOptions::crf); unset: the codec's default
     std::optional<std::string> preset;  // .mp4 only (Key::preset)
     std::optional<std::string> tune;    // .mp4 only (Key::tune)
-    std::optional<int> threads;
+    std::optional<int> threads;          ///< encoder threads (VideoOptions::threads)
     std::optional<int> colours;  // .gif only (Key::colours)
     bool speed_colours = false;  // frames coloured by speed: a GIF's default palette is kSpeedColoursPalette
 };
