@@ -12,6 +12,7 @@
 #include "dragon/answers.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/contest.hpp"
+#include "dragon/contest_files.hpp"
 #include "dragon/sweep_setup.hpp"
 #include "dragon/tables.hpp"
 #include "dragon/turnaround.hpp"
@@ -101,36 +102,18 @@ void bind_answers(py::module_& m) {
               o.pitch_grid = grid;
               o.speed_limit = limit;
               o.turn_window = window_from(kTurnaroundWindow, from, to);
-              std::vector<std::unique_ptr<AtomicFile>> files;
-              AtomicFile *result1 = nullptr, *result2 = nullptr, *result4 = nullptr, *summary = nullptr;
+              // The files as dragon solve writes them (the library's ContestFiles): checked before
+              // any work, all new or all as they were.
+              std::unique_ptr<ContestFiles> files;
               if (!out.is_none()) {
-                  namespace fs = std::filesystem;
-                  const fs::path dir = py::str(out).cast<std::string>();
-                  if (!make_output_folder(dir.string()))
-                      throw FileError(dir.string(), "make the folder", "it cannot be made there");
-                  const auto target = [&](bool needed, const char* name) -> AtomicFile* {
-                      if (!needed) return nullptr;
-                      files.push_back(std::make_unique<AtomicFile>((dir / name).string()));
-                      return files.back().get();
-                  };
-                  result1 = target(o.asks(Question::q1), "result1.xlsx");
-                  result2 = target(o.asks(Question::q2), "result2.xlsx");
-                  result4 = target(o.asks(Question::q4), "result4.xlsx");
-                  summary = target(true, "summary.json");
-                  if (result1) o.on_q1_table = [result1](const std::vector<Frame>& t) { write_result_xlsx(t, *result1); };
-                  if (result4) o.on_q4_table = [result4](const std::vector<Frame>& t) { write_result_xlsx(t, *result4); };
+                  files = std::make_unique<ContestFiles>(py::str(out).cast<std::string>(), o);
+                  files->attach(o);
               }
               return interruptible([&](Executor& ex) {
                   o.executor = &ex;
                   const ContestAnswers a = solve_contest(s, o);
                   const std::string text = json_text(contest_summary(a, o), 2) + "\n";
-                  if (summary) {
-                      if (result2) write_result2_xlsx(a.q2 && a.q2->contact ? a.q2->contact->frame : Frame{}, *result2);
-                      write_text_file(*summary, text);
-                      std::vector<AtomicFile*> set;
-                      for (const auto& f : files) set.push_back(f.get());
-                      commit_together(set);
-                  }
+                  if (files) files->finish(a, text);
                   return text;
               }, workers_from(workers));
           },

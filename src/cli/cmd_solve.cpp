@@ -25,6 +25,7 @@
 #include "wording.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/contest.hpp"
+#include "dragon/contest_files.hpp"
 #include "dragon/language.hpp"
 #include "dragon/paper_tables.hpp"
 #include "dragon/tables.hpp"
@@ -142,43 +143,10 @@ void register_solve(CLI::App& app, Registry& reg) {
         contest.speed_limit = opt->limit;
         contest.turn_window = opt->window.resolve(kTurnaroundWindow);
 
-        namespace fs = std::filesystem;
-        if (!make_output_folder(opt->dir, &outputs))
-            throw InputError(fmt::format("-o {} is not allowed: the folder cannot be created", opt->dir));
-        // Every target is checked, and its temporary file made, before any work: a folder or an
-        // unwritable name in the way fails here with no file touched. They are renamed into
-        // place together at the end, so the set is all new or all old.
-        std::vector<std::unique_ptr<AtomicFile>> files;
-        std::vector<std::string> written;
-        const auto target = [&](bool needed, const std::string& name) -> AtomicFile* {
-            if (!needed) return nullptr;
-            files.push_back(std::make_unique<AtomicFile>((fs::path(opt->dir) / name).string(), &outputs));
-            written.push_back(name);
-            return files.back().get();
-        };
-        AtomicFile* result1 = target(contest.asks(Question::q1), "result1.xlsx");
-        AtomicFile* result2 = target(contest.asks(Question::q2), "result2.xlsx");
-        AtomicFile* result4 = target(contest.asks(Question::q4), "result4.xlsx");
-        AtomicFile* summary_json = target(true, "summary.json");
-        // The paper's tables, one file each, for the questions asked.
-        std::vector<std::pair<std::string, AtomicFile*>> table_files;
-        if (table_format) {
-            const auto table_target = [&](bool needed, const std::string& id) {
-                if (!needed) return;
-                table_files.emplace_back(id, target(true, "table_" + id + table_extension(*table_format)));
-            };
-            table_target(contest.asks(Question::q1), "q1_positions");
-            table_target(contest.asks(Question::q1), "q1_speeds");
-            table_target(contest.asks(Question::q2), "q2_contact");
-            table_target(contest.asks(Question::q4), "q4_positions");
-            table_target(contest.asks(Question::q4), "q4_speeds");
-            table_target(contest.asks(Question::q2) || contest.asks(Question::q3) || contest.asks(Question::q4) ||
-                             contest.asks(Question::q5), "answers");
-        }
-        // The long workbooks (most of the time: every cell formatted, then deflated)
-        // are written as soon as their tables are ready, while the other questions are answered.
-        if (result1) contest.on_q1_table = [result1](const std::vector<Frame>& t) { write_result_xlsx(t, *result1, kWorkbooks); };
-        if (result4) contest.on_q4_table = [result4](const std::vector<Frame>& t) { write_result_xlsx(t, *result4, kWorkbooks); };
+        // Every target checked, and its temporary file made, before any work; the workbooks of
+        // Q1 and Q4 written while the other questions are answered; the set put in place together.
+        ContestFiles files(opt->dir, contest, table_format, lang, kWorkbooks, &outputs);
+        files.attach(contest);
         contest.executor = &ex;
         const ContestAnswers a = solve_contest(s, contest);
 
@@ -206,9 +174,6 @@ void register_solve(CLI::App& app, Registry& reg) {
                 fmt::print("\nQ2: no collision as far as the dragon can follow the spiral (t = {} s){}\n",
                            format_time(q2->window.to), q2->jam ? ": " + jam_sentence(*q2->jam) : "");
             }
-            // With no contact, the contest's layout with no rows, so no older answer is left
-            // looking like this one's.
-            write_result2_xlsx(q2->contact ? q2->contact->frame : Frame{}, *result2, kWorkbooks);
         }
 
         // Q3: the minimum pitch.
@@ -259,19 +224,9 @@ void register_solve(CLI::App& app, Registry& reg) {
                 fmt::print("\nQ5: largest head speed {:.6f} m/s (speed ratio {:.6f} at handle {}, t = {:.6f} s)\n",
                            v.max_head_speed, v.ratio, v.handle, v.time);
         }
-        write_text_file(*summary_json, json_text(contest_summary(a, contest), 2) + "\n");
-        if (table_format) {
-            const std::vector<PaperTable> tables = contest_tables(a, lang);
-            for (auto& [id, file] : table_files) {
-                const auto t = std::find_if(tables.begin(), tables.end(), [&](const PaperTable& p) { return p.id == id; });
-                write_text_file(*file, t != tables.end() ? format_table(*t, *table_format) : "");
-            }
-        }
-        std::vector<AtomicFile*> set;
-        for (const auto& f : files) set.push_back(f.get());
         require_stdout_written();  // the tables all printed, or no file changes
-        commit_together(set);
-        status(opt->quiet, "wrote {} in {}", fmt::join(written, ", "), opt->dir);
+        files.finish(a, json_text(contest_summary(a, contest), 2) + "\n");
+        status(opt->quiet, "wrote {} in {}", fmt::join(files.names(), ", "), opt->dir);
         return 0;
     };
 }
