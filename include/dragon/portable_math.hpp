@@ -7,9 +7,11 @@
 // tool, Python and the page print the same digits.
 //
 // Accuracy (tests/core/test_portable_math.cpp measures it against long double): within 1 ulp
-// for every function, over the arguments the library meets (angles up to a million radians;
-// beyond, the argument reduction loses accuracy but stays deterministic). Special values (NaN,
-// infinities, signed zeros) follow C.
+// for sin, cos, tan, atan, hypot, log1p and asinh, 1.5 ulp for atan2 and 2.5 ulp for asin (its
+// quotient x / sqrt(1 - x^2) rounded, kept so for speed: asin is the chain solver's most called
+// function), over the arguments the library meets (angles up to a million radians; beyond, the
+// argument reduction loses accuracy but stays deterministic). Special values (NaN, infinities,
+// signed zeros) follow C.
 #pragma once
 
 namespace dragon::math {

@@ -56,7 +56,7 @@ SceneOptions picture_scene_options(const LookRequest& look, const std::string& a
 SceneOptions clip_scene_options(const LookRequest& look, const std::string& asset_dir, RunOutputs* outputs) {
     if (look.centre)
         throw InputError(Key::centre, fmt::format("{} {}", error_value(look.centre->x()), error_value(look.centre->y())),
-                         "a clip's view is fixed on the origin, or follows the head (follow head)");
+                         "a clip's view is fixed on the origin, or follows the head");
     SceneOptions so = common_options(look, asset_dir, outputs);
     if (look.follow_head) so.camera = Camera::follow(look.zoom.value_or(kFollowedClipWidth));
     else if (look.zoom) so.camera = Camera::at({0.0, 0.0}, *look.zoom);

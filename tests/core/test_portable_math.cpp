@@ -59,7 +59,7 @@ TEST(PortableMath, TanWithinAnUlp) {
     EXPECT_LE(w.ulps, 1.0) << "tan at " << w.at;
 }
 
-TEST(PortableMath, ArcTangentsAndArcSineWithinAnUlp) {
+TEST(PortableMath, ArcTangentsAndArcSineWithinTheirBounds) {
     const Worst a = worst_over(dragon::math::atan, [](long double x) { return std::atan(x); }, -4.0, 4.0, false, 5);
     EXPECT_LE(a.ulps, 1.0) << "atan at " << a.at;
     const Worst big = worst_over(dragon::math::atan, [](long double x) { return std::atan(x); }, 1e-300, 1e300, true, 6);
