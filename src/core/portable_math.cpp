@@ -55,7 +55,7 @@ Pair divide(const Pair& n, const Pair& d) {
 
 // sqrt(h.hi + h.lo) as a Pair: the rounded root corrected by one Newton step on the exact rest.
 Pair sqrt_pair(const Pair& h) {
-    if (h.hi <= 0.0) return {0.0, 0.0};  // asin(+-1): nothing to correct (and no 0 / 0)
+    if (h.hi <= 0.0) return {0.0, 0.0};  // nothing to correct at 0 (and no 0 / 0)
     const double root = std::sqrt(h.hi);
     const Pair back = two_prod(root, root);
     return fast_two_sum(root, (((h.hi - back.hi) - back.lo) + h.lo) / (2.0 * root));
