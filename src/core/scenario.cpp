@@ -14,6 +14,7 @@
 
 #include "dragon/shown_text.hpp"
 #include "dragon/path.hpp"
+#include "scenario_number.hpp"
 
 namespace dragon {
 
@@ -232,7 +233,7 @@ public:
         if (!x && n.is_integer()) x = static_cast<double>(*n.value_exact<std::int64_t>());
         if (!x) refuse(key, shown, "a number", written);
         const ScenarioValues v = key_info(key).scenario;
-        *slot(s, v) = *x;
+        *scenario_number(s, v) = *x;
         out_.values |= v;
     }
 
@@ -253,18 +254,6 @@ private:
                          fmt::format("{}: {} = {} is not allowed: give {}", where_, written, shown, allowed));
     }
 
-    static double* slot(Scenario& s, ScenarioValues v) {
-        if (v == value::pitch) return &s.path.pitch;
-        if (v == value::head_speed) return &s.head_speed;
-        if (v == value::head_length) return &s.bench.head_length;
-        if (v == value::body_length) return &s.bench.body_length;
-        if (v == value::width) return &s.bench.width;
-        if (v == value::hole_offset) return &s.bench.hole_offset;
-        if (v == value::start_turn) return &s.path.start_turn;
-        if (v == value::turn_radius) return &s.path.turn_radius;
-        if (v == value::turn_pitch) return &s.path.turn_pitch;
-        return &s.path.arc_ratio;
-    }
 
     std::string where_;
     LoadedScenario out_;

@@ -11,6 +11,7 @@
 
 #include "dragon/shown_text.hpp"
 #include "dragon/sweep.hpp"
+#include "scenario_number.hpp"
 
 namespace dragon {
 
@@ -38,20 +39,6 @@ const SweepParameter* find_sweep_parameter(std::string_view name) {
 }
 
 namespace {
-
-double* slot(Scenario& s, ScenarioValues v) {
-    if (v == value::pitch) return &s.path.pitch;
-    if (v == value::head_speed) return &s.head_speed;
-    if (v == value::head_length) return &s.bench.head_length;
-    if (v == value::body_length) return &s.bench.body_length;
-    if (v == value::width) return &s.bench.width;
-    if (v == value::hole_offset) return &s.bench.hole_offset;
-    if (v == value::start_turn) return &s.path.start_turn;
-    if (v == value::turn_radius) return &s.path.turn_radius;
-    if (v == value::turn_pitch) return &s.path.turn_pitch;
-    if (v == value::arc_ratio) return &s.path.arc_ratio;
-    return nullptr;
-}
 
 std::string parameter_names() {
     std::string out;
@@ -100,13 +87,13 @@ void set_parameter(Scenario& s, const SweepParameter& p, double v) {
         if (!(v >= 1.0 && v <= kMaxBenchCount)) refuse_bench_count(error_value(v));
         s.bench.bench_count = static_cast<int>(v);
     }
-    else *slot(s, p.value) = v;
+    else *scenario_number(s, p.value) = v;
 }
 
 double get_parameter(const Scenario& s, const SweepParameter& p) {
     if (p.value == value::bench_count) return s.bench.bench_count;
     Scenario copy = s;
-    return *slot(copy, p.value);
+    return *scenario_number(copy, p.value);
 }
 
 Axis parse_axis(const std::string& spec) {

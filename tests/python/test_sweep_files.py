@@ -13,29 +13,13 @@ import pandas as pd
 import pytest
 
 import benchdragon as bd
+from serial_executor import Serial
 
 VARY = {"pitch": "0.45:0.6:4", "bench_count": [40, 120]}
 FLAGS = ["--vary", "pitch=0.45:0.6:4", "--vary", "bench-count=40,120", "--measure", "collide"]
 # Turnaround rows take a tenth of a second or more each: a run of them can be killed in the middle.
 SLOW_VARY = {"bench_count": "60:130:8"}
 SLOW_FLAGS = ["--vary", "bench-count=60:130:8", "--measure", "turnaround"]
-
-
-class Serial:
-    """An executor that runs each job at once, on this thread."""
-
-    class Done:
-        def __init__(self, value):
-            self.value = value
-
-        def result(self):
-            return self.value
-
-        def cancel(self):
-            return False
-
-    def submit(self, fn, *args):
-        return Serial.Done(fn(*args))
 
 
 def rows_in(path: Path) -> int:

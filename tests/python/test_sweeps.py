@@ -7,6 +7,7 @@ import pandas as pd
 import pytest
 
 import benchdragon as bd
+from serial_executor import Serial
 
 VARY = {"pitch": "0.45:0.6:4", "bench_count": [40, 120]}
 FLAGS = ["--vary", "pitch=0.45:0.6:4", "--vary", "bench-count=40,120"]
@@ -18,23 +19,6 @@ def tool_rows(text: str, by: list) -> pd.DataFrame:
     assert text.startswith("# dragon sweep ")
     rows = pd.read_csv(io.StringIO(text.split("\n", 1)[1]))
     return rows.sort_values(by, kind="stable").reset_index(drop=True)
-
-
-class Serial:
-    """An executor that runs each job at once, on this thread."""
-
-    class Done:
-        def __init__(self, value):
-            self.value = value
-
-        def result(self):
-            return self.value
-
-        def cancel(self):
-            return False
-
-    def submit(self, fn, *args):
-        return Serial.Done(fn(*args))
 
 
 @pytest.fixture(scope="module")
