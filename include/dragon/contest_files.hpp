@@ -19,6 +19,8 @@
 
 namespace dragon {
 
+// The targets of one contest run in one folder, checked at construction and put in place
+// together by finish(); see the file's head for what each holds.
 class ContestFiles {
 public:
     // Makes `dir` (and its parents) if missing, and the temporary file of each target for the
