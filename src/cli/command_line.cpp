@@ -1,10 +1,10 @@
 #include "command_line.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <numeric>
-#include <regex>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -139,55 +139,83 @@ std::string option_words(const CLI::Option& opt) {
     return name.rfind("-", 0) == 0 ? name : "the " + name;
 }
 
-// CLI11's own sentences ("Could not convert: --pitch = abc", "--pitch: At Most 1 required but
-// received 2", "--list excludes --only", "--out is required") in the tool's words, naming the
-// option and what to give; anything else as CLI11 says it. Matched on CLI11 2.1's wording: a
-// sentence that does not match is passed on unchanged.
-std::string parser_words(CLI::App& app, const std::string& first, const CLI::ParseError& e) {
-    const std::string what = e.what();
-    const CLI::App* sub = subcommand_named(app, first);
-    const auto option = [&](const std::string& name) -> const CLI::Option* {
-        return sub ? find_option(*sub, name) : nullptr;
-    };
-    std::smatch m;
-    if (dynamic_cast<const CLI::ConversionError*>(&e)) {
-        static const std::regex convert("Could not convert: (\\S+) = (.*)");
-        static const std::regex flag_value("(\\S+): (too many inputs for a flag|Should be true/false or a number)");
-        if (std::regex_match(what, m, convert)) {
-            const CLI::Option* opt = option(m[1]);
-            if (opt && is_flag(*opt)) return fmt::format("{} takes no value ('{}' given): give it alone", m[1].str(), m[2].str());
-            return fmt::format("{} {} is not allowed: {}", m[1].str(), m[2].str(),
-                               opt && sub ? what_to_give(*sub, *opt) : "give a value");
-        }
-        if (std::regex_match(what, m, flag_value)) return fmt::format("{} takes no value: give it alone", m[1].str());
+// The options of the command line's commands, in the order CLI11 runs their callbacks: the
+// tool's own, then the command's, then those of the command's own subcommand (sweep merge).
+std::vector<const CLI::Option*> options_in_order(const CLI::App& app) {
+    std::vector<const CLI::Option*> out;
+    for (const CLI::Option* opt : app.get_options()) out.push_back(opt);
+    for (const CLI::App* sub : app.get_subcommands())  // the ones parsed
+        for (const CLI::Option* opt : options_in_order(*sub)) out.push_back(opt);
+    return out;
+}
+
+// Whether CLI11 takes `token` as an option's name rather than as a value: "-100m" and "-0.5"
+// are values (no option of ours is one dash and a digit).
+bool names_an_option(const std::string& token) {
+    return token.size() > 1 && token[0] == '-' && !std::isdigit(static_cast<unsigned char>(token[1]));
+}
+
+// The option whose value is missing: one that takes a value, given last or followed by another
+// option's name. Read from the arguments, since CLI11 stops parsing there.
+const CLI::Option* missing_value(const CLI::App* sub, int argc, char** argv) {
+    if (!sub) return nullptr;
+    for (int i = 2; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (!names_an_option(arg) || arg.find('=') != std::string::npos) continue;
+        const CLI::Option* opt = find_option(*sub, arg);
+        if (!opt || is_flag(*opt) || opt->get_expected_min() == 0) continue;
+        if (i + 1 == argc || names_an_option(argv[i + 1])) return opt;
     }
+    return nullptr;
+}
+
+// The parser's refusal in the tool's words, found from the parser's state rather than its
+// sentences: the option that broke a rule (CLI11's options record what they were given and
+// whether their conversion ran), the value, what to give. Anything not placed is passed on as
+// CLI11 says it.
+std::string parser_words(CLI::App& app, const std::string& first, const CLI::ParseError& e, int argc, char** argv) {
+    const CLI::App* sub = subcommand_named(app, first);
+    const std::vector<const CLI::Option*> options = options_in_order(app);
+    const auto given = [](const CLI::Option* opt) { return opt->count() > 0; };
     if (dynamic_cast<const CLI::ArgumentMismatch*>(&e)) {
-        static const std::regex at_most("(\\S+): At Most (\\d+) required but received (\\d+)");
-        static const std::regex missing("(\\S+): (\\d+) required \\S+ missing");
-        if (std::regex_match(what, m, at_most))
-            return m[2] == "1" ? fmt::format("{} is given {} times: give it once", m[1].str(), m[3].str())
-                               : fmt::format("{} is given {} values: give at most {}", m[1].str(), m[3].str(), m[2].str());
-        if (std::regex_match(what, m, missing)) {
-            const CLI::Option* opt = option(m[1]);
-            return fmt::format("{} needs a value: {}", m[1].str(), opt && sub ? what_to_give(*sub, *opt) : "give one");
+        if (const CLI::Option* opt = missing_value(sub, argc, argv))
+            return fmt::format("{} needs a value: {}", opt->get_name(), what_to_give(*sub, *opt));
+        for (const CLI::Option* opt : options) {
+            const int most = opt->get_expected_max();
+            if (is_flag(*opt) || most == CLI::detail::expected_max_vector_size) continue;
+            if (opt->count() <= static_cast<std::size_t>(most)) continue;
+            return most == 1 ? fmt::format("{} is given {} times: give it once", opt->get_name(), opt->count())
+                             : fmt::format("{} is given {} values: give at most {}", opt->get_name(), opt->count(), most);
         }
+    }
+    if (dynamic_cast<const CLI::ConversionError*>(&e)) {
+        // Callbacks run in order and stop at the one that failed: the last one run.
+        const CLI::Option* failed = nullptr;
+        for (const CLI::Option* opt : options)
+            if (given(opt) && opt->get_callback_run()) failed = opt;
+        if (failed && is_flag(*failed)) return fmt::format("{} takes no value: give it alone", failed->get_name());
+        if (failed && sub)
+            return fmt::format("{} {} is not allowed: {}", failed->get_name(), fmt::join(failed->results(), " "),
+                               what_to_give(*sub, *failed));
     }
     if (dynamic_cast<const CLI::ExcludesError*>(&e)) {
-        static const std::regex excludes("(\\S+) excludes (\\S+)");
-        if (std::regex_match(what, m, excludes))
-            return fmt::format("{} and {} cannot be given together: give one of the two", m[1].str(), m[2].str());
+        for (const CLI::Option* opt : options) {
+            if (!given(opt)) continue;
+            for (const CLI::Option* other : opt->get_excludes())
+                if (given(other))
+                    return fmt::format("{} and {} cannot be given together: give one of the two", opt->get_name(),
+                                       other->get_name());
+        }
     }
     if (dynamic_cast<const CLI::RequiredError*>(&e)) {
-        static const std::regex required("(\\S+) is required");
-        if (std::regex_match(what, m, required)) {
-            const CLI::Option* opt = option(m[1]);
-            if (opt && sub) return fmt::format("{} is needed: {}", option_words(*opt), what_to_give(*sub, *opt));
-        }
-        if (what.rfind("A subcommand is required", 0) == 0)
+        if (!sub)
             return fmt::format("a command is needed first, then its options: {} (dragon --help describes them)",
                                fmt::join(command_names(app), ", "));
+        for (const CLI::Option* opt : options)
+            if (opt->get_required() && !given(opt))
+                return fmt::format("{} is needed: {}", option_words(*opt), what_to_give(*sub, *opt));
     }
-    return what;
+    return e.what();
 }
 
 }  // namespace
@@ -295,7 +323,7 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         // One line, naming the bad value; CLI11's own exit codes are not ours.
         const bool known = std::find(names.begin(), names.end(), first) != names.end();
-        refuse(fmt::format("{} (see dragon {}--help)", parser_words(app, known ? first : "", e), known ? first + " " : ""));
+        refuse(fmt::format("{} (see dragon {}--help)", parser_words(app, known ? first : "", e, argc, argv), known ? first + " " : ""));
         return 2;
     }
     const CLI::App& sub = *app.get_subcommands().front();
