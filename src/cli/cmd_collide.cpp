@@ -58,7 +58,7 @@ void write_no_contact(const std::string& path, RunOutputs& outputs) {
 void register_collide(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<CollideOptions>();
     CLI::App* sub = app.add_subcommand("collide", "Q2: the first moment two benches touch, to 1e-9 s");
-    opt->scenario.add_to(sub, ScenarioUse::either_path());
+    opt->scenario.add_to(sub, ScenarioUse::either_path(), reg);
     opt->window.add_to(sub, "Search from here (default: 0 on the spiral, -100m on the turnaround path)",
                        "Search up to here (default: on the spiral as far as the dragon can follow it, its centre "
                        "or the end of its valid motion; 100m on the turnaround path)");
@@ -71,7 +71,9 @@ void register_collide(CLI::App& app, Registry& reg) {
                     "the table's header and no rows");
     sub->add_option("--digits", opt->digits, "Decimals of every number of a .csv or .json -o (t without trailing zeros), 0 to 17 (default 6)");
     add_quiet_flag(sub, opt->quiet);
-    reg["collide"] = [opt](Executor& ex, RunOutputs& outputs) {
+    reg.runners["collide"] = [opt](ToolRun& run) {
+        Executor& ex = run.executor;
+        RunOutputs& outputs = run.outputs;
         const std::string ext = extension_of(opt->out);
         if (opt->digits && ext != ".csv" && ext != ".json")
             throw InputError(fmt::format("--digits {} is not allowed {}: it sets the decimals of a .csv or .json -o",
@@ -103,13 +105,13 @@ void register_collide(CLI::App& app, Registry& reg) {
                 fmt::print("{}", window_cuts(search.window, "the search"));
                 fmt::print("{}", proof_words(search.proof, nullptr));
             }
-            if (!opt->out.empty()) status(opt->quiet, "no contact: wrote {} with the table's header and no rows", opt->out);
+            if (!opt->out.empty()) run.wrote(opt->quiet, "no contact: wrote {} with the table's header and no rows", opt->out);
             return 0;
         }
         if (!opt->out.empty()) {
             if (extension_of(opt->out) == ".xlsx") write_result2_xlsx(c->frame, opt->out, kWorkbooks, &outputs);
             else write_table({c->frame}, opt->out, digits, {}, &outputs);
-            status(opt->quiet, "wrote {}", opt->out);
+            run.wrote(opt->quiet, "wrote {}", opt->out);
         }
         if (opt->json) {
             print_json(collide_answer(search, true));

@@ -3,7 +3,6 @@
 
 #include <fmt/format.h>
 
-#include "asset_dir.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
 #include "scenario_flags.hpp"
@@ -34,7 +33,7 @@ void register_figures(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<FiguresOptions>();
     CLI::App* sub = app.add_subcommand("figures", "The figure gallery: the paper's figures done right, and plots");
     opt->scenario.add_to(sub, ScenarioUse::both_paths("the gallery draws both paths: the coil-in figures on the "
-                                                      "plain spiral, the turnaround ones on the turnaround path"));
+                                                      "plain spiral, the turnaround ones on the turnaround path"), reg);
     auto* list = sub->add_flag("--list", opt->list, "List the figures and exit (takes no other option)");
     // --list makes nothing: every option that shapes the figures would do nothing with it.
     for (CLI::Option* o : sub->get_options())
@@ -63,14 +62,15 @@ void register_figures(CLI::App& app, Registry& reg) {
     for (CLI::Option* o : sub->get_options())
         if (o != list && o->get_name() != "--help" && !o->get_name().empty()) o->excludes(list);
     add_quiet_flag(sub, opt->quiet);
-    reg["figures"] = [opt](Executor&, RunOutputs& outputs) {
+    reg.runners["figures"] = [opt](ToolRun& run) {
+        RunOutputs& outputs = run.outputs;
         if (opt->list) {
             for (const auto& f : figure_list()) fmt::print("{:<22} {}\n", f.name, f.caption);
             return 0;
         }
         FigureOptions fo;
-        fo.theme = load_theme(opt->theme, asset_dir(), &outputs);
-        fo.asset_dir = asset_dir();
+        fo.theme = load_theme(opt->theme, run.assets, &outputs);
+        fo.asset_dir = run.assets;
         fo.outputs = &outputs;
         fo.scale = opt->scale;
         fo.only = opt->only;
@@ -87,7 +87,7 @@ void register_figures(CLI::App& app, Registry& reg) {
         std::int64_t done = 0;
         ProgressLine progress("figures", opt->quiet);
         write_figures(opt->out, opt->scenario.resolve(&outputs), fo, [&](const FigureInfo&, const std::string& path) {
-            status(opt->quiet, "wrote {}", path);  // said once the run's files are in place
+            run.wrote(opt->quiet, "wrote {}", path);  // said once the run's files are in place
             if (!path.ends_with(".csv")) progress.update(++done, total);  // a figure, not its data
         });
         return 0;

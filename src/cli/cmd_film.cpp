@@ -5,7 +5,6 @@
 
 #include <fmt/format.h>
 
-#include "asset_dir.hpp"
 #include "wording.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
@@ -51,7 +50,9 @@ void register_film(CLI::App& app, Registry& reg) {
     sub->add_option("--colours", opt->colours, "GIF palette size, 2-256 (default 64)");
     add_quiet_flag(sub, opt->quiet);
 
-    reg["film"] = [opt](Executor& ex, RunOutputs& outputs) {
+    reg.runners["film"] = [opt](ToolRun& run) {
+        Executor& ex = run.executor;
+        RunOutputs& outputs = run.outputs;
         const bool poster = extension_of(opt->out) == ".png";
         if (poster && !opt->at) throw InputError("--out " + opt->out + " is a picture: give --at SECONDS, the moment of the film it shows");
         if (!poster && opt->at) {
@@ -73,7 +74,7 @@ void register_film(CLI::App& app, Registry& reg) {
         encoder.colours = opt->colours;
         // Options of another format's encoder are refused before the storyboard is read.
         if (!poster) encoder_options(encoder, format);
-        Storyboard board = load_storyboard(opt->story, asset_dir(), &outputs);
+        Storyboard board = load_storyboard(opt->story, run.assets, &outputs);
         print_warnings(board.warnings);
         if (!opt->size.empty()) {
             const PictureSize size = parse_picture_size(opt->size, kMaxVideoSide);
@@ -106,7 +107,7 @@ void register_film(CLI::App& app, Registry& reg) {
         const Film film(board, &outputs);
         if (poster) {
             write_film_frame(film, *opt->at, opt->out, print ? print->dpi : 0.0, &outputs);
-            status(opt->quiet, "wrote {}: frame {} of {} ({:.3f} s into the film), {}x{}", opt->out,
+            run.wrote(opt->quiet, "wrote {}: frame {} of {} ({:.3f} s into the film), {}x{}", opt->out,
                    static_cast<int>(*opt->at * vo.fps), film.frame_count(), *opt->at, vo.width, vo.height);
             return 0;
         }
@@ -115,7 +116,7 @@ void register_film(CLI::App& app, Registry& reg) {
             ProgressLine progress("frames", opt->quiet);
             return write_film(film, opt->out, vo, [&progress](const Progress& p) { progress.update(p.done, p.total); });
         }();
-        status(opt->quiet, "wrote {}: {}, {}, {}x{}, {:.2f} s of film ({:.1f} frames/s)", opt->out,
+        run.wrote(opt->quiet, "wrote {}: {}, {}, {}x{}, {:.2f} s of film ({:.1f} frames/s)", opt->out,
                count_of(static_cast<long long>(film.spans().size()), "shot"), count_of(stats.frames, "frame"), vo.width,
                vo.height, film.duration(), stats.fps());
         return 0;

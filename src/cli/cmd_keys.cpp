@@ -38,7 +38,7 @@ void register_keys(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<KeysOptions>();
     CLI::App* sub = app.add_subcommand("keys", "Every value a user can set: its TOML and Python name, flag, unit and meaning");
     sub->add_flag("--json", opt->json, "Print one JSON array on stdout");
-    reg["keys"] = [opt](Executor&, RunOutputs& outputs) {
+    reg.runners["keys"] = [opt](ToolRun&) {
         Json rows = Json::array();
         if (!opt->json) fmt::print("{:<18} {:<18} {:<5} {}\n", "name", "flag", "unit", "meaning");
         for (const KeyInfo& k : all_keys()) {

@@ -32,13 +32,15 @@ void register_max_speed(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<MaxSpeedOptions>();
     CLI::App* sub = app.add_subcommand(
         "max-speed", "Q5: the largest head speed with every handle at or under the limit");
-    opt->scenario.add_to(sub, ScenarioUse::turnaround_only());
+    opt->scenario.add_to(sub, ScenarioUse::turnaround_only(), reg);
     sub->add_option("--limit", opt->limit, "Handle speed limit, m/s (default 2)");
     opt->window.add_to(sub, "Search the Q4 run from here (default -100m: 100 s before the turn at 1 m/s)",
                        "Search up to here (default 100m)");
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
     add_quiet_flag(sub, opt->quiet);
-    reg["max-speed"] = [opt](Executor& ex, RunOutputs& outputs) {
+    reg.runners["max-speed"] = [opt](ToolRun& run) {
+        Executor& ex = run.executor;
+        RunOutputs& outputs = run.outputs;
         Scenario s = opt->scenario.resolve(&outputs);
         s.path.kind = PathKind::turnaround;
         const MaxSpeed m = max_head_speed(s, opt->limit, opt->window.resolve(kTurnaroundWindow), &ex);

@@ -40,7 +40,7 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<MinPitchOptions>();
     CLI::App* sub = app.add_subcommand(
         "min-pitch", "Q3: the smallest pitch with which the head reaches the turning space collision-free");
-    opt->scenario.add_to(sub, ScenarioUse::pitch_search());
+    opt->scenario.add_to(sub, ScenarioUse::pitch_search(), reg);
     sub->add_option("--lo", opt->lo, "Smallest pitch searched, m (default 0.35, or just above the smallest "
                                      "pitch this dragon can use)");
     sub->add_option("--hi", opt->hi, "Largest pitch searched, m (default 0.55, or 1.5 times --lo's default)");
@@ -48,7 +48,9 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
                     "Pitch spacing of the first scan, m (default 0.0025); windows narrower than this may pass unseen");
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
     add_quiet_flag(sub, opt->quiet);
-    reg["min-pitch"] = [opt](Executor& ex, RunOutputs& outputs) {
+    reg.runners["min-pitch"] = [opt](ToolRun& run) {
+        Executor& ex = run.executor;
+        RunOutputs& outputs = run.outputs;
         const Scenario s = opt->scenario.resolve(&outputs);
         const PitchRange range = pitch_search_range(s, opt->lo, opt->hi);
         // Said before it starts, terminal or not: a search many times the contest's takes minutes.

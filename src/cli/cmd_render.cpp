@@ -42,7 +42,7 @@ Still contact_still(const Simulation& sim, const SceneOptions& so, std::optional
 void register_render(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<RenderOptions>();
     CLI::App* sub = app.add_subcommand("render", "Draw one moment of the dragon to PNG, SVG or PDF");
-    opt->scenario.add_to(sub, ScenarioUse::drawing());
+    opt->scenario.add_to(sub, ScenarioUse::drawing(), reg);
     auto* when = sub->add_option("--time", opt->time, "The moment to draw, s (or --collision, not both)");
     auto* hit = sub->add_flag("--collision", opt->collision,
                               "Draw the first contact (the termination of coiling in), touching benches marked (in "
@@ -52,7 +52,8 @@ void register_render(CLI::App& app, Registry& reg) {
     opt->look.add_to(sub);
     opt->print.add_to(sub);
     add_quiet_flag(sub, opt->quiet);
-    reg["render"] = [opt](Executor&, RunOutputs& outputs) {
+    reg.runners["render"] = [opt](ToolRun& run) {
+        RunOutputs& outputs = run.outputs;
         const std::string ext = extension_of(opt->out);
         if (ext != ".png" && ext != ".svg" && ext != ".pdf")
             throw InputError(fmt::format("--out {} has extension '{}': use .png, .svg or .pdf", opt->out, ext));
@@ -61,7 +62,7 @@ void register_render(CLI::App& app, Registry& reg) {
         AtomicFile probe(opt->out, &outputs);  // fail on an unwritable path before any work
         const Scenario s = opt->scenario.resolve(&outputs);
         const Simulation sim(s);
-        SceneOptions so = opt->look.scene_options(&outputs);
+        SceneOptions so = opt->look.scene_options(run.assets, &outputs);
         const std::optional<PrintSize> print = opt->print.resolve();
         auto [w, h] = opt->look.size();
         Page page;
@@ -78,10 +79,10 @@ void register_render(CLI::App& app, Registry& reg) {
         else if (ext == ".svg") render_svg(scene, w, h, opt->out, page, &outputs);
         else render_pdf(scene, w, h, opt->out, page, &outputs);
         if (print)
-            status(opt->quiet, "wrote {} ({:g} x {:g} in, text {:g} pt{}, t = {:.6f} s)", opt->out, print->width_in,
+            run.wrote(opt->quiet, "wrote {} ({:g} x {:g} in, text {:g} pt{}, t = {:.6f} s)", opt->out, print->width_in,
                    print->width_in * h / w, print->font_pt, ext == ".png" ? fmt::format(", {} x {} px at {:g} dpi", w, h, print->dpi) : "",
                    frame.time);
-        else status(opt->quiet, "wrote {} ({} x {} px, t = {:.6f} s)", opt->out, w, h, frame.time);
+        else run.wrote(opt->quiet, "wrote {} ({} x {} px, t = {:.6f} s)", opt->out, w, h, frame.time);
         return 0;
     };
 }

@@ -40,7 +40,7 @@ void register_simulate(CLI::App& app, Registry& reg) {
         "Positions and exact speeds of every handle over time (Q1, Q4 tables). Speeds are signed along the path: "
         "negative while a handle backs up. Times past the end of the dragon's valid motion (where a handle would "
         "have to jump) are refused");
-    opt->scenario.add_to(sub, ScenarioUse::either_path());
+    opt->scenario.add_to(sub, ScenarioUse::either_path(), reg);
     opt->window.add_to(sub, "First moment (default 0; -100m on the turnaround path)",
                        "Last moment (default 300m: 300 s at 1 m/s; 100m on the turnaround path; at most the end of "
                        "the valid motion). The table ends exactly at it when the steps from --from land on it (up "
@@ -56,7 +56,9 @@ void register_simulate(CLI::App& app, Registry& reg) {
                     "(booktabs, siunitx), markdown (pandoc) or csv; on stdout, or -o FILE.tex, .md or .csv");
     sub->add_option("--lang", opt->lang, "With --table, the language of its headers and captions: en (default) or zh");
     add_quiet_flag(sub, opt->quiet);
-    reg["simulate"] = [opt](Executor& ex, RunOutputs& outputs) {
+    reg.runners["simulate"] = [opt](ToolRun& run) {
+        Executor& ex = run.executor;
+        RunOutputs& outputs = run.outputs;
         const std::string ext = opt->out.empty() ? ".csv" : extension_of(opt->out);
         std::optional<TableFormat> table;
         if (!opt->table.empty()) {
@@ -122,7 +124,7 @@ void register_simulate(CLI::App& app, Registry& reg) {
             AtomicFile out(opt->out, &outputs);
             write_text_file(out, text);
             out.commit();
-            status(opt->quiet, "wrote {} ({})", opt->out, count_of(static_cast<long long>(frames.size()), "frame"));
+            run.wrote(opt->quiet, "wrote {} ({})", opt->out, count_of(static_cast<long long>(frames.size()), "frame"));
             return 0;
         }
         if (opt->out.empty()) {
@@ -130,7 +132,7 @@ void register_simulate(CLI::App& app, Registry& reg) {
             return 0;
         }
         write_table(frames, opt->out, digits, kWorkbooks, &outputs);
-        status(opt->quiet, "wrote {} ({} x {})", opt->out, count_of(static_cast<long long>(frames.size()), "frame"),
+        run.wrote(opt->quiet, "wrote {} ({} x {})", opt->out, count_of(static_cast<long long>(frames.size()), "frame"),
                count_of(frames.empty() ? 0 : static_cast<long long>(frames.front().handles.size()), "handle"));
         return 0;
     };

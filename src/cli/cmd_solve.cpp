@@ -88,7 +88,7 @@ void register_solve(CLI::App& app, Registry& reg) {
     CLI::App* sub = app.add_subcommand(
         "solve", "All five questions: result1/2/4.xlsx, summary.json and the paper-style tables");
     opt->scenario.add_to(sub, ScenarioUse::both_paths("it answers Q1-Q3 on the plain spiral and Q4-Q5 on the "
-                                                      "turnaround path"));
+                                                      "turnaround path"), reg);
     sub->add_option("-o,--out", opt->dir, "Output folder (created if missing; default out)");
     sub->add_option("--only", opt->only, "Answer only these questions: q1 q2 q3 q4 q5 (default all)")
         ->delimiter(',');
@@ -106,7 +106,9 @@ void register_solve(CLI::App& app, Registry& reg) {
     sub->add_option("--lang", opt->lang, "Language of the tables' headers and captions: en (default) or zh (the "
                                          "workbooks' words: 龙头x (m), 第1节龙身 (m/s))");
     add_quiet_flag(sub, opt->quiet);
-    reg["solve"] = [opt](Executor& ex, RunOutputs& outputs) {
+    reg.runners["solve"] = [opt](ToolRun& run) {
+        Executor& ex = run.executor;
+        RunOutputs& outputs = run.outputs;
         std::optional<TableFormat> table_format;
         if (!opt->tables.empty()) {
             if (opt->tables != "latex" && opt->tables != "markdown" && opt->tables != "csv")
@@ -226,7 +228,7 @@ void register_solve(CLI::App& app, Registry& reg) {
         }
         require_stdout_written();  // the tables all printed, or no file changes
         files.finish(a, json_text(contest_summary(a, contest), 2) + "\n");
-        status(opt->quiet, "wrote {} in {}", fmt::join(files.names(), ", "), opt->dir);
+        run.wrote(opt->quiet, "wrote {} in {}", fmt::join(files.names(), ", "), opt->dir);
         return 0;
     };
 }

@@ -45,9 +45,9 @@ struct SweepOptions {
 };
 
 void write_plot(const std::string& path, const MapCollector& maps, const std::optional<PrintSize>& print,
-                Language language, bool quiet, RunOutputs& outputs) {
-    write_sweep_map(maps.map(language), path, print, &outputs);
-    status(quiet, "wrote {}", path);
+                Language language, bool quiet, ToolRun& run) {
+    write_sweep_map(maps.map(language), path, print, &run.outputs);
+    run.wrote(quiet, "wrote {}", path);
 }
 
 // The print size for --plot, checked before any row is computed.
@@ -58,7 +58,8 @@ std::optional<PrintSize> plot_print(const PrintFlags& flags, const std::string& 
     return print;
 }
 
-int run_merge(const SweepOptions& opt, RunOutputs& outputs) {
+int run_merge(const SweepOptions& opt, ToolRun& run) {
+    RunOutputs& outputs = run.outputs;
     for (const std::string& extra : opt.merge->remaining())
         throw InputError(fmt::format("dragon sweep merge has no option {} (see dragon sweep merge --help)", extra));
     for (const std::string& f : opt.merge_files)
@@ -86,9 +87,9 @@ int run_merge(const SweepOptions& opt, RunOutputs& outputs) {
         if (e.key() != Key::out) throw;
         throw InputError(fmt::format("{} is not allowed: {}", e.value(), e.allowed()));
     }
-    status(opt.merge_quiet, "wrote {}: {} from {}", out, count_of(static_cast<long long>(rows), "row"),
+    run.wrote(opt.merge_quiet, "wrote {}: {} from {}", out, count_of(static_cast<long long>(rows), "row"),
            count_of(static_cast<long long>(parts.size()), "file"));
-    if (maps) write_plot(opt.merge_plot, *maps, print, language, opt.merge_quiet, outputs);
+    if (maps) write_plot(opt.merge_plot, *maps, print, language, opt.merge_quiet, run);
     return 0;
 }
 
@@ -111,15 +112,16 @@ int sweep_workers(const std::optional<int>& asked, std::size_t scenarios, bool q
     return workers;
 }
 
-int run(SweepOptions& opt, Executor& tool_pool, RunOutputs& outputs) {
-    if (opt.merge->parsed()) return run_merge(opt, outputs);
+int run_sweep(SweepOptions& opt, ToolRun& run) {
+    if (opt.merge->parsed()) return run_merge(opt, run);
+    RunOutputs& outputs = run.outputs;
     if (opt.workers && *opt.workers < 1)
         throw InputError(fmt::format("--workers {} is not allowed: at least 1", *opt.workers));
     const SweepSetup setup = make_setup(opt.request, opt.scenario, &outputs);
     const int workers = sweep_workers(opt.workers, setup.shard.size(setup.grid.size()), opt.quiet);
     std::optional<ThreadPool> own_pool;  // --workers: a pool of that size for this sweep
     if (workers > 0) own_pool.emplace(workers);
-    Executor& ex = own_pool ? static_cast<Executor&>(*own_pool) : tool_pool;
+    Executor& ex = own_pool ? static_cast<Executor&>(*own_pool) : run.executor;
     opt.output.outputs = &outputs;  // the rows and the plot are this run's outputs
     check_sweep_output(opt.output);
     const std::optional<PrintSize> print = plot_print(opt.print, opt.plot);
@@ -150,9 +152,9 @@ int run(SweepOptions& opt, Executor& tool_pool, RunOutputs& outputs) {
     heard.progress = [&](std::int64_t made, std::int64_t total) { progress.update(made, total); };
     const SweepTally t = write_sweep(setup, opt.output, ex, heard);
     if (!to_stdout)
-        status(opt.quiet, "wrote {}: {}{}", opt.output.out, count_of(static_cast<long long>(t.done_before + t.made), "row"),
+        run.wrote(opt.quiet, "wrote {}: {}{}", opt.output.out, count_of(static_cast<long long>(t.done_before + t.made), "row"),
                t.done_before ? fmt::format(" ({} new)", t.made) : "");
-    if (maps) write_plot(opt.plot, *maps, print, language, opt.quiet, outputs);
+    if (maps) write_plot(opt.plot, *maps, print, language, opt.quiet, run);
     // A run that fails leaves no finished file: the rows stay in the partial one, and --resume
     // makes the failed rows again.
     if (t.failed > 0)
@@ -181,7 +183,7 @@ void register_sweep(CLI::App& app, Registry& reg) {
                     "What to answer per scenario: collide, min-pitch, turnaround, max-speed (a comma list)")
         ->delimiter(',')
         ->allow_extra_args(false);
-    opt->scenario.add_to(sub, ScenarioUse::both_paths("no measure of this sweep reads it"));
+    opt->scenario.add_to(sub, ScenarioUse::both_paths("no measure of this sweep reads it"), reg);
     sub->add_option("--lo", opt->request.lo, "min-pitch: smallest pitch searched, m, width+X, or auto (default: each scenario's own, as min-pitch searches it)");
     sub->add_option("--hi", opt->request.hi, "min-pitch: largest pitch searched, m, width+X, or auto (default: each scenario's own)");
     sub->add_option("--grid", opt->request.grid, "min-pitch: pitch spacing of the first scan, m (default 0.0025)");
@@ -215,7 +217,7 @@ void register_sweep(CLI::App& app, Registry& reg) {
     opt->merge_print.add_to(opt->merge);
     add_language_flag(opt->merge, opt->merge_lang);
     add_quiet_flag(opt->merge, opt->merge_quiet);
-    reg["sweep"] = [opt](Executor& ex, RunOutputs& outputs) { return run(*opt, ex, outputs); };
+    reg.runners["sweep"] = [opt](ToolRun& run) { return run_sweep(*opt, run); };
 }
 
 }  // namespace dragon::cli

@@ -92,7 +92,7 @@ void register_turnaround(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<TurnaroundOptions>();
     CLI::App* sub = app.add_subcommand(
         "turnaround", "Q4: the S-curve turnaround, whether it can be shorter, and its clearance");
-    opt->scenario.add_to(sub, ScenarioUse::turnaround_only());
+    opt->scenario.add_to(sub, ScenarioUse::turnaround_only(), reg);
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
     sub->add_option("-o,--out", opt->out, "Write the length study as CSV to this file");
     auto* skip = sub->add_flag("--no-clearance", opt->skip_clearance,
@@ -103,7 +103,9 @@ void register_turnaround(CLI::App& app, Registry& reg) {
     opt->window.from_option()->excludes(skip);
     opt->window.to_option()->excludes(skip);
     add_quiet_flag(sub, opt->quiet);
-    reg["turnaround"] = [opt](Executor& ex, RunOutputs& outputs) {
+    reg.runners["turnaround"] = [opt](ToolRun& run) {
+        Executor& ex = run.executor;
+        RunOutputs& outputs = run.outputs;
         Scenario s = opt->scenario.resolve(&outputs);
         s.path.kind = PathKind::turnaround;
         if (!opt->out.empty() && extension_of(opt->out) != ".csv")
@@ -121,7 +123,7 @@ void register_turnaround(CLI::App& app, Registry& reg) {
         if (!opt->out.empty()) write_study_csv(st, opt->out, &outputs);
         if (opt->json) print_json(turnaround_answer(st.design, st.design_jam, clear, &st));
         else print_text(st, clear);
-        if (!opt->out.empty()) status(opt->quiet, "wrote {}", opt->out);
+        if (!opt->out.empty()) run.wrote(opt->quiet, "wrote {}", opt->out);
         return 0;
     };
 }

@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "asset_dir.hpp"
 #include "commands.hpp"
 #include "report.hpp"
 #include "progress.hpp"
@@ -56,7 +55,7 @@ struct VideoCliOptions {
 void register_video(CLI::App& app, Registry& reg) {
     auto opt = std::make_shared<VideoCliOptions>();
     CLI::App* sub = app.add_subcommand("video", "Animate to MP4 (H.264), WebM (VP9) or GIF");
-    opt->scenario.add_to(sub, ScenarioUse::drawing());
+    opt->scenario.add_to(sub, ScenarioUse::drawing(), reg);
     sub->add_option("-o,--out", opt->out, "Output file: .mp4, .webm or .gif")->required();
     sub->add_option("--from", opt->from, "First moment: simulated s, or head travel with m (default 0; -100m on the "
                                          "turnaround path)")->type_name("T|Xm");
@@ -92,7 +91,9 @@ void register_video(CLI::App& app, Registry& reg) {
     sub->add_flag("--no-inset", opt->no_inset, "Leave out the small whole-dragon picture of a followed or zoomed view");
     add_quiet_flag(sub, opt->quiet);
 
-    reg["video"] = [opt, sub](Executor& ex, RunOutputs& outputs) {
+    reg.runners["video"] = [opt, sub](ToolRun& run) {
+        Executor& ex = run.executor;
+        RunOutputs& outputs = run.outputs;
         // Everything that can be checked without simulating first, so bad options fail at once
         // and leave no file.
         const VideoFormat format = video_format_for(opt->out);
@@ -118,7 +119,7 @@ void register_video(CLI::App& app, Registry& reg) {
         look_asked.text = !opt->no_text;
         look_asked.zoom = opt->zoom;
         look_asked.follow_head = opt->follow_head;
-        const SceneOptions scene = clip_scene_options(look_asked, asset_dir(), &outputs);
+        const SceneOptions scene = clip_scene_options(look_asked, run.assets, &outputs);
         vo.outputs = &outputs;
         { AtomicFile probe(opt->out, &outputs); }  // an unwritable path fails here, before any work
         const Scenario s = opt->scenario.resolve(&outputs);
@@ -139,7 +140,7 @@ void register_video(CLI::App& app, Registry& reg) {
             ProgressLine progress("frames", opt->quiet);
             return write_video(anim, opt->out, vo, [&progress](const Progress& p) { progress.update(p.done, p.total); });
         }();
-        status(opt->quiet, "wrote {}: {}, {}x{}, {:.2f} s of video for t = {:.6f} .. {:.6f} s ({:.1f} frames/s)",
+        run.wrote(opt->quiet, "wrote {}: {}, {}x{}, {:.2f} s of video for t = {:.6f} .. {:.6f} s ({:.1f} frames/s)",
                opt->out, count_of(stats.frames, "frame"), vo.width, vo.height, stats.frames / vo.fps, clip.from, clip.to, stats.fps());
         if (plan.end_mark)
             fmt::print("benches {} and {} touch at t = {:.6f} s\n", plan.end_mark->bench_a, plan.end_mark->bench_b,

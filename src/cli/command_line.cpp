@@ -68,7 +68,8 @@ bool looks_like_number(const std::string& s) {
 }
 
 // Why an argument the subcommand left over is not one of its own.
-std::string leftover_message(const CLI::App& sub, const std::vector<std::string>& extras) {
+std::string leftover_message(const CLI::App& sub, const std::vector<std::string>& extras,
+                             const std::map<std::string, std::string>& scenario_flags_unused) {
     const std::string cmd = sub.get_name();
     for (const std::string& arg : extras) {
         if (arg.size() < 2 || arg[0] != '-' || looks_like_number(arg)) continue;
@@ -76,7 +77,10 @@ std::string leftover_message(const CLI::App& sub, const std::vector<std::string>
         for (const Renamed& r : kRenamed)
             if (flag == r.old_name)
                 return fmt::format("dragon {} has no option {}: it is now {} ({})", cmd, flag, r.new_name, r.what);
-        if (std::string why = ScenarioFlags::not_taken(sub, flag); !why.empty()) return why;
+        const auto reason = scenario_flags_unused.find(cmd);
+        if (std::string why = ScenarioFlags::not_taken(sub, flag, reason == scenario_flags_unused.end() ? "" : reason->second);
+            !why.empty())
+            return why;
         const std::string hint = closest(flag, option_names(sub));
         return fmt::format("dragon {} has no option {}{} (see dragon {} --help)", cmd, flag,
                            hint.empty() ? "" : fmt::format("; did you mean {}?", hint), cmd);
@@ -260,7 +264,8 @@ std::string closest(const std::string& word, const std::vector<std::string>& cho
     return prefix_of;
 }
 
-std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv,
+                                      const std::map<std::string, std::string>& scenario_flags_unused) {
     const std::vector<std::string> names = command_names(app);
     const std::string list = fmt::format("{}", fmt::join(names, ", "));
     const auto unknown = [&](const std::string& word) {
@@ -328,7 +333,7 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
     }
     const CLI::App& sub = *app.get_subcommands().front();
     if (!sub.remaining().empty()) {
-        refuse(leftover_message(sub, sub.remaining()));
+        refuse(leftover_message(sub, sub.remaining(), scenario_flags_unused));
         return 2;
     }
     if (const std::optional<std::string> empty = empty_value(sub)) {

@@ -5,6 +5,7 @@
 // exit code 2.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,7 +20,10 @@ void use_help_formatter(CLI::App& app);
 
 // Parses argv into `app` (its subcommands registered). Returns the exit code to end with
 // (0 after printing help, 2 after one line on stderr), or nullopt: run the chosen subcommand.
-std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv);
+// `scenario_flags_unused`: each command's reason for the scenario flags it does not take
+// (Registry::scenario_flags_unused), said when one is given.
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv,
+                                      const std::map<std::string, std::string>& scenario_flags_unused);
 
 // The choice `word` most likely misspells or abbreviates: within two edits (and fewer than half
 // its letters), or the only choice it starts (3 letters at least); "" if none.

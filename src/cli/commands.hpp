@@ -5,20 +5,47 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
 #include "dragon/atomic_file.hpp"
 #include "dragon/executor.hpp"
+#include "dragon/input_file.hpp"
 
 namespace dragon::cli {
 
-// Subcommand name -> what to run, on the run's executor (the tool's pool, one worker per core,
-// made once the command line is read and joined when the run ends) and with the run's outputs
-// (main's RunOutputs: every file the command reads or writes goes through it, put in place when
-// the whole run has succeeded). A runner returns the exit code (0 on success); bad input is
-// thrown as InputError and becomes exit 2.
-using Registry = std::map<std::string, std::function<int(Executor&, RunOutputs&)>>;
+// What one run of the tool works with, made by main for the run and passed to its command:
+// nothing of it is held anywhere else. The executor is the run's pool (one worker per core,
+// joined when the run ends); every file the command reads or writes goes through `outputs`,
+// put in place when the whole run has succeeded; `assets` is the folder of themes and presets
+// (find_tool_assets).
+struct ToolRun {
+    Executor& executor;
+    RunOutputs& outputs;
+    std::string assets;
+    // The "wrote FILE ..." lines, said by main once the outputs are in place (a run that fails
+    // never says it wrote), unless the command was asked to be quiet.
+    std::vector<std::string> wrote_lines;
+
+    template <typename... A>
+    void wrote(bool quiet, fmt::format_string<A...> f, A&&... args) {
+        if (!quiet) wrote_lines.push_back(shown_text(fmt::format(f, std::forward<A>(args)...), 8192));
+    }
+};
+
+// A command's run: the exit code (0 on success); bad input is thrown as InputError (exit 2).
+using Runner = std::function<int(ToolRun&)>;
+
+// Every command, as the registrations fill it in.
+struct Registry {
+    std::map<std::string, Runner> runners;  // the command's name -> its run
+    // The command's name -> why the scenario flags it does not take are of no use to it, for
+    // the command line's refusal of one ("" if it says nothing more).
+    std::map<std::string, std::string> scenario_flags_unused;
+};
 
 void register_simulate(CLI::App& app, Registry& reg);
 void register_solve(CLI::App& app, Registry& reg);

@@ -43,7 +43,6 @@ int stdout_failed(int err) {
 int main(int argc, char** argv) {
     using namespace dragon;
     cli::install_kill_cleanup();  // first: a kill at any moment leaves no temporary file
-    cli::find_tool_assets(argv[0]);
     CLI::App app{"dragon: exact simulation, collisions and pictures of the Bench Dragon (CUMCM 2024 A)"};
     app.name("dragon");
     app.require_subcommand(1);
@@ -63,7 +62,7 @@ int main(int argc, char** argv) {
     cli::register_sweep(app, reg);
     cli::register_keys(app, reg);
 
-    if (const std::optional<int> done = cli::parse_command_line(app, argc, argv))
+    if (const std::optional<int> done = cli::parse_command_line(app, argc, argv, reg.scenario_flags_unused))
         return stdout_intact() ? *done : stdout_failed(errno);
     int code = 0;
     try {
@@ -73,11 +72,12 @@ int main(int argc, char** argv) {
         RunOutputs outputs;
         const std::string name = app.get_subcommands().front()->get_name();
         ThreadPool pool;  // the run's workers, one per core, made for this run and joined with it
-        code = reg.at(name)(pool, outputs);
+        cli::ToolRun run{pool, outputs, cli::find_tool_assets(argv[0]), {}};
+        code = reg.runners.at(name)(run);
         if (!stdout_intact()) return stdout_failed(errno);
         if (code == 0) {
             outputs.commit();
-            cli::print_held_status_lines();  // "wrote ...", now that it is true
+            for (const std::string& line : run.wrote_lines) say(stderr, line);  // now that it is true
         }
     } catch (const InputError& e) {
         say(stderr, "dragon: error: " + cli::word(e));

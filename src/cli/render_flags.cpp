@@ -1,4 +1,3 @@
-#include "asset_dir.hpp"
 #include "render_flags.hpp"
 
 #include <fmt/format.h>
@@ -51,8 +50,8 @@ LookRequest RenderFlags::request() const {
     return look;
 }
 
-SceneOptions RenderFlags::scene_options(RunOutputs* outputs) const {
-    return picture_scene_options(request(), asset_dir(), outputs);
+SceneOptions RenderFlags::scene_options(const std::string& assets, RunOutputs* outputs) const {
+    return picture_scene_options(request(), assets, outputs);
 }
 
 }  // namespace dragon::cli

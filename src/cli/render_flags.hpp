@@ -25,9 +25,9 @@ public:
     std::pair<int, int> size() const;
     // The look asked (the library checks it: dragon/look.hpp).
     LookRequest request() const;
-    // Theme, camera and switches (throws InputError for a bad value); a theme file is one of
-    // the inputs of `outputs`' run.
-    SceneOptions scene_options(RunOutputs* outputs) const;
+    // Theme (a name looked up in `assets`, or a file), camera and switches (throws InputError
+    // for a bad value); a theme file is one of the inputs of `outputs`' run.
+    SceneOptions scene_options(const std::string& assets, RunOutputs* outputs) const;
     const std::string& theme_name() const { return theme_; }
     // --lang: the language of the words the picture carries by itself.
     Language language() const { return parse_language(lang_); }

@@ -37,12 +37,6 @@ constexpr FlagInfo kFlags[] = {
     {"--arc-ratio", value::arc_ratio, "First S-curve arc radius over the second's (default 2)"},
 };
 
-// Subcommand -> why the scenario flags it does not take are of no use to it.
-std::map<const CLI::App*, std::string>& reasons() {
-    static std::map<const CLI::App*, std::string> r;
-    return r;
-}
-
 const char* path_name(PathKind k) { return k == PathKind::spiral ? "plain spiral" : "turnaround path"; }
 
 }  // namespace
@@ -71,9 +65,9 @@ ScenarioUse ScenarioUse::both_paths(const char* why_not) {
     return {values_read(PathKind::spiral) | value::turn_radius, values_read(PathKind::turnaround), false, why_not};
 }
 
-void ScenarioFlags::add_to(CLI::App* sub, ScenarioUse use) {
+void ScenarioFlags::add_to(CLI::App* sub, ScenarioUse use, Registry& reg) {
     use_ = use;
-    reasons()[sub] = use.why_not;
+    reg.scenario_flags_unused[sub->get_name()] = use.why_not;
     sub->add_option("--scenario", file_, "Scenario TOML file (see assets/cumcm2024.toml); flags override it");
     if (use.path_choice) sub->add_option("--path", path_kind_, "Path: spiral (Q1-Q3, default) or turnaround (Q4-Q5)");
     for (const FlagInfo& f : kFlags) {
@@ -97,11 +91,9 @@ std::optional<double>* ScenarioFlags::slot(ScenarioValues v) {
     return nullptr;  // the bench count is a whole number, stored on its own
 }
 
-std::string ScenarioFlags::not_taken(const CLI::App& sub, const std::string& flag) {
+std::string ScenarioFlags::not_taken(const CLI::App& sub, const std::string& flag, const std::string& why) {
     if (flag == "--path" || flag == "--scenario" ||
         std::any_of(std::begin(kFlags), std::end(kFlags), [&](const FlagInfo& f) { return flag == f.name; })) {
-        const auto it = reasons().find(&sub);
-        const std::string why = it == reasons().end() ? "" : it->second;
         return fmt::format("dragon {} does not take {}{}{}", sub.get_name(), flag, why.empty() ? "" : ": ", why);
     }
     return "";

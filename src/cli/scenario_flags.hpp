@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "commands.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/scenario.hpp"
 
@@ -40,7 +41,8 @@ struct ScenarioUse {
 class ScenarioFlags {
 public:
     // Registers --scenario and the flags of the values `use` reads (and --path if it chooses).
-    void add_to(CLI::App* sub, ScenarioUse use);
+    // (`reg` keeps the command's reason for the scenario flags it does not take.)
+    void add_to(CLI::App* sub, ScenarioUse use, Registry& reg);
     // The scenario, validated for the values the command reads on its path (InputError names a
     // bad value, and the file when the value came from it). The file's old names are printed as
     // warnings on stderr, once. Refuses a flag the chosen path does
@@ -61,8 +63,8 @@ public:
               const std::string& source);
 
     // For an option a subcommand does not take: if it is a scenario flag, one sentence saying
-    // so and why (for the command line's error); else "".
-    static std::string not_taken(const CLI::App& sub, const std::string& flag);
+    // so and `why` (the command's reason, Registry::scenario_flags_unused); else "".
+    static std::string not_taken(const CLI::App& sub, const std::string& flag, const std::string& why);
 
 private:
     std::optional<double>* slot(ScenarioValues v);  // where a value's flag is stored

@@ -21,27 +21,12 @@ inline void add_quiet_flag(CLI::App* sub, bool& quiet) {
     sub->add_flag("-q,--quiet", quiet, "Nothing on stderr but errors and warnings: no progress line, no 'wrote' lines");
 }
 
-// The lines saying that a file was written, held until the run's files are in place: a command's
-// outputs are put in place only when the whole run has succeeded (main commits its RunOutputs,
-// then prints these), so a run that fails never says "wrote".
-inline std::vector<std::string>& held_status_lines() {
-    static std::vector<std::string> lines;
-    return lines;
-}
-inline void print_held_status_lines() {
-    for (const std::string& line : held_status_lines()) fmt::print(stderr, "{}\n", line);
-    held_status_lines().clear();
-}
-
 // One status line on stderr, unless quiet: one line whatever a name in it holds (-o $'a\nb.csv'
-// is shown as a\nb.csv). A line that reports a written file ("wrote ...") is held until the
-// file is in place (above).
+// is shown as a\nb.csv). A line saying a file was written is not one of these: it waits for
+// the file to be in place (ToolRun::wrote, commands.hpp).
 template <typename... A>
 void status(bool quiet, fmt::format_string<A...> f, A&&... args) {
-    if (quiet) return;
-    const std::string line = shown_text(fmt::format(f, std::forward<A>(args)...), 8192);
-    if (line.rfind("wrote ", 0) == 0) held_status_lines().push_back(line);
-    else fmt::print(stderr, "{}\n", line);
+    if (!quiet) fmt::print(stderr, "{}\n", shown_text(fmt::format(f, std::forward<A>(args)...), 8192));
 }
 
 // Each warning of a file that used an old name, one line each on stderr: "dragon: warning: ...".

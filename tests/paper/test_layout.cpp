@@ -44,7 +44,6 @@ struct Picture {
 // Runs `dragon ARGS` in this process (the tool's own parsing and commands) with the layout log
 // on; the pictures it drew. Outputs go to the test's scratch folder and are discarded.
 std::vector<Picture> drawn_by(const std::string& args) {
-    dragon::cli::find_tool_assets(nullptr);  // as the tool's main does: its copy beside this build's bin folders
     CLI::App app{"dragon"};
     app.name("dragon");
     app.require_subcommand(1);
@@ -58,12 +57,14 @@ std::vector<Picture> drawn_by(const std::string& args) {
     for (std::string w; in >> w;) words.push_back(w);
     std::vector<char*> argv;
     for (std::string& w : words) argv.push_back(w.data());
-    EXPECT_FALSE(dragon::cli::parse_command_line(app, static_cast<int>(argv.size()), argv.data())) << args;
+    EXPECT_FALSE(dragon::cli::parse_command_line(app, static_cast<int>(argv.size()), argv.data(), reg.scenario_flags_unused)) << args;
     dragon::render::LayoutRecording log;
     {
         dragon::RunOutputs outputs;  // nothing is put in place: the files are not the point
         dragon::InlineExecutor here;  // every picture drawn on this thread, where the log records
-        EXPECT_EQ(reg.at(app.get_subcommands().front()->get_name())(here, outputs), 0) << args;
+        // The assets as the tool's main finds them: its copy beside this build's bin folders.
+        dragon::cli::ToolRun run{here, outputs, dragon::cli::find_tool_assets(nullptr), {}};
+        EXPECT_EQ(reg.runners.at(app.get_subcommands().front()->get_name())(run), 0) << args;
     }
     std::vector<Picture> out;
     for (const LayoutItem& p : log.placed()) {
