@@ -27,13 +27,14 @@ enum class Key : std::uint8_t {
     grid, lo, hi, limit, digits, only, entry_radius,
     // Sweeps.
     vary, measure, shard, row,
-    // Pictures.
-    size, print, lang, width_in, width_cm, font_pt, dpi, zoom, centre, collision, format, plot,
+    // Pictures: size, print size, language, view, then the look's switches and the gallery's.
+    size, print, lang, width_in, width_cm, font_pt, dpi, zoom, centre, collision, format, plot, theme, speed_colours,
+    guides, text, annotation, legend, inset, follow_head, titles, scale, data, table,
     // Films and videos.
     video_size, fps, speedup, hold, at, crf_h264, crf_vp9, crf_gif, preset, tune, colours, threads, keyint,
     frame_count, film_frame_count,
-    // Files.
-    out, resume, tables, compression_level,
+    // Files and runs.
+    out, resume, tables, compression_level, scenario, workers, prove, clearance,
 };
 
 // One key's description: how each front end spells it, its unit and what it means.

@@ -27,11 +27,6 @@ bool first_of_its_name(const KeyInfo& k) {
     return true;
 }
 
-std::string replace_all(std::string s, const std::string& from, const std::string& to) {
-    for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size())) s.replace(at, from.size(), to);
-    return s;
-}
-
 }  // namespace
 
 void register_keys(CLI::App& app, Registry& reg) {
@@ -43,13 +38,12 @@ void register_keys(CLI::App& app, Registry& reg) {
         if (!opt->json) fmt::print("{:<18} {:<18} {:<5} {}\n", "name", "flag", "unit", "meaning");
         for (const KeyInfo& k : all_keys()) {
             if (k.key == Key::none || !first_of_its_name(k)) continue;
-            const std::string flag = hyphenated(k.key);
             if (opt->json)
-                rows.push_back({{"name", k.name}, {"flag", takes_flag(k.key) ? Json("--" + flag) : Json(nullptr)},
+                rows.push_back({{"name", k.name}, {"flag", takes_flag(k.key) ? Json(flag_spelling(k.key)) : Json(nullptr)},
                                 {"unit", k.unit}, {"words", k.words}, {"help", k.help}, {"scenario", k.scenario != 0}});
             else
                 fmt::print("{:<18} {:<18} {:<5} {}\n", k.name,
-                           takes_flag(k.key) ? "--" + replace_all(flag, "/", "/--") : std::string("-"),
+                           takes_flag(k.key) ? flag_spelling(k.key) : std::string("-"),
                            k.unit.empty() ? "-" : k.unit, k.help);
         }
         if (opt->json) print_json(rows);

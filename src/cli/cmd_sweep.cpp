@@ -101,7 +101,7 @@ constexpr int kWorkersPerCore = 4;
 // kWorkersPerCore a core, with a note when the cap takes some away; else 0 (the tool's pool).
 int sweep_workers(const std::optional<int>& asked, std::size_t scenarios, bool quiet) {
     if (!asked) return 0;
-    if (*asked < 1) throw InputError(fmt::format("--workers {} is not allowed: at least 1", *asked));
+    if (*asked < 1) throw InputError(Key::workers, std::to_string(*asked), "at least 1");
     const int cores = dragon::cores();
     const int most = static_cast<int>(std::min<std::size_t>(std::max<std::size_t>(scenarios, 1),
                                                             static_cast<std::size_t>(kWorkersPerCore * cores)));
@@ -115,8 +115,7 @@ int sweep_workers(const std::optional<int>& asked, std::size_t scenarios, bool q
 int run_sweep(SweepOptions& opt, ToolRun& run) {
     if (opt.merge->parsed()) return run_merge(opt, run);
     RunOutputs& outputs = run.outputs;
-    if (opt.workers && *opt.workers < 1)
-        throw InputError(fmt::format("--workers {} is not allowed: at least 1", *opt.workers));
+    if (opt.workers && *opt.workers < 1) throw InputError(Key::workers, std::to_string(*opt.workers), "at least 1");
     const SweepSetup setup = make_setup(opt.request, opt.scenario, &outputs);
     const int workers = sweep_workers(opt.workers, setup.shard.size(setup.grid.size()), opt.quiet);
     std::optional<ThreadPool> own_pool;  // --workers: a pool of that size for this sweep

@@ -32,6 +32,7 @@ bool has_flag(Key key) {
         case Key::speedup: case Key::hold: case Key::at: case Key::crf_h264: case Key::crf_vp9: case Key::crf_gif:
         case Key::preset: case Key::tune: case Key::colours: case Key::threads: case Key::film_frame_count:
         case Key::tables: case Key::zoom: case Key::centre: case Key::out: case Key::resume:
+        case Key::workers: case Key::scale:
             return true;
         default: return false;
     }
@@ -55,8 +56,23 @@ bool takes_flag(Key key) {
     switch (key) {
         case Key::path: case Key::collision: case Key::only:
         case Key::width_cm: case Key::video_size:
+        case Key::theme: case Key::speed_colours: case Key::guides: case Key::text: case Key::annotation:
+        case Key::legend: case Key::inset: case Key::follow_head: case Key::titles: case Key::data: case Key::table:
+        case Key::scenario: case Key::prove: case Key::clearance: case Key::format:
             return true;
         default: return false;
+    }
+}
+
+std::string flag_spelling(Key key) {
+    switch (key) {
+        // Switches on unless switched off: their flags say "no".
+        case Key::guides: case Key::text: case Key::clearance:
+            return "--no-" + hyphenated(key);
+        // Switches whose default differs by command (a video's legend is on, a picture's off).
+        case Key::legend: case Key::inset: case Key::titles:
+            return "--[no-]" + hyphenated(key);
+        default: return flag_of(key);
     }
 }
 

@@ -16,5 +16,8 @@ std::string word(const InputError& e);
 // Whether some command of the tool sets `key` with a flag of its name (--pitch, --from); the
 // others (a table's frame count, a study's entry radius) are the library's and Python's only.
 bool takes_flag(Key key);
+// The flag of a key that takes one, as the commands spell it: "--pitch", "--from/--to", a
+// switch on by default "--no-guides", one whose default depends on the command "--[no-]legend".
+std::string flag_spelling(Key key);
 
 }  // namespace dragon::cli

@@ -57,6 +57,18 @@ constexpr std::array kKeys = {
     KeyInfo{Key::collision, "collision", "collision", "", "the moment of the first contact"},
     KeyInfo{Key::format, "format", "format", "", "a picture's format: png, svg or pdf"},
     KeyInfo{Key::plot, "plot", "map file", "", "a sweep's map, .png, .svg or .pdf"},
+    KeyInfo{Key::theme, "theme", "theme", "", "the colours and font: light, dark or a .toml file"},
+    KeyInfo{Key::speed_colours, "speed_colours", "speed colours", "", "each bench coloured by its speed, with a colour bar"},
+    KeyInfo{Key::guides, "guides", "guides", "", "the path and the turning-space circle drawn (on unless switched off)"},
+    KeyInfo{Key::text, "text", "text", "", "any text drawn at all (on unless switched off)"},
+    KeyInfo{Key::annotation, "annotation", "annotation", "", "the text at the top left (default: time and pitch)"},
+    KeyInfo{Key::legend, "legend", "legend", "", "a key to the colours"},
+    KeyInfo{Key::inset, "inset", "inset", "", "with a zoom, the whole dragon small in a corner"},
+    KeyInfo{Key::follow_head, "follow_head", "follow head", "", "the view centred on the head"},
+    KeyInfo{Key::titles, "titles", "titles", "", "the gallery's titles and notes on its figures"},
+    KeyInfo{Key::scale, "scale", "figure scale", "", "the gallery's pixel size against its ~1000 px"},
+    KeyInfo{Key::data, "data", "figure data", "", "each figure's numbers written beside it as NAME.csv"},
+    KeyInfo{Key::table, "table", "handle table", "", "the paper-style handle table: latex, markdown or csv"},
     KeyInfo{Key::video_size, "size", "video size", "px", "a film's size, WIDTHxHEIGHT"},
     KeyInfo{Key::fps, "fps", "frame rate", "1/s", "frames per second"},
     KeyInfo{Key::speedup, "speedup", "speedup", "", "seconds of motion per second of film"},
@@ -76,6 +88,10 @@ constexpr std::array kKeys = {
     KeyInfo{Key::resume, "resume", "resume", "", "go on with a sweep's unfinished rows file instead of starting afresh"},
     KeyInfo{Key::tables, "tables", "table format", "", "the paper's tables: latex, markdown or csv"},
     KeyInfo{Key::compression_level, "compression_level", "compression level", "", "a workbook's zlib level, 0 to 9"},
+    KeyInfo{Key::scenario, "scenario", "scenario file", "", "a scenario .toml file (values given beside it win)"},
+    KeyInfo{Key::workers, "workers", "workers", "", "how many computations run at once (default: one per core)"},
+    KeyInfo{Key::prove, "prove", "prove", "", "every step of the contact search proved by enclosures"},
+    KeyInfo{Key::clearance, "clearance", "clearance", "", "the turnaround check's first contact and clearance (on unless switched off)"},
 };
 
 // The table is in the enum's order: key_info indexes it.
@@ -85,7 +101,7 @@ constexpr bool in_order() {
     return true;
 }
 static_assert(in_order(), "kKeys must list the keys in the order of enum Key");
-static_assert(static_cast<std::size_t>(Key::compression_level) + 1 == kKeys.size(), "a key without its description");
+static_assert(static_cast<std::size_t>(Key::clearance) + 1 == kKeys.size(), "a key without its description");
 
 bool same_name(std::string_view a, std::string_view b) {
     if (a.size() != b.size()) return false;

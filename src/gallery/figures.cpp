@@ -51,10 +51,11 @@ void write_figures(const std::string& dir, const Scenario& base, const FigureOpt
         }
     }
     if (opt.format != "png" && opt.format != "svg" && opt.format != "pdf")
-        throw InputError(fmt::format("figure format \"{}\" is unknown: use png, svg or pdf", opt.format));
+        throw InputError(Key::format, opt.format, "use png, svg or pdf");
     if (!(opt.scale >= kMinFigureScale && opt.scale <= 8))
-        throw InputError(fmt::format("figure scale {} is not allowed: use {}..8 (smaller, the plots' text would fall "
-                                     "under the {:g} px floor)", opt.scale, kMinFigureScale, kMinTextPx));
+        throw InputError(Key::scale, error_value(opt.scale),
+                         fmt::format("use {}..8 (smaller, the plots' text would fall under the {:g} px floor)",
+                                     kMinFigureScale, kMinTextPx));
     if (!make_output_folder(dir, opt.outputs)) throw InputError(fmt::format("cannot create the figure folder {}", dir));
     fig::Context ctx{base, opt, nullptr, ""};
     ctx.base.path.kind = PathKind::spiral;

@@ -170,16 +170,18 @@ Theme load_theme(const std::string& name_or_path, const std::string& asset_dir, 
     std::error_code ec;
     if (given.extension() == ".toml" || name_or_path.find('/') != std::string::npos) {
         if (fs::is_directory(given, ec))
-            throw InputError(fmt::format("theme file '{}' is a folder: give a .toml file", shown_text(name_or_path, 4096)));
+            throw InputError(Key::theme, shown_text(name_or_path, 4096), "a folder: give a .toml file",
+                             fmt::format("theme file '{}' is a folder: give a .toml file", shown_text(name_or_path, 4096)));
         return parse_theme(given, true, outputs);
     }
     const fs::path file = fs::path(find_asset_dir(asset_dir)) / "themes" / (name_or_path + ".toml");
     if (!fs::is_regular_file(file, ec)) {
         // A file of that name here is not read as a theme by its bare name: say how to name it.
         const bool here = fs::exists(fs::symlink_status(given, ec));
-        throw InputError(fmt::format("theme \"{}\" is unknown: use light, dark or a .toml file path{}",
-                                     shown_text(name_or_path), here ? fmt::format(" (the file here is ./{})",
-                                                                                 shown_text(name_or_path)) : ""));
+        const std::string allowed = fmt::format("use light, dark or a .toml file path{}",
+                                                here ? fmt::format(" (the file here is ./{})", shown_text(name_or_path)) : "");
+        throw InputError(Key::theme, shown_text(name_or_path), allowed,
+                         fmt::format("theme \"{}\" is unknown: {}", shown_text(name_or_path), allowed));
     }
     return parse_theme(file, false, outputs);
 }

@@ -155,7 +155,9 @@ TEST(ScenarioToml, AnUnknownKeyIsRefusedListingTheKeyTablesNames) {
         for (const KeyInfo& k : all_keys()) {
             if (k.key == Key::none) continue;
             const bool listed = k.scenario != 0 || k.key == Key::path;
-            if (listed) EXPECT_TRUE(has(e.what(), std::string(k.name))) << k.name << ": " << e.what();
+            if (listed) {
+                EXPECT_TRUE(has(e.what(), std::string(k.name))) << k.name << ": " << e.what();
+            }
         }
         EXPECT_FALSE(has(e.what(), "font_pt")) << e.what();
     }
