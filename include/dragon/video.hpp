@@ -160,9 +160,6 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-// FFmpeg logs its codecs' chatter to stderr; after this call, errors only (a process-wide
-// setting: for tools such as the CLI, not for a library's users to be surprised by).
-void quiet_codec_logs();
 
 // Progress of a long encode: frames done of total, seconds since the start.
 struct Progress {

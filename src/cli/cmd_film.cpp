@@ -111,7 +111,6 @@ void register_film(CLI::App& app, Registry& reg) {
                    static_cast<int>(*opt->at * vo.fps), film.frame_count(), *opt->at, vo.width, vo.height);
             return 0;
         }
-        quiet_codec_logs();
         const EncodeStats stats = [&] {
             ProgressLine progress("frames", opt->quiet);
             return write_film(film, opt->out, vo, [&progress](const Progress& p) { progress.update(p.done, p.total); });

@@ -135,7 +135,6 @@ void register_video(CLI::App& app, Registry& reg) {
         const Animation anim(sim, clip, vo.fps, scene, plan.end_mark, look);
         if (opt->zoom) require_zoom_resolves(anim, vo.width, vo.height, *opt->zoom);
 
-        quiet_codec_logs();
         const EncodeStats stats = [&] {
             ProgressLine progress("frames", opt->quiet);
             return write_video(anim, opt->out, vo, [&progress](const Progress& p) { progress.update(p.done, p.total); });

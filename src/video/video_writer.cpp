@@ -15,6 +15,7 @@
 #include "av_error.hpp"
 #include "palette.hpp"
 #include "yuv_convert.hpp"
+#include "mp4_index_first.hpp"
 
 namespace dragon {
 
@@ -180,12 +181,8 @@ struct VideoWriter::Impl {
         av::check(av_frame_get_buffer(frame.get(), 0), "cannot allocate a video frame");
 
         av::check_file(avio_open(&mux->pb, file.temp_path().c_str(), AVIO_FLAG_WRITE), file.target(), "write");
-        AVDictionary* mux_opts = nullptr;
-        // The index at the front: browsers start playing before the download ends.
-        if (format == VideoFormat::mp4) av_dict_set(&mux_opts, "movflags", "+faststart", 0);
-        const int ret = avformat_write_header(mux.get(), &mux_opts);
-        av_dict_free(&mux_opts);
-        av::check_file(ret, file.target(), "write the header of");
+        // An MP4's index is moved to the front when it is finished (move_index_first).
+        av::check_file(avformat_write_header(mux.get(), nullptr), file.target(), "write the header of");
     }
 
     void write(const std::uint8_t* argb, int stride) {
@@ -238,6 +235,8 @@ struct VideoWriter::Impl {
         drain();
         av::check_file(av_write_trailer(mux.get()), file.target(), "finish");
         av::check_file(avio_closep(&mux->pb), file.target(), "close");
+        // The index at the front: browsers start playing before the download ends.
+        if (format == VideoFormat::mp4) video::move_index_first(file.temp_path(), file.target());
         file.commit();
         finished = true;
     }
@@ -275,6 +274,5 @@ void VideoWriter::repeat() { impl_->repeat(); }
 
 void VideoWriter::finish() { impl_->finish(); }
 
-void quiet_codec_logs() { av_log_set_level(AV_LOG_ERROR); }
 
 }  // namespace dragon

@@ -99,7 +99,6 @@ BENCHMARK(BM_FilmDrawAndConvert)->Args({1280, 720})->Args({1920, 1080})->Unit(be
 
 // Conversion + H.264 encoding of already drawn frames, 300 per run.
 void encode(benchmark::State& state, const char* preset) {
-    quiet_codec_logs();
     const int w = static_cast<int>(state.range(0)), h = static_cast<int>(state.range(1));
     const auto frames = drawn_frames(w, h);
     VideoOptions opt;
@@ -124,7 +123,6 @@ BENCHMARK(BM_VideoEncodeVeryfast)->Args({1280, 720})->Args({1920, 1080})->Unit(b
 
 // The target: 300 frames at 30 fps, default options, drawing included.
 void BM_VideoEndToEnd(benchmark::State& state) {
-    quiet_codec_logs();
     const Simulation sim{Scenario{}};
     const Animation anim(sim, Clip{0.0, 299.0, 30.0}, 30, SceneOptions{});
     VideoOptions opt;

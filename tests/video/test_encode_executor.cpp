@@ -25,8 +25,6 @@ using namespace dragon;
 
 namespace {
 
-[[maybe_unused]] const bool codec_logs_quiet = (quiet_codec_logs(), true);
-
 std::string scratch(const std::string& name) {
     const fs::path p = dragon_test::scratch_dir() / name;
     fs::remove(p);

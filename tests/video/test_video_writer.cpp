@@ -22,9 +22,6 @@ using namespace dragon;
 
 namespace {
 
-// The codecs' banner lines would bury gtest's output.
-[[maybe_unused]] const bool codec_logs_quiet = (quiet_codec_logs(), true);
-
 std::string scratch(const std::string& name) {
     const fs::path dir = dragon_test::scratch_dir();
     const fs::path p = dir / name;
