@@ -2,6 +2,9 @@
 // (a grid spacing, a speed rounded to 6 decimals), whole numbers without ".0", every value of up
 // to 15 significant digits kept exactly; and the commands' answers printed that way.
 #include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <random>
 #include <string>
 
@@ -50,3 +53,31 @@ TEST(JsonNumbers, DecimalsOfFifteenDigitsComeBackExactly) {
     }
 }
 
+
+// meant() reads its 15 digits back without strtod where one multiplication or division by a
+// power of ten is exact enough (json_text.cpp): the same double as strtod's, for any value.
+TEST(JsonNumbers, TheValueMeantIsStrtodsReading) {
+    const auto by_strtod = [](double v) {
+        const double r = std::strtod(fmt::format("{:.15g}", v).c_str(), nullptr);
+        return r == 0.0 ? 0.0 : r;
+    };
+    const auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+    std::mt19937_64 rng(29);
+    std::uniform_real_distribution<double> decade(-30.0, 30.0), unit(-1.0, 1.0);
+    for (int k = 0; k < 200000; ++k) {
+        // Any bit pattern (every exponent, subnormals included), and values of the answers' sizes.
+        std::uint64_t bits = rng();
+        double v = 0.0;
+        std::memcpy(&v, &bits, sizeof v);
+        if (!std::isfinite(v)) continue;
+        ASSERT_TRUE(same(dragon::meant(v), by_strtod(v))) << fmt::format("{:a}", v);
+        const double w = unit(rng) * std::pow(10.0, decade(rng));
+        ASSERT_TRUE(same(dragon::meant(w), by_strtod(w))) << fmt::format("{:a}", w);
+    }
+    // Halfway cases and the edges of the fast path: 15 digits at 10^-22 and 10^22, whole numbers.
+    for (const double v : {0.5, 1.5, 2.5e-22, 9.99999999999999e22, 1e23, 1.23456789012345e-22, 123456789012345.0,
+                           1e15, 999999999999999.0, 0.1 + 0.2, 412.849997470631, 5e-324, 1.7976931348623157e308}) {
+        EXPECT_TRUE(same(dragon::meant(v), by_strtod(v))) << fmt::format("{:a}", v);
+        EXPECT_TRUE(same(dragon::meant(-v), by_strtod(-v))) << fmt::format("{:a}", -v);
+    }
+}
