@@ -258,9 +258,10 @@ public:
         };
         try {
             if (command == "collide") {
-                const dragon::Simulation sim(s);
+                // On this engine's simulation: the valid motion set_scenario found is the one the
+                // search is cut to (a new Simulation would search it again, a seventh of Q2).
                 return answer_val(dragon::collide_answer(
-                    dragon::collide(sim, dragon::default_window(s.path.kind), nullptr), true));
+                    dragon::collide(*sim_, dragon::default_window(s.path.kind), nullptr), true));
             }
             if (command == "min-pitch") {
                 s.path.kind = dragon::PathKind::spiral;
