@@ -100,7 +100,7 @@ function applyScenario(keys, field) {
   if (state.fitted) fit();
   updateReadouts();
   requestDraw();
-  writeHash();
+  scheduleHash();  // the URL follows within a quarter second, as it does while playing
   return true;
 }
 
@@ -127,13 +127,25 @@ function chainLength() {
   return link(k['head-length']) + (k['bench-count'] - 1) * link(k['body-length']);
 }
 
-/** The path's points for the backdrop, cut into its coloured pieces. */
+/** The values the path is made of (the library's PathSpec): the benches, the speed and the
+ * other keys move the dragon along it, not the path itself. */
+const PATH_KEYS = ['pitch', 'start-turn', 'turn-radius', 'turn-pitch', 'arc-ratio'];
+let pathKey = '';
+/** How many times the path's points were made: the backdrop is drawn again when they change. */
+let pathVersion = 0;
+
+/** The path's points for the backdrop, cut into its coloured pieces; kept while the path and the
+ * stretch of it shown are the same (a change of a bench's width or the speed leaves both). */
 function buildPath() {
   const th = theme();
   const chain = chainLength();
   const s0 = engine.headArcAt(state.tmin) - chain - 4;
   let s1 = state.path === 'spiral' ? 0 : engine.headArcAt(state.tmax) + 4;
   const step = Math.max(0.02, (s1 - s0) / 12000);  // enough for a smooth line at any zoom that shows the chain
+  const key = [state.path, ...PATH_KEYS.map((f) => state.keys[f]), s0, s1, step, state.theme].join('|');
+  if (key === pathKey) return;
+  pathKey = key;
+  pathVersion += 1;
   const points = engine.pathPoints(s0, s1, step).slice();
   const n = points.length / 2;
   /** @type {{ from: number, to: number, colour: string }[]} */
@@ -149,7 +161,6 @@ function buildPath() {
     ];
   }
   state.path_ = { points, pieces };
-  backdropKey = '';
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -272,9 +283,13 @@ function clearAlerts() {
 
 /** @type {string} */
 let workerSource = '';
-/** @type {{ worker: Worker, ready: Promise<void> } | null} */
+/**
+ * A worker, the promise of its engine, and whether that has come (`live`: a message can go at once).
+ * @typedef {{ worker: Worker, ready: Promise<void>, live: boolean }} AnswerWorker
+ */
+/** @type {AnswerWorker | null} */
 let current = null;
-/** @type {{ worker: Worker, ready: Promise<void> } | null} */
+/** @type {AnswerWorker | null} */
 let spare = null;
 let busy = false;
 let runId = 0;
@@ -294,7 +309,18 @@ function spawnWorker() {
   });
   worker.addEventListener('message', onWorkerMessage);
   worker.addEventListener('error', (e) => console.error('worker:', e.message));
-  return { worker, ready };
+  /** @type {AnswerWorker} */
+  const w = { worker, ready, live: false };
+  ready.then(() => { w.live = true; }, () => {});
+  return w;
+}
+
+/** Sends `msg` to a worker: at once when its engine is ready (not after the task that asks, as a
+ * promise's callback would: a change's search starts while this thread draws), else when it is.
+ * @param {AnswerWorker} w @param {object} msg */
+function postTo(w, msg) {
+  if (w.live) w.worker.postMessage(msg);
+  else w.ready.then(() => w.worker.postMessage(msg), (e) => showEngineError(e));
 }
 
 let restartTimer = 0;
@@ -327,8 +353,7 @@ function postRun() {
   state.answers = {};
   for (const c of COMMANDS) showPending(c);
   const msg = { type: 'run', id: runId, keys: engineKeys(state.keys), commands: COMMANDS, window: [state.tmin, state.tmax] };
-  const w = current;
-  w.ready.then(() => w.worker.postMessage(msg), (e) => showEngineError(e));
+  postTo(current, msg);
 }
 
 /** @param {MessageEvent} e */
@@ -663,7 +688,7 @@ const linspace = (/** @type {number} */ a, /** @type {number} */ b, /** @type {n
 const MAP = { widths: linspace(0.2, 0.4, 21), lengths: linspace(1.6, 2.8, 25), lo: 0.09, hi: 0.25, grid: 0.005 };
 const MAP_WORKERS = Math.max(1, Math.min(4, navigator.hardwareConcurrency || 2));  // the map's cells split between them
 const map = {
-  /** @type {{ worker: Worker, ready: Promise<void> }[]} */ workers: [],
+  /** @type {AnswerWorker[]} */ workers: [],
   running: 0,
   id: 0,
   key: '',
@@ -692,7 +717,7 @@ function startMap() {
   map.running = map.workers.length;
   map.workers.forEach((w, k) => {
     const msg = { type: 'map', id: map.id, keys: { ...engineKeys(state.keys), path: 'spiral' }, cells: shares[k], lo: MAP.lo, hi: MAP.hi, grid: MAP.grid };
-    w.ready.then(() => w.worker.postMessage(msg), (e) => showEngineError(e));
+    postTo(w, msg);
   });
   $('map-start').textContent = say('map_restart');
   drawMap();
@@ -853,7 +878,9 @@ function draw() {
   };
   state.scene = d;
   const th = theme();
-  const key = `${state.version}|${state.theme}|${w}x${h}@${dpr}|${state.cam.cx},${state.cam.cy},${state.cam.k}`;
+  // The backdrop is the turning space and the path (their values are the path's): drawn again
+  // only when the path, the theme, the size or the view changed.
+  const key = `${pathVersion}|${state.theme}|${w}x${h}@${dpr}|${state.cam.cx},${state.cam.cy},${state.cam.k}`;
   if (key !== backdropKey) {
     backdrop.width = canvas.width;
     backdrop.height = canvas.height;
