@@ -747,7 +747,7 @@ function mapFollow() {
 
 function drawMap() {
   const c = /** @type {HTMLCanvasElement} */ (document.getElementById('map-chart'));
-  if (!c || !c.clientWidth) return;
+  if (!c || !boxSize(c).w) return;
   const { g, w, h, th } = chartContext('map-chart');
   const nw = MAP.widths.length, nl = MAP.lengths.length, total = nw * nl;
   $('map-status').textContent = !map.cells.length ? '' : map.done < total ? say('map_status', map.done, total)
@@ -840,6 +840,31 @@ function updatePlay() {
 
 const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('scene'));
 const ctx = /** @type {CanvasRenderingContext2D} */ (canvas.getContext('2d'));
+
+/** Each canvas's size in CSS pixels as the last layout left it, told by a ResizeObserver. Reading
+ * clientWidth while the page has changed since (a new value in a field, "computing…" in the
+ * answers) lays the page out there and then: a forced layout in every change and every frame.
+ * @type {Map<Element, { w: number, h: number }>} */
+const boxSizes = new Map();
+const sizeWatch = new ResizeObserver((entries) => {
+  for (const e of entries) {
+    const el = /** @type {HTMLElement} */ (e.target);
+    boxSizes.set(el, { w: el.clientWidth, h: el.clientHeight });  // laid out now: no extra layout
+  }
+  if (state.fitted && entries.some((e) => e.target === canvas)) fit();  // the view fits the new size
+  else requestDraw();
+  drawMap();
+});
+/** A canvas's CSS size (its first time read directly, and watched from then on). @param {HTMLElement} el */
+function boxSize(el) {
+  let s = boxSizes.get(el);
+  if (!s) {
+    s = { w: el.clientWidth, h: el.clientHeight };
+    boxSizes.set(el, s);
+    sizeWatch.observe(el);
+  }
+  return s;
+}
 const backdrop = document.createElement('canvas');
 let backdropKey = '';
 let drawPending = false;
@@ -852,7 +877,7 @@ function requestDraw() {
 
 function canvasSize() {
   const dpr = window.devicePixelRatio || 1;
-  const w = canvas.clientWidth, h = canvas.clientHeight;
+  const { w, h } = boxSize(canvas);
   if (canvas.width !== Math.round(w * dpr) || canvas.height !== Math.round(h * dpr)) {
     canvas.width = Math.round(w * dpr);
     canvas.height = Math.round(h * dpr);
@@ -910,7 +935,7 @@ function fit() {
     y0 = Math.min(y0, f[3 * i + 1]); y1 = Math.max(y1, f[3 * i + 1]);
   }
   const pad = 1.5;
-  const w = canvas.clientWidth || 600, h = canvas.clientHeight || 600;
+  const w = boxSize(canvas).w || 600, h = boxSize(canvas).h || 600;
   state.cam = { cx: (x0 + x1) / 2, cy: (y0 + y1) / 2, k: Math.min(w / (x1 - x0 + 2 * pad), h / (y1 - y0 + 2 * pad)) };
   state.fitted = true;
   requestDraw();
@@ -918,7 +943,7 @@ function fit() {
 
 /** @param {number} factor @param {number} sx @param {number} sy screen point kept in place */
 function zoom(factor, sx, sy) {
-  const { w, h } = { w: canvas.clientWidth, h: canvas.clientHeight };
+  const { w, h } = boxSize(canvas);
   const [wx, wy] = toWorld(state.cam, w, h, sx, sy);
   const k = clamp(state.cam.k * factor, 0.5, 5e4);
   state.cam = { k, cx: wx - (sx - w / 2) / k, cy: wy + (sy - h / 2) / k };
@@ -1052,7 +1077,7 @@ function fmtTime(t) {
 function chartContext(id) {
   const c = /** @type {HTMLCanvasElement} */ (document.getElementById(id));
   const dpr = window.devicePixelRatio || 1;
-  const w = c.clientWidth, h = c.clientHeight;
+  const { w, h } = boxSize(c);
   if (c.width !== Math.round(w * dpr)) { c.width = Math.round(w * dpr); c.height = Math.round(h * dpr); }
   const g = /** @type {CanvasRenderingContext2D} */ (c.getContext('2d'));
   g.setTransform(dpr, 0, 0, dpr, 0, 0);
@@ -1099,8 +1124,9 @@ let gapLayerKey = '';
 function drawGapChart() {
   const a = state.answers.gaps;
   const c = /** @type {HTMLCanvasElement} */ (document.getElementById('gap-chart'));
-  if (!c.clientWidth || !c.clientHeight) return;  // not laid out (yet)
-  const key = `${state.version}|${a ? a.t0 : ''}|${state.theme}|${state.lang}|${c.clientWidth}x${c.clientHeight}|${state.contact?.time}`;
+  const box = boxSize(c);
+  if (!box.w || !box.h) return;  // not laid out (yet)
+  const key = `${state.version}|${a ? a.t0 : ''}|${state.theme}|${state.lang}|${box.w}x${box.h}|${state.contact?.time}`;
   if (key !== gapLayerKey || !a) {
     drawGapLayer();
     gapLayer.width = c.width;
@@ -1114,10 +1140,10 @@ function drawGapChart() {
   if (!a || a.error || !a.gaps.length) return;
   const dpr = window.devicePixelRatio || 1;
   g.setTransform(dpr, 0, 0, dpr, 0, 0);
-  const x = 46 + ((state.t - a.t0) / (a.t1 - a.t0 || 1)) * (c.clientWidth - 54);
+  const x = 46 + ((state.t - a.t0) / (a.t1 - a.t0 || 1)) * (box.w - 54);
   g.strokeStyle = theme().text;
   g.lineWidth = 1;
-  g.beginPath(); g.moveTo(x, 18); g.lineTo(x, c.clientHeight - 16); g.stroke();
+  g.beginPath(); g.moveTo(x, 18); g.lineTo(x, box.h - 16); g.stroke();
 }
 
 /** The gap chart without the moment. */
