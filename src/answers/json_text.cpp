@@ -108,11 +108,38 @@ void put_json(std::string& out, const Json& v, int indent, int depth) {
     else out += v.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
+// put_json on one line, hearing each leaf's text as it is written.
+void put_json_leaves(std::string& out, const Json& v, const std::string& path,
+                     const std::function<void(const std::string&, std::string_view)>& leaf) {
+    if (v.is_object() && !v.empty()) {  // as put_json writes an object on one line
+        out += '{';
+        bool first = true;
+        for (auto it = v.begin(); it != v.end(); ++it) {
+            if (!first) out += ',';
+            first = false;
+            out += Json(it.key()).dump(-1, ' ', false, Json::error_handler_t::replace) + ':';
+            put_json_leaves(out, *it, path.empty() ? it.key() : path + "." + it.key(), leaf);
+        }
+        out += '}';
+        return;
+    }
+    const std::size_t start = out.size();
+    put_json(out, v, -1, 0);
+    leaf(path, std::string_view(out).substr(start));
+}
+
 }  // namespace
 
 std::string json_text(const Json& v, int indent) {
     std::string out;
     put_json(out, v, indent, 0);
+    return out;
+}
+
+std::string json_text_with_leaves(const Json& v,
+                                  const std::function<void(const std::string& path, std::string_view text)>& leaf) {
+    std::string out;
+    put_json_leaves(out, v, "", leaf);
     return out;
 }
 

@@ -7,6 +7,9 @@
 #include <cstring>
 #include <random>
 #include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -80,4 +83,35 @@ TEST(JsonNumbers, TheValueMeantIsStrtodsReading) {
         EXPECT_TRUE(same(dragon::meant(v), by_strtod(v))) << fmt::format("{:a}", v);
         EXPECT_TRUE(same(dragon::meant(-v), by_strtod(-v))) << fmt::format("{:a}", -v);
     }
+}
+
+// The whole text with its leaves: the same text as json_text, and each leaf's text what
+// json_text prints for that value alone, under its key path, in the order written.
+TEST(JsonNumbers, LeavesAreTheWholeTextsOwnCharacters) {
+    const Json v = {{"time", 412.473837682117},
+                    {"benches", Json::array({1, 9})},
+                    {"enclosure", {{"travel", Json::array({412.47383768210701, 412.473837682117})}, {"none", Json::object()}}},
+                    {"proof", {{"method", "rate"}, {"least_separation", nullptr}, {"steps", 0}}},
+                    {"handles", Json::array({{{"x", 1.209931}, {"y", -0.0}}, {{"x", (0.55 - 0.35) / 80}}})},
+                    {"key \"q\"", true}};
+    std::vector<std::pair<std::string, std::string>> leaves;
+    const std::string text =
+        dragon::json_text_with_leaves(v, [&](const std::string& path, std::string_view t) { leaves.emplace_back(path, t); });
+    EXPECT_EQ(text, json_text(v));
+    const std::vector<std::pair<std::string, std::string>> expected = {
+        {"time", json_text(v["time"])},
+        {"benches", "[1,9]"},
+        {"enclosure.travel", json_text(v["enclosure"]["travel"])},
+        {"enclosure.none", "{}"},
+        {"proof.method", "\"rate\""},
+        {"proof.least_separation", "null"},
+        {"proof.steps", "0"},
+        {"handles", json_text(v["handles"])},
+        {"key \"q\"", "true"}};
+    EXPECT_EQ(leaves, expected);
+    // A scalar alone is its own leaf, at the path "".
+    leaves.clear();
+    const auto hear = [&](const std::string& p, std::string_view t) { leaves.emplace_back(p, t); };
+    EXPECT_EQ(dragon::json_text_with_leaves(Json(0.1 + 0.2), hear), "0.3");
+    EXPECT_EQ(leaves, (std::vector<std::pair<std::string, std::string>>{{"", "0.3"}}));
 }
