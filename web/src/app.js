@@ -853,7 +853,8 @@ const sizeWatch = new ResizeObserver((entries) => {
   }
   if (state.fitted && entries.some((e) => e.target === canvas)) fit();  // the view fits the new size
   else requestDraw();
-  drawMap();
+  // The map's words are written beside it: in the next frame, not while sizes are being told.
+  if (entries.some((e) => e.target.id === 'map-chart')) requestAnimationFrame(drawMap);
 });
 /** A canvas's CSS size (its first time read directly, and watched from then on). @param {HTMLElement} el */
 function boxSize(el) {
