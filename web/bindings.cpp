@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <emscripten/bind.h>
@@ -45,21 +46,15 @@ val refusal(const std::string& message, dragon::ScenarioValues values) {
     return out;
 }
 
-// Every leaf of an answer under its key path ("first_contact.time"; arrays are leaves), as the
-// JSON text json_text writes for it: the text it has inside the whole answer.
-void add_leaves(const dragon::Json& j, const std::string& path, val& out) {
-    if (j.is_object() && !j.empty()) {
-        for (const auto& [key, value] : j.items()) add_leaves(value, path.empty() ? key : path + "." + key, out);
-        return;
-    }
-    out.set(path, dragon::json_text(j));
-}
-
+// An answer for the page: its JSON text as json_text writes it, and the text of each leaf inside
+// it by its key path ("first_contact.time"; arrays are leaves), taken from that same text as it
+// is written (each number printed once).
 val answer_val(const dragon::Json& j) {
-    val out = val::object();
-    out.set("json", dragon::json_text(j));
     val leaves = val::object();
-    add_leaves(j, "", leaves);
+    const std::string text = dragon::json_text_with_leaves(
+        j, [&leaves](const std::string& path, std::string_view leaf) { leaves.set(path, std::string(leaf)); });
+    val out = val::object();
+    out.set("json", text);
     out.set("leaves", leaves);
     return out;
 }
@@ -258,9 +253,10 @@ public:
         };
         try {
             if (command == "collide") {
-                const dragon::Simulation sim(s);
+                // On this engine's simulation: the valid motion set_scenario found is the one the
+                // search is cut to (a new Simulation would search it again, a seventh of Q2).
                 return answer_val(dragon::collide_answer(
-                    dragon::collide(sim, dragon::default_window(s.path.kind), nullptr), true));
+                    dragon::collide(*sim_, dragon::default_window(s.path.kind), nullptr), true));
             }
             if (command == "min-pitch") {
                 s.path.kind = dragon::PathKind::spiral;

@@ -3,7 +3,9 @@
 // meant. One formatter for the CLI's --json, sweep rows, summary.json and Python's to_dict().
 #pragma once
 
+#include <functional>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -19,5 +21,10 @@ double meant(double v);
 // without ".0" ("times":[0,300]), NaN and infinities as null; on one line, or indented by
 // `indent` spaces a level.
 std::string json_text(const Json& v, int indent = -1);
+// json_text(v) on one line, telling `leaf` the text of each leaf inside it under its key path
+// ("first_contact.time"; an array, a scalar or an empty object is a leaf; a scalar root's path is
+// ""), in the order written: the characters the whole text holds for it, each printed once.
+std::string json_text_with_leaves(const Json& v,
+                                  const std::function<void(const std::string& path, std::string_view text)>& leaf);
 
 }  // namespace dragon

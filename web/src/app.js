@@ -100,7 +100,7 @@ function applyScenario(keys, field) {
   if (state.fitted) fit();
   updateReadouts();
   requestDraw();
-  writeHash();
+  scheduleHash();  // the URL follows within a quarter second, as it does while playing
   return true;
 }
 
@@ -127,13 +127,25 @@ function chainLength() {
   return link(k['head-length']) + (k['bench-count'] - 1) * link(k['body-length']);
 }
 
-/** The path's points for the backdrop, cut into its coloured pieces. */
+/** The values the path is made of (the library's PathSpec): the benches, the speed and the
+ * other keys move the dragon along it, not the path itself. */
+const PATH_KEYS = ['pitch', 'start-turn', 'turn-radius', 'turn-pitch', 'arc-ratio'];
+let pathKey = '';
+/** How many times the path's points were made: the backdrop is drawn again when they change. */
+let pathVersion = 0;
+
+/** The path's points for the backdrop, cut into its coloured pieces; kept while the path and the
+ * stretch of it shown are the same (a change of a bench's width or the speed leaves both). */
 function buildPath() {
   const th = theme();
   const chain = chainLength();
   const s0 = engine.headArcAt(state.tmin) - chain - 4;
   let s1 = state.path === 'spiral' ? 0 : engine.headArcAt(state.tmax) + 4;
   const step = Math.max(0.02, (s1 - s0) / 12000);  // enough for a smooth line at any zoom that shows the chain
+  const key = [state.path, ...PATH_KEYS.map((f) => state.keys[f]), s0, s1, step, state.theme].join('|');
+  if (key === pathKey) return;
+  pathKey = key;
+  pathVersion += 1;
   const points = engine.pathPoints(s0, s1, step).slice();
   const n = points.length / 2;
   /** @type {{ from: number, to: number, colour: string }[]} */
@@ -149,7 +161,6 @@ function buildPath() {
     ];
   }
   state.path_ = { points, pieces };
-  backdropKey = '';
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -272,9 +283,13 @@ function clearAlerts() {
 
 /** @type {string} */
 let workerSource = '';
-/** @type {{ worker: Worker, ready: Promise<void> } | null} */
+/**
+ * A worker, the promise of its engine, and whether that has come (`live`: a message can go at once).
+ * @typedef {{ worker: Worker, ready: Promise<void>, live: boolean }} AnswerWorker
+ */
+/** @type {AnswerWorker | null} */
 let current = null;
-/** @type {{ worker: Worker, ready: Promise<void> } | null} */
+/** @type {AnswerWorker | null} */
 let spare = null;
 let busy = false;
 let runId = 0;
@@ -294,7 +309,18 @@ function spawnWorker() {
   });
   worker.addEventListener('message', onWorkerMessage);
   worker.addEventListener('error', (e) => console.error('worker:', e.message));
-  return { worker, ready };
+  /** @type {AnswerWorker} */
+  const w = { worker, ready, live: false };
+  ready.then(() => { w.live = true; }, () => {});
+  return w;
+}
+
+/** Sends `msg` to a worker: at once when its engine is ready (not after the task that asks, as a
+ * promise's callback would: a change's search starts while this thread draws), else when it is.
+ * @param {AnswerWorker} w @param {object} msg */
+function postTo(w, msg) {
+  if (w.live) w.worker.postMessage(msg);
+  else w.ready.then(() => w.worker.postMessage(msg), (e) => showEngineError(e));
 }
 
 let restartTimer = 0;
@@ -327,8 +353,7 @@ function postRun() {
   state.answers = {};
   for (const c of COMMANDS) showPending(c);
   const msg = { type: 'run', id: runId, keys: engineKeys(state.keys), commands: COMMANDS, window: [state.tmin, state.tmax] };
-  const w = current;
-  w.ready.then(() => w.worker.postMessage(msg), (e) => showEngineError(e));
+  postTo(current, msg);
 }
 
 /** @param {MessageEvent} e */
@@ -663,7 +688,7 @@ const linspace = (/** @type {number} */ a, /** @type {number} */ b, /** @type {n
 const MAP = { widths: linspace(0.2, 0.4, 21), lengths: linspace(1.6, 2.8, 25), lo: 0.09, hi: 0.25, grid: 0.005 };
 const MAP_WORKERS = Math.max(1, Math.min(4, navigator.hardwareConcurrency || 2));  // the map's cells split between them
 const map = {
-  /** @type {{ worker: Worker, ready: Promise<void> }[]} */ workers: [],
+  /** @type {AnswerWorker[]} */ workers: [],
   running: 0,
   id: 0,
   key: '',
@@ -692,7 +717,7 @@ function startMap() {
   map.running = map.workers.length;
   map.workers.forEach((w, k) => {
     const msg = { type: 'map', id: map.id, keys: { ...engineKeys(state.keys), path: 'spiral' }, cells: shares[k], lo: MAP.lo, hi: MAP.hi, grid: MAP.grid };
-    w.ready.then(() => w.worker.postMessage(msg), (e) => showEngineError(e));
+    postTo(w, msg);
   });
   $('map-start').textContent = say('map_restart');
   drawMap();
@@ -722,7 +747,7 @@ function mapFollow() {
 
 function drawMap() {
   const c = /** @type {HTMLCanvasElement} */ (document.getElementById('map-chart'));
-  if (!c || !c.clientWidth) return;
+  if (!c || !boxSize(c).w) return;
   const { g, w, h, th } = chartContext('map-chart');
   const nw = MAP.widths.length, nl = MAP.lengths.length, total = nw * nl;
   $('map-status').textContent = !map.cells.length ? '' : map.done < total ? say('map_status', map.done, total)
@@ -815,6 +840,32 @@ function updatePlay() {
 
 const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('scene'));
 const ctx = /** @type {CanvasRenderingContext2D} */ (canvas.getContext('2d'));
+
+/** Each canvas's size in CSS pixels as the last layout left it, told by a ResizeObserver. Reading
+ * clientWidth while the page has changed since (a new value in a field, "computing…" in the
+ * answers) lays the page out there and then: a forced layout in every change and every frame.
+ * @type {Map<Element, { w: number, h: number }>} */
+const boxSizes = new Map();
+const sizeWatch = new ResizeObserver((entries) => {
+  for (const e of entries) {
+    const el = /** @type {HTMLElement} */ (e.target);
+    boxSizes.set(el, { w: el.clientWidth, h: el.clientHeight });  // laid out now: no extra layout
+  }
+  if (state.fitted && entries.some((e) => e.target === canvas)) fit();  // the view fits the new size
+  else requestDraw();
+  // The map's words are written beside it: in the next frame, not while sizes are being told.
+  if (entries.some((e) => e.target.id === 'map-chart')) requestAnimationFrame(drawMap);
+});
+/** A canvas's CSS size (its first time read directly, and watched from then on). @param {HTMLElement} el */
+function boxSize(el) {
+  let s = boxSizes.get(el);
+  if (!s) {
+    s = { w: el.clientWidth, h: el.clientHeight };
+    boxSizes.set(el, s);
+    sizeWatch.observe(el);
+  }
+  return s;
+}
 const backdrop = document.createElement('canvas');
 let backdropKey = '';
 let drawPending = false;
@@ -827,7 +878,7 @@ function requestDraw() {
 
 function canvasSize() {
   const dpr = window.devicePixelRatio || 1;
-  const w = canvas.clientWidth, h = canvas.clientHeight;
+  const { w, h } = boxSize(canvas);
   if (canvas.width !== Math.round(w * dpr) || canvas.height !== Math.round(h * dpr)) {
     canvas.width = Math.round(w * dpr);
     canvas.height = Math.round(h * dpr);
@@ -853,7 +904,9 @@ function draw() {
   };
   state.scene = d;
   const th = theme();
-  const key = `${state.version}|${state.theme}|${w}x${h}@${dpr}|${state.cam.cx},${state.cam.cy},${state.cam.k}`;
+  // The backdrop is the turning space and the path (their values are the path's): drawn again
+  // only when the path, the theme, the size or the view changed.
+  const key = `${pathVersion}|${state.theme}|${w}x${h}@${dpr}|${state.cam.cx},${state.cam.cy},${state.cam.k}`;
   if (key !== backdropKey) {
     backdrop.width = canvas.width;
     backdrop.height = canvas.height;
@@ -883,7 +936,7 @@ function fit() {
     y0 = Math.min(y0, f[3 * i + 1]); y1 = Math.max(y1, f[3 * i + 1]);
   }
   const pad = 1.5;
-  const w = canvas.clientWidth || 600, h = canvas.clientHeight || 600;
+  const w = boxSize(canvas).w || 600, h = boxSize(canvas).h || 600;
   state.cam = { cx: (x0 + x1) / 2, cy: (y0 + y1) / 2, k: Math.min(w / (x1 - x0 + 2 * pad), h / (y1 - y0 + 2 * pad)) };
   state.fitted = true;
   requestDraw();
@@ -891,7 +944,7 @@ function fit() {
 
 /** @param {number} factor @param {number} sx @param {number} sy screen point kept in place */
 function zoom(factor, sx, sy) {
-  const { w, h } = { w: canvas.clientWidth, h: canvas.clientHeight };
+  const { w, h } = boxSize(canvas);
   const [wx, wy] = toWorld(state.cam, w, h, sx, sy);
   const k = clamp(state.cam.k * factor, 0.5, 5e4);
   state.cam = { k, cx: wx - (sx - w / 2) / k, cy: wy + (sy - h / 2) / k };
@@ -1025,7 +1078,7 @@ function fmtTime(t) {
 function chartContext(id) {
   const c = /** @type {HTMLCanvasElement} */ (document.getElementById(id));
   const dpr = window.devicePixelRatio || 1;
-  const w = c.clientWidth, h = c.clientHeight;
+  const { w, h } = boxSize(c);
   if (c.width !== Math.round(w * dpr)) { c.width = Math.round(w * dpr); c.height = Math.round(h * dpr); }
   const g = /** @type {CanvasRenderingContext2D} */ (c.getContext('2d'));
   g.setTransform(dpr, 0, 0, dpr, 0, 0);
@@ -1072,8 +1125,9 @@ let gapLayerKey = '';
 function drawGapChart() {
   const a = state.answers.gaps;
   const c = /** @type {HTMLCanvasElement} */ (document.getElementById('gap-chart'));
-  if (!c.clientWidth || !c.clientHeight) return;  // not laid out (yet)
-  const key = `${state.version}|${a ? a.t0 : ''}|${state.theme}|${state.lang}|${c.clientWidth}x${c.clientHeight}|${state.contact?.time}`;
+  const box = boxSize(c);
+  if (!box.w || !box.h) return;  // not laid out (yet)
+  const key = `${state.version}|${a ? a.t0 : ''}|${state.theme}|${state.lang}|${box.w}x${box.h}|${state.contact?.time}`;
   if (key !== gapLayerKey || !a) {
     drawGapLayer();
     gapLayer.width = c.width;
@@ -1087,10 +1141,10 @@ function drawGapChart() {
   if (!a || a.error || !a.gaps.length) return;
   const dpr = window.devicePixelRatio || 1;
   g.setTransform(dpr, 0, 0, dpr, 0, 0);
-  const x = 46 + ((state.t - a.t0) / (a.t1 - a.t0 || 1)) * (c.clientWidth - 54);
+  const x = 46 + ((state.t - a.t0) / (a.t1 - a.t0 || 1)) * (box.w - 54);
   g.strokeStyle = theme().text;
   g.lineWidth = 1;
-  g.beginPath(); g.moveTo(x, 18); g.lineTo(x, c.clientHeight - 16); g.stroke();
+  g.beginPath(); g.moveTo(x, 18); g.lineTo(x, box.h - 16); g.stroke();
 }
 
 /** The gap chart without the moment. */

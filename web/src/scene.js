@@ -83,7 +83,7 @@ function speedSpan(d) {
 }
 
 /**
- * The backdrop: background, turning space, path. Drawn once per camera, theme and scenario.
+ * The backdrop: background, turning space, path. Drawn once per camera, theme and path.
  * @param {CanvasRenderingContext2D} ctx @param {number} w @param {number} h
  * @param {Camera} cam @param {Theme} th @param {SceneData} d
  */
