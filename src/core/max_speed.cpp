@@ -2,12 +2,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "golden_section.hpp"
 #include "make_path.hpp"
+#include "speed_bound.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/turnaround.hpp"
 
@@ -33,6 +35,25 @@ constexpr double kSamplesPerLink = 32.0;
 // (20 km of path) 9e7. Past the cap the scan would run for minutes or exhaust memory.
 constexpr double kMaxHandlePositions = 1e8;
 
+// The proof's stopping rule, relative: a stretch is done when its bound is within this of the
+// largest ratio found. 1e-9 of the ratio is 1e-9 of the head speed, far inside the printed
+// 6 decimals of m/s (1.2e-9 m/s at the contest's 1.25 m/s).
+constexpr double kProofTolerance = 1e-9;
+// m of head travel: stretches are not split below this (the chain's rounding, ~1e-14 m, is far
+// below it); one still unbounded counts as unproved.
+constexpr double kMinStretch = 1e-11;
+// Stretches the proof may split before giving up (each split solves one chain): a cap that
+// turns a bound that cannot close into an unproved answer instead of a hang.
+constexpr int kMaxSubdivisions = 200000;
+
+// The largest |speed| of a frame's handles (head speed 1) and the first handle reaching it.
+SpeedRatio ratio_of(const Frame& f) {
+    SpeedRatio best{std::abs(f.handles[0].speed), 0};
+    for (size_t i = 1; i < f.handles.size(); ++i)
+        if (std::abs(f.handles[i].speed) > best.ratio) best = {std::abs(f.handles[i].speed), static_cast<int>(i)};
+    return best;
+}
+
 class RatioProbe {
 public:
     RatioProbe(const Path& path, const BenchSpec& spec) : path_(path), spec_(spec) {}
@@ -40,10 +61,7 @@ public:
         ++evaluations;
         solve_chain(path_, spec_, s, 1.0, frame_);
         // Speeds are signed along the path (a handle may back up); the limit is on their size.
-        SpeedRatio best{std::abs(frame_.handles[0].speed), 0};
-        for (size_t i = 1; i < frame_.handles.size(); ++i)
-            if (std::abs(frame_.handles[i].speed) > best.ratio) best = {std::abs(frame_.handles[i].speed), static_cast<int>(i)};
-        return best;
+        return ratio_of(frame_);
     }
     int evaluations = 0;
 
@@ -66,7 +84,8 @@ SpeedRatio speed_ratio_at(const Path& path, const BenchSpec& spec, double head_a
     return probe(head_arc);
 }
 
-MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow& window, const Executor* executor) {
+MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow& window, const Executor* executor,
+                        const MaxSpeedOptions& options) {
     const InlineExecutor stop(executor);
     if (!std::isfinite(limit) || limit <= 0.0)
         throw InputError(Key::limit, error_value(limit), "it must be a finite speed > 0 m/s");
@@ -100,7 +119,9 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
     const double s0 = sim.start_arc() + cut.from, s1 = sim.start_arc() + cut.to;
     double shortest = s.bench.link_length(1);
     if (s.bench.bench_count > 1) shortest = std::min(shortest, s.bench.link_length(2));
-    const double samples = std::ceil((s1 - s0) * kSamplesPerLink / shortest);
+    if (!(options.samples_per_link > 0.0) || !std::isfinite(options.samples_per_link))
+        throw std::invalid_argument("max_head_speed: samples_per_link must be finite and > 0");
+    const double samples = std::ceil((s1 - s0) * options.samples_per_link / shortest);
     if (!(samples * s.bench.handle_count() <= kMaxHandlePositions))
         throw InputError(Key::time_range, fmt::format("{}..{} m of head travel", cut.from, cut.to),
                          fmt::format("the scan would solve {:.3g} chains of {} handles (at most {:.0e} handle "
@@ -109,9 +130,28 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
     const double ds = (s1 - s0) / steps;
 
     std::vector<double> rho(static_cast<size_t>(steps) + 1);
-    for (int k = 0; k <= steps; ++k) {
-        if (k % 256 == 0) check_stop(stop);
-        rho[static_cast<size_t>(k)] = probe(k == steps ? s1 : s0 + k * ds).ratio;
+    // With the proof, each stretch between samples is bounded as the scan passes (the chain at
+    // both its ends is at hand): upper[k] bounds [s_k, s_k+1], NaN where no bound holds.
+    std::vector<double> upper;
+    speed::BoundWorkspace bound_ws;
+    if (options.prove) {
+        upper.resize(static_cast<size_t>(steps));
+        Frame frames[2];
+        for (int k = 0; k <= steps; ++k) {
+            if (k % 256 == 0) check_stop(stop);
+            Frame& f = frames[k % 2];
+            solve_chain(path, s.bench, k == steps ? s1 : s0 + k * ds, 1.0, f);
+            ++probe.evaluations;
+            rho[static_cast<size_t>(k)] = ratio_of(f).ratio;
+            if (k == 0) continue;
+            const speed::StretchBound b = speed::bound_stretch(path, s.bench, frames[(k + 1) % 2], f, bound_ws);
+            upper[static_cast<size_t>(k) - 1] = b.verdict == speed::BoundVerdict::bounded ? b.upper : NAN;
+        }
+    } else {
+        for (int k = 0; k <= steps; ++k) {
+            if (k % 256 == 0) check_stop(stop);
+            rho[static_cast<size_t>(k)] = probe(k == steps ? s1 : s0 + k * ds).ratio;
+        }
     }
 
     // Refine every coarse local maximum that could still beat the best sample: between samples
@@ -154,6 +194,61 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
             }
         }
     }
+    double proof_hi = 0.0;  // the largest bound the proof accepted
+    if (options.prove) {
+        out.proof = MaxSpeedProof{};
+        MaxSpeedProof& proof = *out.proof;
+        proof.tolerance = kProofTolerance;
+        proof.narrowest = ds;
+        // A stretch [a, b] whose bound `top` (NaN: none) is not yet within the tolerance: split
+        // it at its middle, the chain solved there counting as found, until each part's is.
+        const auto done = [&](double top) { return top <= out.ratio * (1.0 + kProofTolerance); };
+        const auto settle = [&](auto& self, double a, const Frame& fa, double b, const Frame& fb, double top) -> void {
+            if (done(top)) {
+                proof_hi = std::max(proof_hi, top);
+                ++proof.stretches;
+                proof.narrowest = std::min(proof.narrowest, b - a);
+                return;
+            }
+            if (b - a < kMinStretch || proof.subdivisions >= kMaxSubdivisions) {
+                ++proof.unproved;
+                return;
+            }
+            if (proof.subdivisions % 256 == 0) check_stop(stop);
+            ++proof.subdivisions;
+            const double m = 0.5 * (a + b);
+            Frame mid;
+            solve_chain(path, s.bench, m, 1.0, mid);
+            ++proof.evaluations;
+            const SpeedRatio r = ratio_of(mid);
+            if (r.ratio > out.ratio) {
+                out.ratio = r.ratio;
+                out.handle = r.handle;
+                out.head_arc = m;
+            }
+            const speed::StretchBound left = speed::bound_stretch(path, s.bench, fa, mid, bound_ws);
+            const speed::StretchBound right = speed::bound_stretch(path, s.bench, mid, fb, bound_ws);
+            const double tl = left.verdict == speed::BoundVerdict::bounded ? left.upper : NAN;
+            const double tr = right.verdict == speed::BoundVerdict::bounded ? right.upper : NAN;
+            self(self, a, fa, m, mid, tl);
+            self(self, m, mid, b, fb, tr);
+        };
+        Frame fa, fb;
+        for (int k = 0; k < steps; ++k) {
+            const double top = upper[static_cast<size_t>(k)];
+            if (done(top)) {
+                proof_hi = std::max(proof_hi, top);
+                ++proof.stretches;
+                continue;
+            }
+            const double a = s0 + k * ds, b = k + 1 == steps ? s1 : s0 + (k + 1) * ds;
+            solve_chain(path, s.bench, a, 1.0, fa);
+            solve_chain(path, s.bench, b, 1.0, fb);
+            proof.evaluations += 2;
+            settle(settle, a, fa, b, fb, top);
+        }
+        probe.evaluations += proof.evaluations;
+    }
     // Handles on one arc all move at the same speed: report every one that ties, and the first.
     Frame f;
     solve_chain(path, s.bench, out.head_arc, 1.0, f);
@@ -164,6 +259,20 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
     out.travel = out.head_arc - sim.start_arc();
     out.time = out.travel / v;
     out.max_head_speed = limit / out.ratio;
+    if (out.proof) {
+        MaxSpeedProof& proof = *out.proof;
+        proof.proved = proof.unproved == 0;
+        proof.ratio_lo = out.ratio * (1.0 - speed::ratio_error(f, out.handle));
+        // Each quotient rounded outward by an ulp.
+        proof.max_head_speed_hi = std::nextafter(limit / proof.ratio_lo, INFINITY);
+        if (proof.proved) {
+            proof.ratio_hi = std::max(out.ratio, proof_hi);
+            proof.max_head_speed_lo = std::nextafter(limit / proof.ratio_hi, 0.0);
+        } else {
+            proof.ratio_hi = std::numeric_limits<double>::infinity();
+            proof.max_head_speed_lo = 0.0;
+        }
+    }
     out.evaluations = probe.evaluations;
     return out;
 }
