@@ -183,8 +183,9 @@ struct MaxSpeedProof {
     int stretches = 0;      // stretches bounded (the branch and bound's leaves)
     int subdivisions = 0;   // stretches split in two
     int evaluations = 0;    // chains the proof solved beyond the scan's
-    int unproved = 0;       // stretches left unbounded (a handle that may move back or turn square to its link,
-                            // or split down to kMinStretch, or past the work cap)
+    int unproved = 0;       // stretches left unbounded: a handle moving back at one of its ends (the method needs
+                            // every handle moving forward), or split down to 1e-11 m, or past the work cap
+    double unproved_travel = 0.0;  // m of head travel those stretches cover
     double narrowest = 0.0;  // m of head travel: the narrowest stretch bounded
 };
 

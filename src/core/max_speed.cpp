@@ -45,6 +45,22 @@ constexpr double kMinStretch = 1e-11;
 // Stretches the proof may split before giving up (each split solves one chain): a cap that
 // turns a bound that cannot close into an unproved answer instead of a hang.
 constexpr int kMaxSubdivisions = 200000;
+// The proof's first stretches, in scan steps: the bound's excess over the true maximum grows as
+// the square of a stretch's length (for the chain's tail, about 200 links times it), so a
+// stretch of 4 steps (0.2 m at the contest) is bounded well below the maximum nearly everywhere,
+// and costs a quarter of the chains' facts and bounds.
+constexpr int kScanStepsPerStretch = 1;
+
+// A stretch's bound as the branch and bound keeps it: the bound; NaN where a shorter stretch
+// may be bounded; +inf where a handle moves back at one of its ends, which no split can bound
+// (the method needs every handle moving forward).
+double bound_value(const speed::StretchBound& b) {
+    switch (b.verdict) {
+        case speed::BoundVerdict::bounded: return b.upper;
+        case speed::BoundVerdict::backs_up: return INFINITY;
+        default: return NAN;
+    }
+}
 
 // The largest |speed| of a frame's handles (head speed 1) and the first handle reaching it.
 SpeedRatio ratio_of(const Frame& f) {
@@ -131,21 +147,24 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
 
     std::vector<double> rho(static_cast<size_t>(steps) + 1);
     // With the proof, each stretch between samples is bounded as the scan passes (the chain at
-    // both its ends is at hand): upper[k] bounds [s_k, s_k+1], NaN where no bound holds.
+    // both its ends is at hand): upper[j] bounds the j-th stretch of kScanStepsPerStretch scan steps,
+    // NaN where no bound holds.
     std::vector<double> upper;
-    speed::BoundWorkspace bound_ws;
     if (options.prove) {
-        upper.resize(static_cast<size_t>(steps));
-        Frame frames[2];
+        upper.resize(static_cast<size_t>((steps + kScanStepsPerStretch - 1) / kScanStepsPerStretch));
+        Frame f;
+        speed::ChainFacts facts[2];
         for (int k = 0; k <= steps; ++k) {
             if (k % 256 == 0) check_stop(stop);
-            Frame& f = frames[k % 2];
             solve_chain(path, s.bench, k == steps ? s1 : s0 + k * ds, 1.0, f);
             ++probe.evaluations;
             rho[static_cast<size_t>(k)] = ratio_of(f).ratio;
+            if (k % kScanStepsPerStretch != 0 && k != steps) continue;
+            const int j = (k + kScanStepsPerStretch - 1) / kScanStepsPerStretch;  // the stretch this ends
+            speed::gather(path, f, facts[j % 2]);
             if (k == 0) continue;
-            const speed::StretchBound b = speed::bound_stretch(path, s.bench, frames[(k + 1) % 2], f, bound_ws);
-            upper[static_cast<size_t>(k) - 1] = b.verdict == speed::BoundVerdict::bounded ? b.upper : NAN;
+            const speed::StretchBound b = speed::bound_stretch(path, s.bench, facts[(j + 1) % 2], facts[j % 2]);
+            upper[static_cast<size_t>(j) - 1] = bound_value(b);
         }
     } else {
         for (int k = 0; k <= steps; ++k) {
@@ -203,15 +222,20 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
         // A stretch [a, b] whose bound `top` (NaN: none) is not yet within the tolerance: split
         // it at its middle, the chain solved there counting as found, until each part's is.
         const auto done = [&](double top) { return top <= out.ratio * (1.0 + kProofTolerance); };
-        const auto settle = [&](auto& self, double a, const Frame& fa, double b, const Frame& fb, double top) -> void {
+        const auto bound = [&](const speed::ChainFacts& c0, const speed::ChainFacts& c1) {
+            return bound_value(speed::bound_stretch(path, s.bench, c0, c1));
+        };
+        const auto settle = [&](auto& self, const speed::ChainFacts& ca, const speed::ChainFacts& cb, double top) -> void {
+            const double a = ca.head_arc, b = cb.head_arc;
             if (done(top)) {
                 proof_hi = std::max(proof_hi, top);
                 ++proof.stretches;
                 proof.narrowest = std::min(proof.narrowest, b - a);
                 return;
             }
-            if (b - a < kMinStretch || proof.subdivisions >= kMaxSubdivisions) {
+            if (top == INFINITY || b - a < kMinStretch || proof.subdivisions >= kMaxSubdivisions) {
                 ++proof.unproved;
+                proof.unproved_travel += b - a;
                 return;
             }
             if (proof.subdivisions % 256 == 0) check_stop(stop);
@@ -226,26 +250,29 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
                 out.handle = r.handle;
                 out.head_arc = m;
             }
-            const speed::StretchBound left = speed::bound_stretch(path, s.bench, fa, mid, bound_ws);
-            const speed::StretchBound right = speed::bound_stretch(path, s.bench, mid, fb, bound_ws);
-            const double tl = left.verdict == speed::BoundVerdict::bounded ? left.upper : NAN;
-            const double tr = right.verdict == speed::BoundVerdict::bounded ? right.upper : NAN;
-            self(self, a, fa, m, mid, tl);
-            self(self, m, mid, b, fb, tr);
+            speed::ChainFacts cm;
+            speed::gather(path, mid, cm);
+            const double tl = bound(ca, cm), tr = bound(cm, cb);
+            self(self, ca, cm, tl);
+            self(self, cm, cb, tr);
         };
         Frame fa, fb;
-        for (int k = 0; k < steps; ++k) {
-            const double top = upper[static_cast<size_t>(k)];
+        speed::ChainFacts ca, cb;
+        for (size_t j = 0; j < upper.size(); ++j) {
+            const double top = upper[j];
             if (done(top)) {
                 proof_hi = std::max(proof_hi, top);
                 ++proof.stretches;
                 continue;
             }
-            const double a = s0 + k * ds, b = k + 1 == steps ? s1 : s0 + (k + 1) * ds;
+            const int k = static_cast<int>(j) * kScanStepsPerStretch, next = k + kScanStepsPerStretch;
+            const double a = s0 + k * ds, b = next >= steps ? s1 : s0 + next * ds;
             solve_chain(path, s.bench, a, 1.0, fa);
             solve_chain(path, s.bench, b, 1.0, fb);
             proof.evaluations += 2;
-            settle(settle, a, fa, b, fb, top);
+            speed::gather(path, fa, ca);
+            speed::gather(path, fb, cb);
+            settle(settle, ca, cb, top);
         }
         probe.evaluations += proof.evaluations;
     }

@@ -48,7 +48,8 @@ inline constexpr double kAngleError = 1e-13;
 
 enum class BoundVerdict {
     bounded,       // every handle's speed ratio is bounded over the stretch
-    not_monotone,  // a handle moves back, or an angle may reach pi/2: no bound by this method
+    not_monotone,  // an angle may reach pi/2 or a link may turn too far: a shorter stretch may be bounded
+    backs_up,      // a handle moves back at one of the stretch's ends: no stretch around it is bounded by this method
 };
 
 struct StretchBound {
@@ -63,14 +64,22 @@ struct StretchBound {
 // of kAngleError.
 double ratio_error(const Frame& f, int handle);
 
-// Scratch reused between bounds.
-struct BoundWorkspace {
-    std::vector<double> arc0, arc1;  // each handle's arc position at the two ends, m
+// What a bound needs of one end of a stretch, gathered once per chain solved (a frame ends one
+// stretch and begins the next).
+struct ChainFacts {
+    double head_arc = 0.0;       // m
+    std::vector<Place> place;    // each handle's
+    std::vector<double> kappa;   // the path's signed curvature at each handle, 1/m
+    std::vector<double> speed;   // each handle's signed speed at head speed 1
+    // Per link i (handles i and i + 1, u the unit link from rear to front): cos and sin of alpha
+    // (from u to the front tangent) and of beta (from u to the rear tangent).
+    std::vector<double> cos_a, sin_a, cos_b, sin_b;
 };
+// Gathers f's facts (f solved at head speed 1).
+void gather(const Path& path, const Frame& f, ChainFacts& out);
 
-// The bound over head travel between the frames f0 and f1 (f0 behind, both of the same chain on
+// The bound over head travel between the chains c0 and c1 (c0 behind, both of the same chain on
 // `path` at head speed 1, every moment between them within the valid motion).
-StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const Frame& f0, const Frame& f1,
-                           BoundWorkspace& ws);
+StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainFacts& c0, const ChainFacts& c1);
 
 }  // namespace dragon::speed
