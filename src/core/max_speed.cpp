@@ -51,16 +51,9 @@ constexpr int kMaxSubdivisions = 200000;
 // and costs a quarter of the chains' facts and bounds.
 constexpr int kScanStepsPerStretch = 1;
 
-// A stretch's bound as the branch and bound keeps it: the bound; NaN where a shorter stretch
-// may be bounded; +inf where a handle moves back at one of its ends, which no split can bound
-// (the method needs every handle moving forward).
-double bound_value(const speed::StretchBound& b) {
-    switch (b.verdict) {
-        case speed::BoundVerdict::bounded: return b.upper;
-        case speed::BoundVerdict::backs_up: return INFINITY;
-        default: return NAN;
-    }
-}
+// A stretch's bound as the branch and bound keeps it: the bound, or NaN where a shorter
+// stretch may be bounded.
+double bound_value(const speed::StretchBound& b) { return b.verdict == speed::BoundVerdict::bounded ? b.upper : NAN; }
 
 // The largest |speed| of a frame's handles (head speed 1) and the first handle reaching it.
 SpeedRatio ratio_of(const Frame& f) {
@@ -233,7 +226,7 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
                 proof.narrowest = std::min(proof.narrowest, b - a);
                 return;
             }
-            if (top == INFINITY || b - a < kMinStretch || proof.subdivisions >= kMaxSubdivisions) {
+            if (b - a < kMinStretch || proof.subdivisions >= kMaxSubdivisions) {
                 ++proof.unproved;
                 proof.unproved_travel += b - a;
                 return;

@@ -33,14 +33,6 @@ Iv operator/(Iv a, Iv b) {
 Iv hull(Iv a, double x) { return {std::min(a.lo, x), std::max(a.hi, x)}; }
 double magnitude(Iv a) { return std::max(std::abs(a.lo), std::abs(a.hi)); }
 
-// cos and sin over the angles a0 + t, |t| <= w, from c = cos a0 >= 0 and s = sin a0, by Taylor
-// with remainder (cos t >= 1 - t^2/2, |sin t| <= |t|): no trigonometry per stretch.
-Iv cos_near(double c, double s, double w) { return {c - std::abs(s) * w - 0.5 * w * w, std::min(1.0, c + std::abs(s) * w)}; }
-Iv sin_near(double c, double s, double w) {
-    const double spread = 0.5 * std::abs(s) * w * w + c * w;
-    return {std::max(-1.0, s - spread), std::min(1.0, s + spread)};
-}
-
 // The signed curvature over the arc between arc positions of two chains' handle i (rear: the
 // lesser): the hull of its values at the two places and at both sides of every join between
 // (curvature is monotone along each piece of both paths: constant on an arc, its magnitude
@@ -122,6 +114,47 @@ void gather(const Path& path, const Frame& f, ChainFacts& out) {
     }
 }
 
+namespace {
+
+// cos and sin over a0 + t, |t| <= w, for any a0 (c = cos a0, s = sin a0): c cos t lies between
+// c and c (1 - w^2/2), and |s sin t| <= |s| min(w, 1).
+Iv cos_any(double c, double s, double w) {
+    const double k = c * (1.0 - 0.5 * w * w), q = std::abs(s) * std::min(w, 1.0);
+    return {std::max(-1.0, std::min(c, k) - q), std::min(1.0, std::max(c, k) + q)};
+}
+Iv sin_any(double c, double s, double w) {
+    const double k = s * (1.0 - 0.5 * w * w), q = std::abs(c) * std::min(w, 1.0);
+    return {std::max(-1.0, std::min(s, k) - q), std::min(1.0, std::max(s, k) + q)};
+}
+
+// Where a handle may be over the stretch: the arc between two places, the largest distance
+// along the path from its place at the stretch's start (and from its place at the end), the
+// turning and curvature over that arc, and whether the handle moves forward all the way (then
+// the arc is exactly from its start place to its end place).
+struct Reach {
+    Place lo, hi;
+    double from_start = 0.0, from_end = 0.0;  // m
+    double turning = 0.0;                     // rad
+    Iv kappa{0.0, 0.0};                       // 1/m
+    bool forward = true;
+};
+
+// The reach of a handle known to lie between arc positions lo and hi (lo <= hi), at s0 and s1 at
+// the stretch's ends.
+Reach reach_between(const Path& path, double lo, double hi, double s0, double s1) {
+    Reach r;
+    r.lo = path.at_arc(lo).place;
+    r.hi = path.at_arc(hi).place;
+    r.from_start = std::max(s0 - lo, hi - s0);
+    r.from_end = std::max(s1 - lo, hi - s1);
+    r.turning = path.turning(r.lo, r.hi);
+    r.kappa = curvature_over(path, r.lo, path.curvature(r.lo), r.hi, path.curvature(r.hi));
+    r.forward = false;
+    return r;
+}
+
+}  // namespace
+
 StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainFacts& c0, const ChainFacts& c1) {
     StretchBound out;
     const size_t n = c0.place.size();
@@ -133,75 +166,129 @@ StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainF
     };
     // cos of an angle must stay above this for Lemma A (the angle within pi/2 - kAngleMargin).
     const double least_cos = std::sin(kAngleMargin);
-    // Handle i's speed (head speed 1) and its slope in head travel, over the stretch.
-    Iv v{1.0, 1.0}, dlog{0.0, 0.0};
-    double sensitivity = 0.0;  // sum of |tan alpha| + |tan beta| over the links so far
+    // Handle i's speed (head speed 1) and its slope in head travel over the stretch: the slope
+    // of log v while every handle so far moves forward (`logs`), else of v itself.
+    Iv v{1.0, 1.0}, dlog{0.0, 0.0}, dv{0.0, 0.0};
+    bool logs = true;
+    double sensitivity = 0.0;  // sum of |tan alpha| + |tan beta| over the links so far (while logs)
+    double error = 0.0;        // bound on the error of the computed end speeds of handle i (kAngleError's model)
     out.upper = 1.0;           // the head
     out.handle = 0;
-    // Handle i's arc over the stretch: its length (an upper bound), the curvature and turning on it.
-    double moved_front = 0.0, turn_front = 0.0;
-    Iv kappa_front{0.0, 0.0};
-    if (!travel(path, c0, c1, 0, moved_front, turn_front, kappa_front)) return fail(0);
-    for (size_t i = 1; i < n; ++i) {
-        if (!(c0.speed[i] > 0.0 && c1.speed[i] > 0.0)) {
-            out.verdict = BoundVerdict::backs_up;
-            out.handle = static_cast<int>(i);
-            return out;
-        }
+    Reach front;
+    front.lo = c0.place[0];
+    front.hi = c1.place[0];
+    {
+        double moved = 0.0;
+        if (!travel(path, c0, c1, 0, moved, front.turning, front.kappa)) return fail(0);
+        front.from_start = front.from_end = moved;
     }
     for (size_t i = 0; i + 1 < n; ++i) {
         const double d = spec.link_after(static_cast<int>(i));
-        double moved_rear = 0.0, turn_rear = 0.0;
-        Iv kappa_rear{0.0, 0.0};
-        // Lemma A's premise: each handle ends no further back than it began.
-        if (!travel(path, c0, c1, i + 1, moved_rear, turn_rear, kappa_rear)) return fail(i + 1);
-        // The link's turning over the stretch: both ends move at most their arcs' lengths, so it
-        // is at most 2 asin(y), y = moved / 2d, and asin(y) <= y / sqrt(1 - y^2).
-        const double y = 0.5 * (moved_front + moved_rear) / d;
-        if (!(y < 0.5)) return fail(i + 1);
-        const double link_turn = 2.0 * y / std::sqrt(1.0 - y * y);
-        const double wa = turn_front + link_turn + kAngleSlack, wb = turn_rear + link_turn + kAngleSlack;
         const double ca0 = c0.cos_a[i], sa0 = c0.sin_a[i], cb0 = c0.cos_b[i], sb0 = c0.sin_b[i];
-        if (!(ca0 > 0.0 && cb0 > 0.0)) return fail(i + 1);
-        const Iv ca = cos_near(ca0, sa0, wa), cb = cos_near(cb0, sb0, wb);
-        if (!(ca.lo > least_cos && cb.lo > least_cos)) return fail(i + 1);
-        const Iv sa = sin_near(ca0, sa0, wa), sb = sin_near(cb0, sb0, wb);
-        const Iv ta = sa / ca, tb = sb / cb;
+        const double va = c0.speed[i + 1], vb = c1.speed[i + 1];
+        Reach rear;
+        double moved_rear = 0.0;
+        // Lemma A: the front moving forward, the rear ending ahead and both angles below pi/2
+        // over the box: the rear moves forward on the arc between its two places.
+        bool forward = logs && front.forward && va > 0.0 && vb > 0.0 && ca0 > 0.0 && cb0 > 0.0 &&
+                       travel(path, c0, c1, i + 1, moved_rear, rear.turning, rear.kappa);
+        Iv ca{0, 0}, cb{0, 0}, sa{0, 0}, sb{0, 0};
+        const auto angles = [&](const Reach& r) {
+            // The link's turning: each end within its reach's distance of its place at the start.
+            const double y = 0.5 * (front.from_start + r.from_start) / d;
+            if (!(y < 0.5)) return false;
+            const double link_turn = 2.0 * y / std::sqrt(1.0 - y * y);
+            const double wa = front.turning + link_turn + kAngleSlack, wb = r.turning + link_turn + kAngleSlack;
+            ca = cos_any(ca0, sa0, wa);
+            sa = sin_any(ca0, sa0, wa);
+            cb = cos_any(cb0, sb0, wb);
+            sb = sin_any(cb0, sb0, wb);
+            return cb.lo > least_cos;
+        };
+        if (forward) {
+            rear.lo = c0.place[i + 1];
+            rear.hi = c1.place[i + 1];
+            rear.from_start = rear.from_end = moved_rear;
+            forward = angles(rear) && ca.lo > least_cos;
+        }
+        if (!forward) {
+            // Lemma A': the rear handle's map F (rear place from front place) has
+            // |F'| = |cos alpha| / cos beta <= G while the rear stays in a candidate arc R; if
+            // F's values at the two ends, give or take G times the front's reach, lie inside R,
+            // the rear never leaves it (a first exit would have to come within that distance).
+            const double m = path.arc(c0.place[i + 1]), M = path.arc(c1.place[i + 1]);
+            if (!std::isfinite(m) || !std::isfinite(M)) return fail(i + 1);
+            double guess = 2.0 * front.from_start * std::max(std::abs(ca0 / cb0), std::abs(c1.cos_a[i] / c1.cos_b[i])) + 1e-9;
+            bool found = false;
+            for (int round = 0; round < 6 && !found; ++round) {
+                if (!(std::min(m, M) - guess > path.s_min() && std::max(m, M) + guess < path.s_max())) return fail(i + 1);
+                rear = reach_between(path, std::min(m, M) - guess, std::max(m, M) + guess, m, M);
+                if (!angles(rear)) return fail(i + 1);
+                const double slope = magnitude(ca) / cb.lo;
+                const double lo = std::max(m - slope * front.from_start, M - slope * front.from_end);
+                const double hi = std::min(m + slope * front.from_start, M + slope * front.from_end);
+                if (lo > std::min(m, M) - guess && hi < std::max(m, M) + guess) {
+                    // The angles above stand (the candidate holds the rear); the next link starts
+                    // from the tighter arc just proved.
+                    found = true;
+                    rear = reach_between(path, std::min({lo, m, M}), std::max({hi, m, M}), m, M);
+                } else {
+                    guess = 2.0 * std::max(std::min(m, M) - lo, hi - std::max(m, M));
+                }
+            }
+            if (!found) return fail(i + 1);
+        }
+        const Iv g = ca / cb;
         // delta = alpha - beta: the tangents' angle; the link's own turning cancels in it.
         const double sd0 = std::abs(sa0 * cb0 - ca0 * sb0);
-        const double wd = turn_front + turn_rear + 2.0 * kAngleSlack;
+        const double wd = front.turning + rear.turning + 2.0 * kAngleSlack;
         const Iv sd2{sd0 > wd ? (sd0 - wd) * (sd0 - wd) : 0.0, std::min(1.0, (sd0 + wd) * (sd0 + wd))};
-        const Iv g = ca / cb;
-        // g' / g = v E: E = -tan(alpha) kappa_i + tan(beta) kappa_{i+1} g + sin^2(delta) / (d cos(alpha) cos^2(beta)).
-        const Iv e = (Iv{0.0, 0.0} - ta * kappa_front) + tb * kappa_rear * g + (1.0 / d) * (sd2 / (ca * cb * cb));
-        // (log v_{i+1})' = (log v_i)' + v_i E: the slopes of the logs add link by link (the
-        // products of the factors g would multiply their enclosures' widths instead).
-        dlog = dlog + v * e;
-        const double va = c0.speed[i + 1], vb = c1.speed[i + 1];
-        sensitivity += magnitude(ta) + magnitude(tb);
-        const double error = kAngleError * sensitivity + 8.0 * static_cast<double>(i + 1) * kUlp;
-        // The rear speed lies in v g; and (Lipschitz, slope at most L) within L h / 2 of its
-        // ends' mean; L from the one enclosure, then again from the tighter one.
         const Iv product = v * g;
-        Iv rear = product;
+        if (forward) {
+            // g' / g = v E: E = -tan(alpha) kappa_i + tan(beta) kappa_{i+1} g + sin^2(delta) / (d cos(alpha) cos^2(beta)).
+            const Iv ta = sa / ca, tb = sb / cb;
+            const Iv e = (Iv{0.0, 0.0} - ta * front.kappa) + tb * rear.kappa * g + (1.0 / d) * (sd2 / (ca * cb * cb));
+            // (log v_{i+1})' = (log v_i)' + v_i E: the slopes of the logs add link by link (the
+            // products of the factors g would multiply their enclosures' widths instead).
+            dlog = dlog + v * e;
+            sensitivity += magnitude(ta) + magnitude(tb);
+            error = (kAngleError * sensitivity + 8.0 * static_cast<double>(i + 1) * kUlp) * magnitude(product);
+        } else {
+            // g' = v H, H = -sin(alpha) kappa_i / cos(beta) + kappa_{i+1} sin(beta) cos^2(alpha) / cos^3(beta)
+            //            + sin^2(delta) / (d cos^3(beta)), with no cos(alpha) below the line;
+            // v_{i+1}' = v_i' g + v_i^2 H.
+            const Iv cb3 = cb * cb * cb;
+            const Iv hh = (Iv{0.0, 0.0} - sa * front.kappa / cb) + rear.kappa * sb * ca * ca / cb3 + (1.0 / d) * (sd2 / cb3);
+            dv = (logs ? v * dlog : dv) * g + v * v * hh;
+            logs = false;
+            // The computed speed's error, absolute now (|tan alpha| is unbounded where the rear
+            // stops): the front's carried by |g|, and each angle's kAngleError moving g by at most
+            // (|sin alpha| + |g| |sin beta|) / cos beta of it; a few ulps of rounding.
+            error = error * magnitude(g) + magnitude(v) * kAngleError * (magnitude(sa) + magnitude(g) * magnitude(sb)) / cb.lo +
+                    8.0 * kUlp * magnitude(product);
+        }
+        // The rear speed lies in v g; and (Lipschitz, slope at most L) within L h / 2 of its
+        // ends' mean, give or take their computed values' error; L from the one enclosure, then
+        // again from the tighter one.
+        Iv speed_now = product;
         double top = INFINITY;
+        const double mean = 0.5 * (va + vb);
         for (int round = 0; round < 2; ++round) {
-            const double slope = magnitude(rear * dlog);
-            top = std::min(top, 0.5 * (va + vb + slope * h) + 0.5 * (va + vb) * error);
-            const Iv lipschitz{0.5 * (va + vb - slope * h) - 0.5 * (va + vb) * error, top};
-            const Iv both{std::max(rear.lo, lipschitz.lo), std::min(rear.hi, lipschitz.hi)};
+            const double slope = logs ? magnitude(speed_now * dlog) : magnitude(dv);
+            top = std::min(top, std::abs(mean) + 0.5 * slope * h + error);
+            const Iv lipschitz{mean - 0.5 * slope * h - error, mean + 0.5 * slope * h + error};
+            const Iv both{std::max(speed_now.lo, lipschitz.lo), std::min(speed_now.hi, lipschitz.hi)};
             if (both.lo > both.hi) break;  // empty only by rounding: keep the wider
-            rear = both;
+            speed_now = both;
         }
         if (!(top < INFINITY)) return fail(i + 1);  // the slope's enclosure overflowed: a shorter stretch may do
         if (top > out.upper) {
             out.upper = top;
             out.handle = static_cast<int>(i + 1);
         }
-        v = rear;
-        moved_front = moved_rear;
-        turn_front = turn_rear;
-        kappa_front = kappa_rear;
+        v = speed_now;
+        rear.forward = forward;
+        front = rear;
     }
     return out;
 }

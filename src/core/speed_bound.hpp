@@ -48,8 +48,7 @@ inline constexpr double kAngleError = 1e-13;
 
 enum class BoundVerdict {
     bounded,       // every handle's speed ratio is bounded over the stretch
-    not_monotone,  // an angle may reach pi/2 or a link may turn too far: a shorter stretch may be bounded
-    backs_up,      // a handle moves back at one of the stretch's ends: no stretch around it is bounded by this method
+    not_monotone,  // a rear tangent may turn square to its link, or a link turn too far: a shorter stretch may be bounded
 };
 
 struct StretchBound {

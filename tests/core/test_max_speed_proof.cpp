@@ -96,56 +96,47 @@ TEST(MaxSpeedProof, TheSearchWithoutTheProofFindsTheSameMaximum) {
     EXPECT_GE(sampled.ratio, proved.proof->ratio_lo - proved.proof->tolerance * proved.ratio);
 }
 
-// Where the proof cannot close (a handle moving back: the method needs every handle moving
-// forward), it says so: no upper bound, and the stretches it left out hold a handle moving back.
-void check_unproved(const Scenario& sc, const MaxSpeed& m) {
-    const MaxSpeedProof& p = *m.proof;
-    EXPECT_GT(p.unproved, 0);
-    EXPECT_GT(p.unproved_travel, 0.0);
-    EXPECT_EQ(p.ratio_hi, INFINITY);
-    EXPECT_EQ(p.max_head_speed_lo, 0.0);
-    EXPECT_LE(p.ratio_lo, m.ratio);
+TEST(MaxSpeedProof, EnclosesRandomScenariosMaxima) {
+    std::mt19937 rng(20261127);
+    std::uniform_real_distribution<double> ratio(1.2, 3.0), pitch(1.6, 2.2);
+    int checked = 0;
+    for (int trial = 0; trial < 5; ++trial) {
+        const Scenario sc = turnaround_scenario(ratio(rng), pitch(rng));
+        SCOPED_TRACE(fmt::format("arc_ratio {} turn_pitch {}", sc.path.arc_ratio, sc.path.turn_pitch));
+        const MaxSpeed m = max_head_speed(sc, 2.0);
+        if (m.unbounded) continue;  // no head speed will do: nothing to enclose
+        check_enclosure(sc, m);
+        ++checked;
+    }
+    EXPECT_GE(checked, 3);
+}
+
+// Where a handle backs up (arc ratio 2.8: handle 1 stops and backs before the jam), the rear
+// handles' arcs come from the slope bound of Lemma A', not from their end places.
+TEST(MaxSpeedProof, EnclosesTheMaximumWhereAHandleBacksUp) {
+    const Scenario sc = turnaround_scenario(2.8, 1.7);
+    const MaxSpeed m = max_head_speed(sc, 2.0);
+    ASSERT_FALSE(m.unbounded);
     const TurnaroundPath path(design_s_curve(sc));
     const double start = m.head_arc - m.travel;
     bool backs = false;
     Frame f;
     for (double x = start + m.window.from_travel; x <= start + m.window.to_travel && !backs; x += 0.01) {
         solve_chain(path, sc.bench, x, 1.0, f);
-        for (const Handle& h : f.handles) backs = backs || h.speed <= 0.0;
+        for (const Handle& h : f.handles) backs = backs || h.speed < 0.0;
     }
-    EXPECT_TRUE(backs) << "no handle moves back in the window, yet the proof left stretches out";
+    ASSERT_TRUE(backs) << "no handle backs up in the window: the case is not the one meant";
+    check_enclosure(sc, m);
 }
 
-TEST(MaxSpeedProof, EnclosesRandomScenariosMaxima) {
-    std::mt19937 rng(20261127);
-    std::uniform_real_distribution<double> ratio(1.2, 3.0), pitch(1.6, 2.2);
-    int proved = 0, unproved = 0;
-    for (int trial = 0; trial < 6; ++trial) {
-        const Scenario sc = turnaround_scenario(ratio(rng), pitch(rng));
-        SCOPED_TRACE(fmt::format("arc_ratio {} turn_pitch {}", sc.path.arc_ratio, sc.path.turn_pitch));
-        const MaxSpeed m = max_head_speed(sc, 2.0);
-        if (m.unbounded) continue;  // no head speed will do: nothing to enclose
-        ASSERT_TRUE(m.proof.has_value());
-        if (m.proof->proved) {
-            check_enclosure(sc, m);
-            ++proved;
-        } else {
-            check_unproved(sc, m);
-            ++unproved;
-        }
-    }
-    EXPECT_GE(proved, 3);
-    RecordProperty("unproved", unproved);
-}
-
-// (2) A scan too coarse to see the peak (one sample every 20 links): the sampled search alone
+// (2) A scan too coarse to see the peak (one sample every 10 links): the sampled search alone
 // reports less than the true maximum; the proof, whose bounds see every stretch whole, splits
 // its way to the peak and encloses the true maximum.
 TEST(MaxSpeedProof, FindsAPeakTheCoarseScanMissed) {
     const Scenario sc = turnaround_scenario();
     const MaxSpeed reference = max_head_speed(sc, 2.0);
     MaxSpeedOptions coarse;
-    coarse.samples_per_link = 0.05;
+    coarse.samples_per_link = 0.1;
     coarse.prove = false;
     const MaxSpeed missed = max_head_speed(sc, 2.0, kTurnaroundWindow, nullptr, coarse);
     ASSERT_LT(missed.ratio, reference.proof->ratio_lo - 1e-6) << "the coarse scan found the peak: not adversarial";
@@ -158,13 +149,13 @@ TEST(MaxSpeedProof, FindsAPeakTheCoarseScanMissed) {
     EXPECT_GE(m.proof->ratio_hi, reference.proof->ratio_lo);
 }
 
-// Each stretch's bound directly, on wide stretches (0.05 to 2 m of head travel) all over the
-// window, kinks included: no sample inside exceeds it.
+// Each stretch's bound directly, on stretches 0.4 to 10 times as long as the proof's first ones
+// (0.02 to 0.5 m of head travel) all over the window, kinks included: no sample inside exceeds it.
 TEST(MaxSpeedProof, AStretchsBoundHoldsInsideIt) {
     const Scenario sc = turnaround_scenario();
     const TurnaroundPath path(design_s_curve(sc));
     std::mt19937 rng(7);
-    std::uniform_real_distribution<double> where(-100.0, 98.0), width(0.05, 2.0);
+    std::uniform_real_distribution<double> where(-100.0, 99.5), width(0.02, 0.5);
     Frame f0, f1;
     speed::ChainFacts c0, c1;
     int bounded = 0;
