@@ -214,8 +214,9 @@ StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainF
         if (!forward) {
             // Lemma A': the rear handle's map F (rear place from front place) has
             // |F'| = |cos alpha| / cos beta <= G while the rear stays in a candidate arc R; if
-            // F's values at the two ends, give or take G times the front's reach, lie inside R,
-            // the rear never leaves it (a first exit would have to come within that distance).
+            // F's value at the start, give or take G times the front's reach, lies inside R, the
+            // rear never leaves it (a first exit would have to come within that distance), and it
+            // is within G times the front's reaches of both its end places.
             const double m = path.arc(c0.place[i + 1]), M = path.arc(c1.place[i + 1]);
             if (!std::isfinite(m) || !std::isfinite(M)) return fail(i + 1);
             double guess = 2.0 * front.from_start * std::max(std::abs(ca0 / cb0), std::abs(c1.cos_a[i] / c1.cos_b[i])) + 1e-9;
@@ -227,13 +228,14 @@ StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainF
                 const double slope = magnitude(ca) / cb.lo;
                 const double lo = std::max(m - slope * front.from_start, M - slope * front.from_end);
                 const double hi = std::min(m + slope * front.from_start, M + slope * front.from_end);
-                if (lo > std::min(m, M) - guess && hi < std::max(m, M) + guess) {
+                // A first exit from R would come within slope * reach of m: inside R, so none.
+                if (m - slope * front.from_start > std::min(m, M) - guess && m + slope * front.from_start < std::max(m, M) + guess) {
                     // The angles above stand (the candidate holds the rear); the next link starts
                     // from the tighter arc just proved.
                     found = true;
                     rear = reach_between(path, std::min({lo, m, M}), std::max({hi, m, M}), m, M);
                 } else {
-                    guess = 2.0 * std::max(std::min(m, M) - lo, hi - std::max(m, M));
+                    guess = 2.0 * std::max(std::min(m, M) - (m - slope * front.from_start), m + slope * front.from_start - std::max(m, M));
                 }
             }
             if (!found) return fail(i + 1);
