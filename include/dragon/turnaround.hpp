@@ -187,6 +187,9 @@ struct MaxSpeedProof {
                             // every handle moving forward), or split down to 1e-11 m, or past the work cap
     double unproved_travel = 0.0;  // m of head travel those stretches cover
     double narrowest = 0.0;  // m of head travel: the narrowest stretch bounded
+    // "lipschitz bound" when every stretch was bounded (ratio_hi holds over the whole window),
+    // else "lipschitz bound, incomplete" (ratio_hi is +inf: only the lower end is claimed).
+    const char* method() const { return unproved == 0 ? "lipschitz bound" : "lipschitz bound, incomplete"; }
 };
 
 // How max_head_speed searches: the coarse scan's density, and whether to prove the maximum.

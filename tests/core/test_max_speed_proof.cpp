@@ -39,6 +39,7 @@ void check_enclosure(const Scenario& sc, const MaxSpeed& m) {
     const MaxSpeedProof& p = *m.proof;
     ASSERT_TRUE(p.proved) << p.unproved << " stretches unproved";
     EXPECT_EQ(p.unproved, 0);
+    EXPECT_STREQ(p.method(), "lipschitz bound");
     EXPECT_LE(p.ratio_lo, m.ratio);
     EXPECT_GE(p.ratio_hi, m.ratio);
     // (3) the bound is within the stated tolerance of the maximum found, and the found maximum
