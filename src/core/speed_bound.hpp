@@ -9,20 +9,23 @@
 //    link) lie in (-pi/2, pi/2), then F' = cos alpha / cos beta > 0 wherever F takes values in
 //    the rear arc, and F cannot leave that arc (it would have to come back with F' <= 0 at one
 //    of its ends): every handle is non-decreasing and stays on its arc for the whole stretch.
+//    Lemma A', for a handle that may stop or back up: while the rear stays in a candidate arc R
+//    where cos beta > 0, |F'| <= G = max |cos alpha| / min cos beta; if F's start value give or
+//    take G times the front's reach lies inside R, the rear never leaves R and stays within G
+//    times the front's reaches of both its end places.
 // 2. Angles over the stretch. alpha and beta differ from their values at x0 by at most the
 //    turning of the path over the handle's arc plus the turning of the link, which is at most
-//    2 asin((ds_i + ds_{i+1}) / 2d), ds the arcs' lengths (each end moves at most its arc's
-//    length).
+//    2 asin((r_i + r_{i+1}) / 2d), r the handles' reaches (each end moves at most that far);
+//    delta = alpha - beta by at most the two arcs' turnings. Enclosed by Taylor with remainder.
 // 3. Slopes (interval arithmetic on the derivative of the rigid-link relation). With
-//    g_i = cos alpha_i / cos beta_i, v_{i+1} = v_i g_i, psi the link's direction and kappa the
-//    path's signed curvature:
-//       psi' = (v_i sin alpha_i - v_{i+1} sin beta_i) / d,
-//       alpha' = kappa_i v_i - psi',  beta' = kappa_{i+1} v_{i+1} - psi',
-//       g' = g (-tan alpha alpha' + tan beta beta'),  v_{i+1}' = v_i' g + v_i g'
-//    (derivatives in head travel x), each enclosed over the stretch; |v_i'| <= L_i.
+//    g_i = cos alpha_i / cos beta_i, v_{i+1} = v_i g_i and kappa the path's signed curvature,
+//    g_i' / g_i = v_i E_i, E_i = -kappa_i tan alpha_i + kappa_{i+1} g_i tan beta_i
+//    + sin^2 delta_i / (d cos alpha_i cos^2 beta_i): while every handle so far moves forward the
+//    slopes of log v add link by link; past one that may stop, v_{i+1}' = v_i' g_i + v_i^2 H_i,
+//    H_i = g_i E_i (no cos alpha below the line). Derivatives in head travel x; |v_i'| <= L_i.
 // 4. Each speed is Lipschitz (piecewise C1: its derivative jumps only where a handle crosses a
 //    join, and the curvature's enclosure takes both sides), so on [x0, x1], h = x1 - x0:
-//       max v_i <= (v_i(x0) + v_i(x1) + L_i h) / 2.
+//       max |v_i| <= (|v_i(x0) + v_i(x1)| + L_i h) / 2.
 #pragma once
 
 #include <vector>
