@@ -169,6 +169,35 @@ struct RunClearance {
 RunClearance min_clearance(const Scenario& s, const RunWindow& window = kTurnaroundWindow,
                            const WorkProgress& progress = {}, Executor* executor = nullptr);
 
+// What Q5's proof established (docs/methods.md, section 10.1): branch and bound over head
+// travel, each stretch of the window bounded from the chain at its two ends (a slope bound from
+// interval arithmetic on the rigid-link relation), stretches split until every bound is within
+// `tolerance` of the largest ratio found.
+struct MaxSpeedProof {
+    bool proved = false;    // every stretch of the window bounded: ratio_hi holds everywhere in it
+    double ratio_lo = 0.0;  // the largest ratio found at a point, less its rounding error: the maximum is at least this
+    double ratio_hi = 0.0;  // no handle's ratio exceeds this anywhere in the window (+inf when not proved)
+    double max_head_speed_lo = 0.0;  // limit / ratio_hi, m/s (0 when not proved): every head speed up to it keeps to the limit
+    double max_head_speed_hi = 0.0;  // limit / ratio_lo, m/s: any faster and some handle breaks it
+    double tolerance = 0.0;  // relative: stretches are split until their bound is within this of the best found
+    int stretches = 0;      // stretches bounded (the branch and bound's leaves)
+    int subdivisions = 0;   // stretches split in two
+    int evaluations = 0;    // chains the proof solved beyond the scan's
+    int unproved = 0;       // stretches left unbounded: a handle moving back at one of its ends (the method needs
+                            // every handle moving forward), or split down to 1e-11 m, or past the work cap
+    double unproved_travel = 0.0;  // m of head travel those stretches cover
+    double narrowest = 0.0;  // m of head travel: the narrowest stretch bounded
+    // "lipschitz bound" when every stretch was bounded (ratio_hi holds over the whole window),
+    // else "lipschitz bound, incomplete" (ratio_hi is +inf: only the lower end is claimed).
+    const char* method() const { return unproved == 0 ? "lipschitz bound" : "lipschitz bound, incomplete"; }
+};
+
+// How max_head_speed searches: the coarse scan's density, and whether to prove the maximum.
+struct MaxSpeedOptions {
+    bool prove = true;              // bound the maximum over the whole window (MaxSpeed::proof)
+    double samples_per_link = 32.0;  // coarse scan samples per shortest link length (tests make it coarse)
+};
+
 // Q5: the largest head speed with every handle at or under `limit`. The speed ratio
 // (largest handle speed over the head's) does not depend on the head speed, so it is maximised
 // over the head's arc position once; the answer is limit / ratio.
@@ -191,6 +220,10 @@ struct MaxSpeed {
     Searched window;
     std::optional<Jam> jam;   // the jam that cut the window, if one did
     bool unbounded = false;   // the handle racing at the jam: no head speed keeps to the limit
+    // The proof (when asked for, and not unbounded): `ratio` lies in [ratio_lo, ratio_hi] and
+    // max_head_speed in [max_head_speed_lo, max_head_speed_hi]. Points the proof evaluated count
+    // as found: `ratio` is the largest ratio the scan, its refinement or the proof saw.
+    std::optional<MaxSpeedProof> proof;
 };
 // Searches `window` of the turnaround run (the scenario's kind is taken as turnaround), in head
 // travel: everything but the times is the same at any head speed. Speeds are signed along the
@@ -198,7 +231,7 @@ struct MaxSpeed {
 // speed > 0, as cut_window does, and ("time range") for a window too long to scan. It runs on the
 // calling thread, and throws Cancelled when `executor` (if given) asks to stop.
 MaxSpeed max_head_speed(const Scenario& s, double limit, const RunWindow& window = kTurnaroundWindow,
-                        const Executor* executor = nullptr);
+                        const Executor* executor = nullptr, const MaxSpeedOptions& options = {});
 
 // The largest handle speed (magnitude) over the head speed at one head arc position, and which handle.
 struct SpeedRatio {

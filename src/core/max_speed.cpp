@@ -2,12 +2,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "golden_section.hpp"
 #include "make_path.hpp"
+#include "speed_bound.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/turnaround.hpp"
 
@@ -33,6 +35,34 @@ constexpr double kSamplesPerLink = 32.0;
 // (20 km of path) 9e7. Past the cap the scan would run for minutes or exhaust memory.
 constexpr double kMaxHandlePositions = 1e8;
 
+// The proof's stopping rule, relative: a stretch is done when its bound is within this of the
+// largest ratio found. 1e-9 of the ratio is 1e-9 of the head speed, far inside the printed
+// 6 decimals of m/s (1.2e-9 m/s at the contest's 1.25 m/s).
+constexpr double kProofTolerance = 1e-9;
+// m of head travel: stretches are not split below this (the chain's rounding, ~1e-14 m, is far
+// below it); one still unbounded counts as unproved.
+constexpr double kMinStretch = 1e-11;
+// Stretches the proof may split before giving up (each split solves one chain): a cap that
+// turns a bound that cannot close into an unproved answer instead of a hang.
+constexpr int kMaxSubdivisions = 200000;
+// The proof's first stretches, in scan steps: the bound's excess over the true maximum grows as
+// the square of a stretch's length (for the chain's tail, about 200 links times it), so a
+// stretch of 4 steps (0.2 m at the contest) is bounded well below the maximum nearly everywhere,
+// and costs a quarter of the chains' facts and bounds.
+constexpr int kScanStepsPerStretch = 1;
+
+// A stretch's bound as the branch and bound keeps it: the bound, or NaN where a shorter
+// stretch may be bounded.
+double bound_value(const speed::StretchBound& b) { return b.verdict == speed::BoundVerdict::bounded ? b.upper : NAN; }
+
+// The largest |speed| of a frame's handles (head speed 1) and the first handle reaching it.
+SpeedRatio ratio_of(const Frame& f) {
+    SpeedRatio best{std::abs(f.handles[0].speed), 0};
+    for (size_t i = 1; i < f.handles.size(); ++i)
+        if (std::abs(f.handles[i].speed) > best.ratio) best = {std::abs(f.handles[i].speed), static_cast<int>(i)};
+    return best;
+}
+
 class RatioProbe {
 public:
     RatioProbe(const Path& path, const BenchSpec& spec) : path_(path), spec_(spec) {}
@@ -40,10 +70,7 @@ public:
         ++evaluations;
         solve_chain(path_, spec_, s, 1.0, frame_);
         // Speeds are signed along the path (a handle may back up); the limit is on their size.
-        SpeedRatio best{std::abs(frame_.handles[0].speed), 0};
-        for (size_t i = 1; i < frame_.handles.size(); ++i)
-            if (std::abs(frame_.handles[i].speed) > best.ratio) best = {std::abs(frame_.handles[i].speed), static_cast<int>(i)};
-        return best;
+        return ratio_of(frame_);
     }
     int evaluations = 0;
 
@@ -66,7 +93,8 @@ SpeedRatio speed_ratio_at(const Path& path, const BenchSpec& spec, double head_a
     return probe(head_arc);
 }
 
-MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow& window, const Executor* executor) {
+MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow& window, const Executor* executor,
+                        const MaxSpeedOptions& options) {
     const InlineExecutor stop(executor);
     if (!std::isfinite(limit) || limit <= 0.0)
         throw InputError(Key::limit, error_value(limit), "it must be a finite speed > 0 m/s");
@@ -100,7 +128,9 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
     const double s0 = sim.start_arc() + cut.from, s1 = sim.start_arc() + cut.to;
     double shortest = s.bench.link_length(1);
     if (s.bench.bench_count > 1) shortest = std::min(shortest, s.bench.link_length(2));
-    const double samples = std::ceil((s1 - s0) * kSamplesPerLink / shortest);
+    if (!(options.samples_per_link > 0.0) || !std::isfinite(options.samples_per_link))
+        throw std::invalid_argument("max_head_speed: samples_per_link must be finite and > 0");
+    const double samples = std::ceil((s1 - s0) * options.samples_per_link / shortest);
     if (!(samples * s.bench.handle_count() <= kMaxHandlePositions))
         throw InputError(Key::time_range, fmt::format("{}..{} m of head travel", cut.from, cut.to),
                          fmt::format("the scan would solve {:.3g} chains of {} handles (at most {:.0e} handle "
@@ -109,9 +139,31 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
     const double ds = (s1 - s0) / steps;
 
     std::vector<double> rho(static_cast<size_t>(steps) + 1);
-    for (int k = 0; k <= steps; ++k) {
-        if (k % 256 == 0) check_stop(stop);
-        rho[static_cast<size_t>(k)] = probe(k == steps ? s1 : s0 + k * ds).ratio;
+    // With the proof, each stretch between samples is bounded as the scan passes (the chain at
+    // both its ends is at hand): upper[j] bounds the j-th stretch of kScanStepsPerStretch scan steps,
+    // NaN where no bound holds.
+    std::vector<double> upper;
+    if (options.prove) {
+        upper.resize(static_cast<size_t>((steps + kScanStepsPerStretch - 1) / kScanStepsPerStretch));
+        Frame f;
+        speed::ChainFacts facts[2];
+        for (int k = 0; k <= steps; ++k) {
+            if (k % 256 == 0) check_stop(stop);
+            solve_chain(path, s.bench, k == steps ? s1 : s0 + k * ds, 1.0, f);
+            ++probe.evaluations;
+            rho[static_cast<size_t>(k)] = ratio_of(f).ratio;
+            if (k % kScanStepsPerStretch != 0 && k != steps) continue;
+            const int j = (k + kScanStepsPerStretch - 1) / kScanStepsPerStretch;  // the stretch this ends
+            speed::gather(path, f, facts[j % 2]);
+            if (k == 0) continue;
+            const speed::StretchBound b = speed::bound_stretch(path, s.bench, facts[(j + 1) % 2], facts[j % 2]);
+            upper[static_cast<size_t>(j) - 1] = bound_value(b);
+        }
+    } else {
+        for (int k = 0; k <= steps; ++k) {
+            if (k % 256 == 0) check_stop(stop);
+            rho[static_cast<size_t>(k)] = probe(k == steps ? s1 : s0 + k * ds).ratio;
+        }
     }
 
     // Refine every coarse local maximum that could still beat the best sample: between samples
@@ -154,6 +206,69 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
             }
         }
     }
+    double proof_hi = 0.0;  // the largest bound the proof accepted
+    if (options.prove) {
+        out.proof = MaxSpeedProof{};
+        MaxSpeedProof& proof = *out.proof;
+        proof.tolerance = kProofTolerance;
+        proof.narrowest = ds;
+        // A stretch [a, b] whose bound `top` (NaN: none) is not yet within the tolerance: split
+        // it at its middle, the chain solved there counting as found, until each part's is.
+        const auto done = [&](double top) { return top <= out.ratio * (1.0 + kProofTolerance); };
+        const auto bound = [&](const speed::ChainFacts& c0, const speed::ChainFacts& c1) {
+            return bound_value(speed::bound_stretch(path, s.bench, c0, c1));
+        };
+        const auto settle = [&](auto& self, const speed::ChainFacts& ca, const speed::ChainFacts& cb, double top) -> void {
+            const double a = ca.head_arc, b = cb.head_arc;
+            if (done(top)) {
+                proof_hi = std::max(proof_hi, top);
+                ++proof.stretches;
+                proof.narrowest = std::min(proof.narrowest, b - a);
+                return;
+            }
+            if (b - a < kMinStretch || proof.subdivisions >= kMaxSubdivisions) {
+                ++proof.unproved;
+                proof.unproved_travel += b - a;
+                return;
+            }
+            if (proof.subdivisions % 256 == 0) check_stop(stop);
+            ++proof.subdivisions;
+            const double m = 0.5 * (a + b);
+            Frame mid;
+            solve_chain(path, s.bench, m, 1.0, mid);
+            ++proof.evaluations;
+            const SpeedRatio r = ratio_of(mid);
+            if (r.ratio > out.ratio) {
+                out.ratio = r.ratio;
+                out.handle = r.handle;
+                out.head_arc = m;
+            }
+            speed::ChainFacts cm;
+            speed::gather(path, mid, cm);
+            const double tl = bound(ca, cm), tr = bound(cm, cb);
+            self(self, ca, cm, tl);
+            self(self, cm, cb, tr);
+        };
+        Frame fa, fb;
+        speed::ChainFacts ca, cb;
+        for (size_t j = 0; j < upper.size(); ++j) {
+            const double top = upper[j];
+            if (done(top)) {
+                proof_hi = std::max(proof_hi, top);
+                ++proof.stretches;
+                continue;
+            }
+            const int k = static_cast<int>(j) * kScanStepsPerStretch, next = k + kScanStepsPerStretch;
+            const double a = s0 + k * ds, b = next >= steps ? s1 : s0 + next * ds;
+            solve_chain(path, s.bench, a, 1.0, fa);
+            solve_chain(path, s.bench, b, 1.0, fb);
+            proof.evaluations += 2;
+            speed::gather(path, fa, ca);
+            speed::gather(path, fb, cb);
+            settle(settle, ca, cb, top);
+        }
+        probe.evaluations += proof.evaluations;
+    }
     // Handles on one arc all move at the same speed: report every one that ties, and the first.
     Frame f;
     solve_chain(path, s.bench, out.head_arc, 1.0, f);
@@ -164,6 +279,20 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
     out.travel = out.head_arc - sim.start_arc();
     out.time = out.travel / v;
     out.max_head_speed = limit / out.ratio;
+    if (out.proof) {
+        MaxSpeedProof& proof = *out.proof;
+        proof.proved = proof.unproved == 0;
+        proof.ratio_lo = out.ratio * (1.0 - speed::ratio_error(f, out.handle));
+        // Each quotient rounded outward by an ulp.
+        proof.max_head_speed_hi = std::nextafter(limit / proof.ratio_lo, INFINITY);
+        if (proof.proved) {
+            proof.ratio_hi = std::max(out.ratio, proof_hi);
+            proof.max_head_speed_lo = std::nextafter(limit / proof.ratio_hi, 0.0);
+        } else {
+            proof.ratio_hi = std::numeric_limits<double>::infinity();
+            proof.max_head_speed_lo = 0.0;
+        }
+    }
     out.evaluations = probe.evaluations;
     return out;
 }

@@ -1,5 +1,5 @@
 // The turnaround path's costs: the result4 table (201 frames x 224 handles), one chord search,
-// and the Q5 search.
+// and the Q5 search (proved, and sampled alone).
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -75,5 +75,15 @@ void BM_TurnaroundMaxSpeed(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(max_head_speed(sc, 2.0));
 }
 BENCHMARK(BM_TurnaroundMaxSpeed)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// The same search without its proof (MaxSpeedOptions::prove off): the scan and its refinement
+// alone, as it was before the maximum was enclosed.
+void BM_TurnaroundMaxSpeedSampled(benchmark::State& state) {
+    const Scenario sc = turnaround();
+    MaxSpeedOptions o;
+    o.prove = false;
+    for (auto _ : state) benchmark::DoNotOptimize(max_head_speed(sc, 2.0, kTurnaroundWindow, nullptr, o));
+}
+BENCHMARK(BM_TurnaroundMaxSpeedSampled)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace

@@ -1,0 +1,87 @@
+// An upper bound on every handle's speed ratio over a whole stretch of head travel, from the
+// chain at the stretch's two ends alone (docs/methods.md, section 10.1). Q5's maximum is
+// enclosed by branch and bound on these.
+//
+// 1. Handles move forward (Lemma A). Each link's rear handle is a function F of its front
+//    handle's arc position alone (the nearest root behind it). If, for every placing of the
+//    front handle on its arc [s_i(x0), s_i(x1)] and the rear on [s_{i+1}(x0), s_{i+1}(x1)] a
+//    link apart, both angles alpha (front tangent to the link) and beta (rear tangent to the
+//    link) lie in (-pi/2, pi/2), then F' = cos alpha / cos beta > 0 wherever F takes values in
+//    the rear arc, and F cannot leave that arc (it would have to come back with F' <= 0 at one
+//    of its ends): every handle is non-decreasing and stays on its arc for the whole stretch.
+//    Lemma A', for a handle that may stop or back up: while the rear stays in a candidate arc R
+//    where cos beta > 0, |F'| <= G = max |cos alpha| / min cos beta; if F's start value give or
+//    take G times the front's reach lies inside R, the rear never leaves R and stays within G
+//    times the front's reaches of both its end places.
+// 2. Angles over the stretch. alpha and beta differ from their values at x0 by at most the
+//    turning of the path over the handle's arc plus the turning of the link, which is at most
+//    2 asin((r_i + r_{i+1}) / 2d), r the handles' reaches (each end moves at most that far);
+//    delta = alpha - beta by at most the two arcs' turnings. Enclosed by Taylor with remainder.
+// 3. Slopes (interval arithmetic on the derivative of the rigid-link relation). With
+//    g_i = cos alpha_i / cos beta_i, v_{i+1} = v_i g_i and kappa the path's signed curvature,
+//    g_i' / g_i = v_i E_i, E_i = -kappa_i tan alpha_i + kappa_{i+1} g_i tan beta_i
+//    + sin^2 delta_i / (d cos alpha_i cos^2 beta_i): while every handle so far moves forward the
+//    slopes of log v add link by link; past one that may stop, v_{i+1}' = v_i' g_i + v_i^2 H_i,
+//    H_i = g_i E_i (no cos alpha below the line). Derivatives in head travel x; |v_i'| <= L_i.
+// 4. Each speed is Lipschitz (piecewise C1: its derivative jumps only where a handle crosses a
+//    join, and the curvature's enclosure takes both sides), so on [x0, x1], h = x1 - x0:
+//       max |v_i| <= (|v_i(x0) + v_i(x1)| + L_i h) / 2.
+#pragma once
+
+#include <vector>
+
+#include "dragon/chain.hpp"
+#include "dragon/path.hpp"
+#include "dragon/scenario.hpp"
+
+namespace dragon::speed {
+
+// rad: angles of links with tangents must stay this far inside (-pi/2, pi/2) for Lemma A; far
+// above the rounding of the computed angles (~1e-15 rad) and of Path::turning (~1e-15 rad).
+inline constexpr double kAngleMargin = 1e-9;
+// rad: added to every angle's enclosure: the computed handles are exact to ~1e-14 m
+// (tol::newton_step) on links of at least ~1 m, so each computed angle is within ~1e-14 rad of
+// the true one; 1e-12 is 100 times that.
+inline constexpr double kAngleSlack = 1e-12;
+// rad: the error of a link angle computed from the chain's handles (~1e-14 m each, on links of
+// at least ~1 m) and tangents (a few ulps), taken 5 times over: a computed speed ratio v_i is
+// then within kAngleError * sum_{k<i} (|tan alpha_k| + |tan beta_k|) plus 8 i ulps (relative)
+// of the true one (each factor g = cos alpha / cos beta moves by |tan| times its angles' errors).
+inline constexpr double kAngleError = 1e-13;
+
+enum class BoundVerdict {
+    bounded,       // every handle's speed ratio is bounded over the stretch
+    not_monotone,  // a rear tangent may turn square to its link, or a link turn too far: a shorter stretch may be bounded
+};
+
+struct StretchBound {
+    BoundVerdict verdict = BoundVerdict::bounded;
+    // The largest speed ratio |v_i| / v_0 of any handle anywhere in the stretch is at most this
+    // (the computed end speeds' errors included, by kAngleError's model), when bounded.
+    double upper = 0.0;
+    int handle = 0;  // the handle whose bound set `upper`
+};
+
+// The relative error of the computed speed ratios of `f`'s handles up to `handle`, by the model
+// of kAngleError.
+double ratio_error(const Frame& f, int handle);
+
+// What a bound needs of one end of a stretch, gathered once per chain solved (a frame ends one
+// stretch and begins the next).
+struct ChainFacts {
+    double head_arc = 0.0;       // m
+    std::vector<Place> place;    // each handle's
+    std::vector<double> kappa;   // the path's signed curvature at each handle, 1/m
+    std::vector<double> speed;   // each handle's signed speed at head speed 1
+    // Per link i (handles i and i + 1, u the unit link from rear to front): cos and sin of alpha
+    // (from u to the front tangent) and of beta (from u to the rear tangent).
+    std::vector<double> cos_a, sin_a, cos_b, sin_b;
+};
+// Gathers f's facts (f solved at head speed 1).
+void gather(const Path& path, const Frame& f, ChainFacts& out);
+
+// The bound over head travel between the chains c0 and c1 (c0 behind, both of the same chain on
+// `path` at head speed 1, every moment between them within the valid motion).
+StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainFacts& c0, const ChainFacts& c1);
+
+}  // namespace dragon::speed
