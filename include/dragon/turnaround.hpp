@@ -194,7 +194,9 @@ struct MaxSpeedProof {
 
 // How max_head_speed searches: the coarse scan's density, and whether to prove the maximum.
 struct MaxSpeedOptions {
-    bool prove = true;              // bound the maximum over the whole window (MaxSpeed::proof)
+    // Bound the maximum over the whole window (MaxSpeed::proof; dragon max-speed --prove). Opt-in
+    // as the first contact's proof is: it costs about three times the search.
+    bool prove = false;
     double samples_per_link = 32.0;  // coarse scan samples per shortest link length (tests make it coarse)
 };
 

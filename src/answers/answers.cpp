@@ -176,6 +176,25 @@ Json max_speed_answer(const MaxSpeed& m, double limit) {
     answer["scan_travel"] = m.unbounded ? Json(nullptr) : Json(m.scan_travel);
     answer["candidates"] = m.candidates;
     answer["evaluations"] = m.evaluations;
+    // What is proved: with the proof asked for, the largest head speed's enclosure (every head
+    // speed up to its lower end keeps to the limit; any over its upper end does not) and how the
+    // branch and bound went; without it, the maximum is the scan's and its refinement's.
+    if (m.proof && !m.unbounded) {
+        const MaxSpeedProof& p = *m.proof;
+        answer["enclosure"] = p.proved && !m.jam ? Json::array({p.max_head_speed_lo, p.max_head_speed_hi}) : Json(nullptr);
+        answer["proof"] = {{"method", p.method()},
+                           {"ratio", {p.ratio_lo, p.proved ? Json(p.ratio_hi) : Json(nullptr)}},
+                           {"tolerance", p.tolerance},
+                           {"stretches", p.stretches},
+                           {"subdivisions", p.subdivisions},
+                           {"evaluations", p.evaluations},
+                           {"unproved", p.unproved},
+                           {"unproved_travel", p.unproved_travel},
+                           {"narrowest", p.narrowest}};
+    } else {
+        answer["enclosure"] = nullptr;
+        answer["proof"] = {{"method", "sampled"}};
+    }
     return answer;
 }
 

@@ -98,7 +98,11 @@ Json max_speed_measure(const Scenario& s, const MeasureOptions& options, std::st
         jam = v.unbounded ? fmt::format("no head speed keeps every handle at or under {} m/s: {}", options.limit,
                                         jam_sentence(*v.jam))
                           : "searched only as far as " + jam_sentence(*v.jam);
-    return max_speed_answer(v, options.limit);
+    // The command's keys but how the search went ("enclosure", "proof"), as collide's.
+    Json answer = max_speed_answer(v, options.limit);
+    answer.erase("enclosure");
+    answer.erase("proof");
+    return answer;
 }
 
 }  // namespace

@@ -135,3 +135,30 @@ TEST(CliOneAnswer, TablesPastTheFirstContactSaySo) {
     const dragon_test::CliRun before = run_dragon("simulate --from 400 --to 410");
     EXPECT_TRUE(before.err.empty()) << before.err;
 }
+
+// max-speed --prove: the JSON's enclosure holds the answer and prints as it does to the six
+// decimals the text gives; the human output says it in a line; without --prove the answer is
+// the same number and says it is sampled.
+TEST(CliOneAnswer, TheProvedLargestSpeedEnclosesTheSampledOne) {
+    const auto proved = run_dragon("max-speed --prove --json");
+    ASSERT_EQ(proved.code, 0) << proved.err;
+    const json p = json::parse(proved.out);
+    const double lo = p.at("enclosure").at(0).get<double>(), hi = p.at("enclosure").at(1).get<double>();
+    const double v = p.at("max_head_speed").get<double>();
+    EXPECT_LE(lo, v);
+    EXPECT_GE(hi, v);
+    EXPECT_LT(hi - lo, 1e-6);
+    EXPECT_EQ(p.at("proof").at("method"), "lipschitz bound");
+    EXPECT_EQ(p.at("proof").at("unproved"), 0);
+    const auto sampled = run_dragon("max-speed --json");
+    ASSERT_EQ(sampled.code, 0) << sampled.err;
+    const json s = json::parse(sampled.out);
+    EXPECT_EQ(s.at("proof").at("method"), "sampled");
+    EXPECT_TRUE(s.at("enclosure").is_null());
+    // The proof's points count as found: its ratio is at least the scan's, its speed at most.
+    EXPECT_LE(v, s.at("max_head_speed").get<double>());
+    EXPECT_LE(lo, s.at("max_head_speed").get<double>());
+    const auto text = run_dragon("max-speed --prove");
+    EXPECT_TRUE(contains(text.out, "proved: the largest head speed lies in [")) << text.out;
+    EXPECT_TRUE(contains(run_dragon("max-speed").out, "not proved: the maximum is the coarse scan's")) << text.out;
+}

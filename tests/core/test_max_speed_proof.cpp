@@ -23,6 +23,9 @@ Scenario turnaround_scenario(double arc_ratio = 2.0, double turn_pitch = 1.7) {
     return s;
 }
 
+// The search asked to prove its maximum (it is opt-in: dragon max-speed --prove).
+const MaxSpeedOptions kProve{true};
+
 // The largest ratio on [from, to] in steps of `step`, m of head arc.
 double dense_max(const Path& path, const BenchSpec& bench, double from, double to, double step) {
     double best = 0.0;
@@ -75,7 +78,7 @@ void check_enclosure(const Scenario& sc, const MaxSpeed& m) {
 
 TEST(MaxSpeedProof, EnclosesTheContestsMaximumWithinTheTolerance) {
     const Scenario sc = turnaround_scenario();
-    const MaxSpeed m = max_head_speed(sc, 2.0);
+    const MaxSpeed m = max_head_speed(sc, 2.0, kTurnaroundWindow, nullptr, kProve);
     check_enclosure(sc, m);
     const MaxSpeedProof& p = *m.proof;
     EXPECT_GT(p.stretches, 0);
@@ -87,7 +90,7 @@ TEST(MaxSpeedProof, EnclosesTheContestsMaximumWithinTheTolerance) {
 
 TEST(MaxSpeedProof, TheSearchWithoutTheProofFindsTheSameMaximum) {
     const Scenario sc = turnaround_scenario();
-    const MaxSpeed proved = max_head_speed(sc, 2.0);
+    const MaxSpeed proved = max_head_speed(sc, 2.0, kTurnaroundWindow, nullptr, kProve);
     MaxSpeedOptions plain;
     plain.prove = false;
     const MaxSpeed sampled = max_head_speed(sc, 2.0, kTurnaroundWindow, nullptr, plain);
@@ -104,7 +107,7 @@ TEST(MaxSpeedProof, EnclosesRandomScenariosMaxima) {
     for (int trial = 0; trial < 5; ++trial) {
         const Scenario sc = turnaround_scenario(ratio(rng), pitch(rng));
         SCOPED_TRACE(fmt::format("arc_ratio {} turn_pitch {}", sc.path.arc_ratio, sc.path.turn_pitch));
-        const MaxSpeed m = max_head_speed(sc, 2.0);
+        const MaxSpeed m = max_head_speed(sc, 2.0, kTurnaroundWindow, nullptr, kProve);
         if (m.unbounded) continue;  // no head speed will do: nothing to enclose
         check_enclosure(sc, m);
         ++checked;
@@ -116,7 +119,7 @@ TEST(MaxSpeedProof, EnclosesRandomScenariosMaxima) {
 // handles' arcs come from the slope bound of Lemma A', not from their end places.
 TEST(MaxSpeedProof, EnclosesTheMaximumWhereAHandleBacksUp) {
     const Scenario sc = turnaround_scenario(2.8, 1.7);
-    const MaxSpeed m = max_head_speed(sc, 2.0);
+    const MaxSpeed m = max_head_speed(sc, 2.0, kTurnaroundWindow, nullptr, kProve);
     ASSERT_FALSE(m.unbounded);
     const TurnaroundPath path(design_s_curve(sc));
     const double start = m.head_arc - m.travel;
@@ -135,7 +138,7 @@ TEST(MaxSpeedProof, EnclosesTheMaximumWhereAHandleBacksUp) {
 // its way to the peak and encloses the true maximum.
 TEST(MaxSpeedProof, FindsAPeakTheCoarseScanMissed) {
     const Scenario sc = turnaround_scenario();
-    const MaxSpeed reference = max_head_speed(sc, 2.0);
+    const MaxSpeed reference = max_head_speed(sc, 2.0, kTurnaroundWindow, nullptr, kProve);
     MaxSpeedOptions coarse;
     coarse.samples_per_link = 0.1;
     coarse.prove = false;
