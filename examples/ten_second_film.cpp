@@ -12,7 +12,6 @@ int main(int argc, char** argv) {
     dragon::VideoOptions options;
     options.width = 640;
     options.height = 360;
-    dragon::quiet_codec_logs();
     const dragon::EncodeStats stats = dragon::write_video(film, out, options);
     std::printf("wrote %s: %d frames\n", out, stats.frames);
     return 0;

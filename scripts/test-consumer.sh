@@ -10,7 +10,8 @@ trap 'rm -rf "$work"' EXIT
 cmake --install build --prefix "$work/prefix" >/dev/null
 
 cmake -S examples -B "$work/core" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" -DEXAMPLES_CORE_ONLY=ON >/dev/null
-cmake --build "$work/core" >/dev/null
+built=$(cmake --build "$work/core" 2>&1) \
+  || { echo "test-consumer: the core example does not build against the installed package:" >&2; echo "$built" >&2; exit 1; }
 if ldd "$work/core/frame_handles" | grep -Ei 'cairo|avcodec|avformat|avutil|swscale|libz\.'; then
   echo "test-consumer: the core example links a library of another component (above)" >&2
   exit 1
@@ -37,7 +38,8 @@ probe=$(PKG_CONFIG_LIBDIR="$work/pc" cmake -S "$work/probe" -B "$work/probe/buil
   || { echo "test-consumer: find_package(benchdragon COMPONENTS core) failed without FFmpeg:" >&2; echo "$probe" >&2; exit 1; }
 
 cmake -S examples -B "$work/all" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
-cmake --build "$work/all" >/dev/null
+built=$(cmake --build "$work/all" 2>&1) \
+  || { echo "test-consumer: the examples do not build against the installed package:" >&2; echo "$built" >&2; exit 1; }
 (cd "$work" && "$work/all/moment_png" "$work/moment.png" >/dev/null && "$work/all/ten_second_film" "$work/film.mp4" >/dev/null)
 test -s "$work/moment.png" && test -s "$work/film.mp4" \
   || { echo "test-consumer: an example wrote no file" >&2; exit 1; }
