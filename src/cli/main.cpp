@@ -77,7 +77,8 @@ int main(int argc, char** argv) {
         if (!stdout_intact()) return stdout_failed(errno);
         if (code == 0) {
             outputs.commit();
-            for (const std::string& line : run.wrote_lines) say(stderr, line);  // now that it is true
+            // "wrote ...", now that it is true (each line already shown as one: ToolRun::wrote)
+            for (const std::string& line : run.wrote_lines) std::fprintf(stderr, "%s\n", line.c_str());
         }
     } catch (const InputError& e) {
         say(stderr, "dragon: error: " + cli::word(e));
