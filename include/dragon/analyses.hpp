@@ -190,6 +190,22 @@ struct PitchJam {
     double pitch;  // m
     Jam jam;       // where the valid motion ended at that pitch
 };
+// What min_pitch proved of its feasible intervals (MinPitchOptions::prove; docs/methods.md,
+// section 8.1): every pitch in each `proved` range reaches the boundary with no two benches
+// touching, by enclosures over cells of head radius and pitch; the `unproved` ranges (within
+// kPitchProofFinest of a change of feasibility, or where a link spans more than a quarter turn)
+// rest on the runs at the pitches probed. The infeasible intervals rest on those runs too.
+struct PitchProof {
+    std::vector<PitchInterval> proved;    // m: ranges of pitches proved feasible (feasible = true)
+    std::vector<PitchInterval> unproved;  // m: parts of feasible intervals not proved
+    int cells = 0;          // cells of head radius and pitch proved contact-free
+    int pitch_ranges = 0;   // ranges of pitches marched from the start in to the boundary
+    int subdivisions = 0;   // cells taken again smaller (a shorter radius step, or half the pitches)
+    double least_gap = INFINITY;  // m: the least separation proved (at most 0.05 m)
+    // "enclosure cells" (every feasible pitch proved), or "enclosure cells, incomplete".
+    const char* method() const { return unproved.empty() ? "enclosure cells" : "enclosure cells, incomplete"; }
+};
+
 // Q3's answer: the smallest feasible pitch and the feasibility of the whole range searched.
 struct MinPitch {
     // The smallest feasible pitch: where the first feasible interval begins, when that is a
@@ -213,6 +229,7 @@ struct MinPitch {
     // run was cut short.
     std::optional<PitchJam> jam;
     double tolerance;                      // each change of feasibility located to this, m
+    std::optional<PitchProof> proof;       // what was proved (MinPitchOptions::prove), else none
 };
 // The run of the head to the boundary at one pitch: its first contact, else the end of the
 // valid motion if that comes before the boundary. Feasible when neither happens.
@@ -241,6 +258,9 @@ struct MinPitchOptions {
     double grid = kDefaultPitchGrid;  // the first scan's pitch spacing, m
     WorkProgress progress;         // hears of the first scan's runs, one call per run
     Executor* executor = nullptr;  // runs the pitches in parallel; null: the calling thread alone
+    // Prove every pitch of the feasible intervals feasible (MinPitch::proof; dragon min-pitch
+    // --prove), not only the pitches run. Opt-in: it costs several times the search.
+    bool prove = false;
 };
 // The answer and any error are the same whatever the executor and its size (the pitches run
 // are fixed in advance; an error is the one of the smallest pitch that failed). Throws

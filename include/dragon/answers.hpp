@@ -47,6 +47,11 @@ Json collide_answer(const CollideAnswer& a, bool with_handles);
 // {"pitch", "below_range", "above_range", "turn_radius", "search", "grid", "intervals", "jam",
 // "guarantee"}; the jam, if any, has the pitch it was met at.
 Json min_pitch_answer(const MinPitch& m, double turn_radius);
+// What min_pitch proved: {"method" ("enclosure cells", "enclosure cells, incomplete", or "runs"
+// when not asked to prove), "proved": [[lo, hi], ...] (m, every pitch inside feasible),
+// "unproved": the feasible intervals' parts left to the runs (null when not asked), "cells",
+// "pitch_ranges", "subdivisions", "least_separation" (m, or null)}.
+Json pitch_proof_json(const std::optional<PitchProof>& p);
 // The S-curve's design, whether this dragon can follow it, the first contact and the clearance
 // up to it if the check was run ("first_contact": contact_json or null; "clearance": the
 // smallest clearance before it, with the window searched), and the length study if given (the

@@ -97,6 +97,23 @@ Json collide_answer(const CollideAnswer& r, bool with_handles) {
     return answer;
 }
 
+Json pitch_proof_json(const std::optional<PitchProof>& p) {
+    const auto ranges = [](const std::vector<PitchInterval>& v) {
+        Json out = Json::array();
+        for (const PitchInterval& i : v) out.push_back({i.lo, i.hi});
+        return out;
+    };
+    if (!p) return {{"method", "runs"}, {"proved", Json::array()}, {"unproved", nullptr}, {"cells", 0},
+                    {"pitch_ranges", 0}, {"subdivisions", 0}, {"least_separation", nullptr}};
+    return {{"method", p->method()},
+            {"proved", ranges(p->proved)},
+            {"unproved", ranges(p->unproved)},
+            {"cells", p->cells},
+            {"pitch_ranges", p->pitch_ranges},
+            {"subdivisions", p->subdivisions},
+            {"least_separation", std::isfinite(p->least_gap) ? Json(p->least_gap) : Json(nullptr)}};
+}
+
 Json min_pitch_answer(const MinPitch& m, double turn_radius) {
     Json intervals = Json::array();
     for (const PitchInterval& i : m.intervals) intervals.push_back({{"lo", i.lo}, {"hi", i.hi}, {"feasible", i.feasible}});
@@ -110,7 +127,8 @@ Json min_pitch_answer(const MinPitch& m, double turn_radius) {
             {"grid", m.grid},
             {"intervals", intervals},
             {"jam", jam},
-            {"guarantee", min_pitch_guarantee(m)}};
+            {"guarantee", min_pitch_guarantee(m)},
+            {"proof", pitch_proof_json(m.proof)}};
 }
 
 Json turnaround_answer(const SCurve& d, const std::optional<Jam>& design_jam, const std::optional<RunClearance>& clear,

@@ -32,8 +32,30 @@ struct MinPitchOptions {
     std::optional<double> lo, hi;  // unset: the scenario's default range (pitch_search_range)
     double grid = kDefaultPitchGrid;
     bool json = false;
+    bool prove = false;
     bool quiet = false;
 };
+
+// What the search proved, in words: one line.
+std::string proof_line(const MinPitch& m) {
+    if (!m.proof) return "not proved between the pitches run (--prove proves every pitch of the feasible intervals)\n";
+    const PitchProof& p = *m.proof;
+    std::string out = "proved: every pitch in ";
+    for (size_t k = 0; k < p.proved.size(); ++k)
+        out += fmt::format("{}[{:.10f}, {:.10f}]", k == 0 ? "" : k + 1 == p.proved.size() ? " and " : ", ",
+                           p.proved[k].lo, p.proved[k].hi);
+    if (p.proved.empty()) out = "proved: no pitch";
+    out += fmt::format(" m reaches the boundary with no contact ({} cells of head radius and pitch enclosed", p.cells);
+    if (std::isfinite(p.least_gap)) out += fmt::format(", least separation proved {:.3g} m", p.least_gap);
+    out += ")";
+    if (!p.unproved.empty()) {
+        out += "; not proved: ";
+        for (size_t k = 0; k < p.unproved.size(); ++k)
+            out += fmt::format("{}[{:.10f}, {:.10f}]", k == 0 ? "" : ", ", p.unproved[k].lo, p.unproved[k].hi);
+        out += " m (rests on the runs at the pitches probed)";
+    }
+    return out + "; the intervals that collide rest on the runs at the pitches probed\n";
+}
 }  // namespace
 
 void register_min_pitch(CLI::App& app, Registry& reg) {
@@ -46,6 +68,9 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
     sub->add_option("--hi", opt->hi, "Largest pitch searched, m (default 0.55, or 1.5 times --lo's default)");
     sub->add_option("--grid", opt->grid,
                     "Pitch spacing of the first scan, m (default 0.0025); windows narrower than this may pass unseen");
+    sub->add_flag("--prove", opt->prove,
+                  "Prove every pitch of the collision-free intervals, not only the pitches run: enclose the benches "
+                  "over cells of head radius and pitch (slower)");
     sub->add_flag("--json", opt->json, "Print one JSON object on stdout");
     add_quiet_flag(sub, opt->quiet);
     reg.runners["min-pitch"] = [opt](ToolRun& run) {
@@ -64,6 +89,7 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
             dragon::MinPitchOptions options;
             options.grid = opt->grid;
             options.executor = &ex;
+            options.prove = opt->prove;
             options.progress = [&progress](std::int64_t done, std::int64_t total) { progress.update(done, total); };
             return min_pitch(s, range.lo, range.hi, options);
         }();
@@ -89,6 +115,7 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
             fmt::print("at pitch {} m (the largest of the scan where this happens) the dragon cannot follow the spiral "
                        "to radius {} m at all: {}\n", m.jam->pitch, s.path.turn_radius, jam_sentence(m.jam->jam));
         fmt::print("search: {}\n", min_pitch_guarantee(m));
+        fmt::print("{}", proof_line(m));
         return 0;
     };
 }

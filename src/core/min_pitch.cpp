@@ -12,6 +12,7 @@
 
 #include "golden_section.hpp"
 #include "make_path.hpp"
+#include "pitch_proof.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/constants.hpp"
 
@@ -286,6 +287,7 @@ MinPitch min_pitch(const Scenario& scenario, double lo, double hi, const MinPitc
                                std::abs(std::nextafter(j.time, INFINITY) - j.time));
     }
     out.tolerance = tol::pitch;
+    if (options.prove) out.proof = prove_feasible_pitches(s, out.intervals, ex);
     return out;
 }
 

@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 
+#include "untouched_tail.hpp"
+#include "dragon/constants.hpp"
 #include "dragon/geometry.hpp"
 #include "dragon/portable_math.hpp"
 
@@ -94,6 +97,177 @@ double chain_gap(const Turning& turning, const BenchSpec& spec, const Frame& f0,
 
 }  // namespace
 
+namespace {
+
+// No pair is taken as apart before its enclosures are looked at (prove_step's proofs).
+constexpr auto kNotSeparately = [](size_t, size_t) { return false; };
+// Relative: the offsets' bounds are widened by this (bench_reach's own slack is 1e-9 of them;
+// this one covers the rounding of the radii passed to it, a few ulps).
+constexpr double kOffsetSlack = 1e-9;
+
+// Every bench's enclosures on the spiral (ws.benches, one set of nb per corner): bench k's
+// handles at polar offsets D from the head between their values in fa and fb, its link's span
+// between its two values, the spiral's b and the head's angle T those of each corner.
+void enclose_on_spiral(const BenchSpec& spec, const Frame& fa, const Frame& fb, std::span<const SpiralCorner> corners,
+                       SweptWorkspace& ws) {
+    const size_t nb = std::min(fa.benches.size(), fb.benches.size());
+    ws.benches.resize(corners.size() * nb);
+    ws.directions.resize(6 * nb);
+    for (size_t t = 0; t < corners.size(); ++t) {
+        const double T = corners[t].T, b = corners[t].b;
+        for (size_t k = 0; k < nb; ++k) {
+            // Bench k: its front handle at D in [d_lo, d_hi], its link's span alpha in
+            // [a_lo, a_hi]; the corners over that box are within the hull of their values at
+            // its four corners (bilinear interpolation) plus the interpolation's error,
+            // dD^2 / 8 max|c_DD| + da^2 / 8 max|c_aa|, where |P''| <= r + 2b for
+            // P(D) = b (T + D) (cos D, sin D).
+            const Place& front0 = fa.handles[k].place;
+            const Place& front1 = fb.handles[k].place;
+            const double d0 = front0.u - fa.handles[0].place.u, d1 = front1.u - fb.handles[0].place.u;
+            const double a0 = fa.handles[k + 1].place.u - front0.u, a1 = fb.handles[k + 1].place.u - front1.u;
+            const double d_lo = std::min(d0, d1), d_hi = std::max(d0, d1);
+            const double a_lo = std::min(a0, a1), a_hi = std::max(a0, a1);
+            const Rect& r = fa.benches[k];
+            const double link = spec.link_length(static_cast<int>(k) + 1);
+            const double r_max = b * (T + d_hi + a_hi) + 2.0 * b;  // bounds |P''| on the box
+            SweptWorkspace::Swept& sw = ws.benches[t * nb + k];
+            Vec2 Fs[4], Rs[4];  // the handles at the box's four corners (D, alpha)
+            Vec2* const e = &ws.directions[6 * k];  // their directions, the same at every corner
+            if (t == 0) {
+                Vec2* w = e;
+                w[0] = {math::cos(d_lo), math::sin(d_lo)};
+                w[1] = {math::cos(d_hi), math::sin(d_hi)};
+                for (size_t c = 0; c < 4; ++c) {
+                    const double D = c < 2 ? d_lo : d_hi, A = c % 2 == 0 ? a_lo : a_hi;
+                    w[2 + c] = {math::cos(D + A), math::sin(D + A)};
+                }
+            }
+            for (size_t c = 0; c < 4; ++c) {
+                const double D = c < 2 ? d_lo : d_hi, A = c % 2 == 0 ? a_lo : a_hi;
+                Fs[c] = b * (T + D) * e[c < 2 ? 0 : 1];
+                Rs[c] = b * (T + D + A) * e[2 + c];
+            }
+            size_t q = 0;
+            double worst = 0.0;
+            for (const double along : {-1.0, 1.0}) {
+                for (const double across : {-1.0, 1.0}) {
+                    const double cF = 0.5 + along * r.half_length / link;
+                    const double cR = 0.5 - along * r.half_length / link;
+                    const double j = across * r.half_width / link;
+                    for (size_t c = 0; c < 4; ++c) sw.v[q++] = cF * Fs[c] + cR * Rs[c] + j * perp(Fs[c] - Rs[c]);
+                    const double dd = (d_hi - d_lo), da = (a_hi - a_lo);
+                    worst = std::max(worst, (dd * dd * (std::abs(cF) + std::abs(cR) + 2.0 * std::abs(j)) +
+                                             da * da * (std::abs(cR) + std::abs(j))) * r_max / 8.0);
+                }
+            }
+            sw.radius = worst;
+            double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+            for (const Vec2& v : sw.v) {
+                x0 = std::min(x0, v.x());
+                x1 = std::max(x1, v.x());
+                y0 = std::min(y0, v.y());
+                y1 = std::max(y1, v.y());
+            }
+            const double grow = sw.radius + 0.5 * kProofBoxMargin;
+            sw.x0 = x0 - grow, sw.x1 = x1 + grow, sw.y0 = y0 - grow, sw.y1 = y1 + grow;
+        }
+    }
+}
+
+// Whether any two non-adjacent benches' enclosures (ws.benches: `frames` sets of nb, made
+// from the frames fa and fb) may meet, pair by pair: proved apart by chain_gap() with
+// `turning`, or along one of the boards' edge normals in fa and fb (turned by each one's head
+// angle when `turned`), at every frame's enclosures.
+template <class Turning, class Apart>
+StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Frame& fb, size_t frames, bool turned,
+                              const Turning& turning, const Apart& apart, SweptWorkspace& ws) {
+    StepProof out;
+    const size_t nb = std::min(fa.benches.size(), fb.benches.size());
+    // Boxes: each bench's over its enclosures.
+    ws.boxes.resize(nb);
+    for (size_t k = 0; k < nb; ++k) {
+        SweptWorkspace::Swept box = ws.benches[k];
+        for (size_t t = 1; t < frames; ++t) {
+            const SweptWorkspace::Swept& o = ws.benches[t * nb + k];
+            box.x0 = std::min(box.x0, o.x0), box.x1 = std::max(box.x1, o.x1);
+            box.y0 = std::min(box.y0, o.y0), box.y1 = std::max(box.y1, o.y1);
+            box.radius = std::max(box.radius, o.radius);
+        }
+        ws.boxes[k] = {box.x0, box.x1, box.y0, box.y1, box.radius};
+    }
+    // The frames' axes into the turned one, each by its own head's -theta_0.
+    std::array<std::array<double, 2>, 2> turn{};
+    if (turned) {
+        const double head[2] = {fa.handles[0].place.u, fb.handles[0].place.u};
+        for (size_t e = 0; e < 2; ++e) turn[e] = {math::cos(head[e]), math::sin(head[e])};
+    }
+    const auto turn_back = [&](const Vec2& v, size_t e) {
+        const double c = turn[e][0], sn = turn[e][1];
+        return Vec2{c * v.x() + sn * v.y(), -sn * v.x() + c * v.y()};
+    };
+    // Pairs whose boxes (grown by half the margin each) meet: sweep and prune along x. Every
+    // other pair's boxes are more than kProofBoxMargin apart in x or y, so are its benches.
+    ws.order.resize(nb);
+    for (size_t k = 0; k < nb; ++k) ws.order[k] = static_cast<int>(k);
+    std::sort(ws.order.begin(), ws.order.end(),
+              [&](int a, int b) { return ws.boxes[static_cast<size_t>(a)].x0 < ws.boxes[static_cast<size_t>(b)].x0; });
+    ws.active.clear();
+    out.least_gap = kProofBoxMargin;
+    for (const int k : ws.order) {
+        const SweptWorkspace::Box& s = ws.boxes[static_cast<size_t>(k)];
+        size_t keep = 0;
+        for (const int m : ws.active)
+            if (ws.boxes[static_cast<size_t>(m)].x1 >= s.x0) ws.active[keep++] = m;
+        ws.active.resize(keep);
+        for (const int m : ws.active) {
+            if (std::abs(m - k) < 2) continue;  // neighbours share a handle: never a contact
+            const SweptWorkspace::Box& o = ws.boxes[static_cast<size_t>(m)];
+            if (o.y1 < s.y0 || s.y1 < o.y0) continue;
+            const size_t a = static_cast<size_t>(std::min(k, m)), b = static_cast<size_t>(std::max(k, m));
+            if (apart(a, b)) continue;
+            const double radii = o.radius + s.radius;
+            double proved = b >= a + 2 ? chain_gap(turning, spec, fa, a, b) : -INFINITY;
+            if (!(proved > kProofSlack)) {
+                // The boards' edge normals in both frames (in the turned frame there). The
+                // normals first: the long sides face each other in most near pairs, and the
+                // loop stops at the first axis that proves the pair.
+                std::array<Vec2, 8> axes = {perp(fa.benches[a].axis), perp(fa.benches[b].axis), perp(fb.benches[a].axis),
+                                            perp(fb.benches[b].axis), fa.benches[a].axis, fa.benches[b].axis,
+                                            fb.benches[a].axis, fb.benches[b].axis};
+                if (turned)
+                    for (size_t q = 0; q < axes.size(); ++q) axes[q] = turn_back(axes[q], (q / 2) % 2);
+                double best = -INFINITY;
+                for (const Vec2& n : axes) {
+                    // b beyond a along n, and a beyond b: each the least over the enclosures
+                    // (every frame: concave in the frames' parameters, each side on its own).
+                    double above = INFINITY, below = INFINITY;
+                    for (size_t t = 0; t < frames; ++t) {
+                        double alo, ahi, blo, bhi;
+                        project(ws.benches[t * nb + a], n, alo, ahi);
+                        project(ws.benches[t * nb + b], n, blo, bhi);
+                        above = std::min(above, blo - ahi);
+                        below = std::min(below, alo - bhi);
+                    }
+                    best = std::max({best, above, below});
+                    if (best > radii + kProofSlack + kProofBoxMargin) break;  // enough: a sharper bound is not needed
+                }
+                proved = best - radii;
+            }
+            if (!(proved > kProofSlack))
+                return {StepVerdict::too_close, proved, static_cast<int>(a) + 1, static_cast<int>(b) + 1};
+            if (proved < out.least_gap) {
+                out.least_gap = proved;
+                out.bench_a = static_cast<int>(a) + 1;
+                out.bench_b = static_cast<int>(b) + 1;
+            }
+        }
+        ws.active.push_back(k);
+    }
+    return out;
+}
+
+}  // namespace
+
 StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, const Frame& f1, SweptWorkspace& ws) {
     StepProof out;
     const size_t nb = std::min(f0.benches.size(), f1.benches.size());
@@ -137,167 +311,122 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
             ws.dilation[i] = length * std::min(path.turning(p0, p1), 2.0) / 4.0;
         }
     }
-    // 3. Each bench's enclosure (enclose()). On the spiral r = b theta the benches are enclosed
-    // in the frame turned with the head (by -theta_0), where the chain's motion is only its slow
-    // change of shape: each link's polar span alpha_m = theta_{m+1} - theta_m is a decreasing
-    // function of its front handle's theta while below pi (implicit differentiation of
+    // 3. Each bench's enclosure. On the spiral r = b theta the benches are enclosed in the
+    // frame turned with the head (by -theta_0), where the chain's motion is only its slow change
+    // of shape: each link's polar span alpha_m = theta_{m+1} - theta_m is a decreasing function
+    // of its front handle's theta while below pi (implicit differentiation of
     // |P(theta + alpha) - P(theta)|^2 = d^2), so it grows monotonically over the step, and
     // D_i = theta_i - theta_0 lies between its two end values. Handle i is then at
     // b (theta_0 + D_i) (cos D_i, sin D_i): linear in theta_0, an arc of a spiral in D_i. For each
-    // end value T of theta_0 the benches are enclosed over their D intervals; a pair's projected
-    // gap on a fixed axis is, for fixed D's, concave in theta_0 (the least of linear functions
-    // less the largest), so it is least at one of the two ends T: the pair is apart when it is
-    // apart at both. Elsewhere (the turnaround) the enclosures are in the fixed frame, from the
-    // handles' arcs (item 2 above).
-    const int frames = turned ? 2 : 1;
-    ws.benches.resize(static_cast<size_t>(frames) * nb);
-    std::array<double, 2> head{};  // theta_0 at the step's end and start
+    // end value T of theta_0 the benches are enclosed over their D intervals (enclose_on_spiral);
+    // a pair's projected gap on a fixed axis is, for fixed D's, concave in theta_0 (the least of
+    // linear functions less the largest), so it is least at one of the two ends T: the pair is
+    // apart when it is apart at both. Elsewhere (the turnaround) the enclosures are in the fixed
+    // frame, from the handles' arcs (item 2 above).
     if (turned) {
         const double b = spiral->b();
-        head = {f1.handles[0].place.u, f0.handles[0].place.u};
-        ws.directions.resize(6 * nb);
-        for (int t = 0; t < 2; ++t) {
-            const double T = head[static_cast<size_t>(t)];
-            for (size_t k = 0; k < nb; ++k) {
-                // Bench k: its front handle at D in [d_lo, d_hi], its link's span alpha in
-                // [a_lo, a_hi]; the corners over that box are within the hull of their values at
-                // its four corners (bilinear interpolation) plus the interpolation's error,
-                // dD^2 / 8 max|c_DD| + da^2 / 8 max|c_aa|, where |P''| <= r + 2b for
-                // P(D) = b (T + D) (cos D, sin D).
-                const Place& front0 = f0.handles[k].place;
-                const Place& front1 = f1.handles[k].place;
-                const double d0 = front0.u - f0.handles[0].place.u, d1 = front1.u - f1.handles[0].place.u;
-                const double a0 = f0.handles[k + 1].place.u - front0.u, a1 = f1.handles[k + 1].place.u - front1.u;
-                const double d_lo = std::min(d0, d1), d_hi = std::max(d0, d1);
-                const double a_lo = std::min(a0, a1), a_hi = std::max(a0, a1);
-                const Rect& r = f0.benches[k];
-                const double link = spec.link_length(static_cast<int>(k) + 1);
-                const double r_max = b * (T + d_hi + a_hi) + 2.0 * b;  // bounds |P''| on the box
-                SweptWorkspace::Swept& sw = ws.benches[static_cast<size_t>(t) * nb + k];
-                Vec2 Fs[4], Rs[4];  // the handles at the box's four corners (D, alpha)
-                Vec2* const e = &ws.directions[6 * k];  // their directions, the same at both T
-                if (t == 0) {
-                    Vec2* w = e;
-                    w[0] = {math::cos(d_lo), math::sin(d_lo)};
-                    w[1] = {math::cos(d_hi), math::sin(d_hi)};
-                    for (size_t c = 0; c < 4; ++c) {
-                        const double D = c < 2 ? d_lo : d_hi, A = c % 2 == 0 ? a_lo : a_hi;
-                        w[2 + c] = {math::cos(D + A), math::sin(D + A)};
-                    }
-                }
-                for (size_t c = 0; c < 4; ++c) {
-                    const double D = c < 2 ? d_lo : d_hi, A = c % 2 == 0 ? a_lo : a_hi;
-                    Fs[c] = b * (T + D) * e[c < 2 ? 0 : 1];
-                    Rs[c] = b * (T + D + A) * e[2 + c];
-                }
-                size_t q = 0;
-                double worst = 0.0;
-                for (const double along : {-1.0, 1.0}) {
-                    for (const double across : {-1.0, 1.0}) {
-                        const double cF = 0.5 + along * r.half_length / link;
-                        const double cR = 0.5 - along * r.half_length / link;
-                        const double j = across * r.half_width / link;
-                        for (size_t c = 0; c < 4; ++c) sw.v[q++] = cF * Fs[c] + cR * Rs[c] + j * perp(Fs[c] - Rs[c]);
-                        const double dd = (d_hi - d_lo), da = (a_hi - a_lo);
-                        worst = std::max(worst, (dd * dd * (std::abs(cF) + std::abs(cR) + 2.0 * std::abs(j)) +
-                                                 da * da * (std::abs(cR) + std::abs(j))) * r_max / 8.0);
-                    }
-                }
-                sw.radius = worst;
-                double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-                for (const Vec2& v : sw.v) {
-                    x0 = std::min(x0, v.x());
-                    x1 = std::max(x1, v.x());
-                    y0 = std::min(y0, v.y());
-                    y1 = std::max(y1, v.y());
-                }
-                const double grow = sw.radius + 0.5 * kProofBoxMargin;
-                sw.x0 = x0 - grow, sw.x1 = x1 + grow, sw.y0 = y0 - grow, sw.y1 = y1 + grow;
-            }
-        }
-    } else {
-        for (size_t k = 0; k < nb; ++k)
-            enclose(f0.benches[k], spec.link_length(static_cast<int>(k) + 1),
-                    {f0.handles[k].pos, f1.handles[k].pos, ws.dilation[k]},
-                    {f0.handles[k + 1].pos, f1.handles[k + 1].pos, ws.dilation[k + 1]}, ws.benches[k]);
+        const std::array<SpiralCorner, 2> corners{{{f1.handles[0].place.u, b}, {f0.handles[0].place.u, b}}};
+        enclose_on_spiral(spec, f0, f1, corners, ws);
+        return separate_enclosures(spec, f0, f1, corners.size(), true, turning, kNotSeparately, ws);
     }
-    // Boxes: each bench's over its enclosures.
-    ws.boxes.resize(nb);
+    ws.benches.resize(nb);
+    for (size_t k = 0; k < nb; ++k)
+        enclose(f0.benches[k], spec.link_length(static_cast<int>(k) + 1),
+                {f0.handles[k].pos, f1.handles[k].pos, ws.dilation[k]},
+                {f0.handles[k + 1].pos, f1.handles[k + 1].pos, ws.dilation[k + 1]}, ws.benches[k]);
+    return separate_enclosures(spec, f0, f1, 1, false, turning, kNotSeparately, ws);
+}
+
+namespace {
+
+// Benches i < j kept apart over a cell by their offsets from the spiral (as in untouched_tail.hpp,
+// whose bench_reach bounds them): at pitch p a point shared by the two has unwrapped angles 2 pi m
+// apart, and offsets rho - b psi differing by p m; each bench's offsets lie in [-in, out].
+// `closest` and `farthest` bound, over the cell, the angle from bench i's rear handle to bench
+// j's front handle and from bench i's front handle to bench j's rear one; every whole turn m the
+// angle spans (each widened by its reach) allow must be one the least pitch keeps them apart by.
+bool offsets_apart(double closest, double farthest, const std::optional<BenchReach>& ri,
+                   const std::optional<BenchReach>& rj, double pitch_lo) {
+    if (!ri || !rj) return false;
+    const double spread = ri->angle + rj->angle;
+    const double m_lo = std::ceil((closest - spread) / kTwoPi), m_hi = std::floor((farthest + spread) / kTwoPi);
+    // m = 0 never is such a turn; m > 0 is when p m > out_i + in_j, m < 0 when p |m| > in_i +
+    // out_j (the least |m| each way decides).
+    if (m_lo > m_hi) return true;  // their angle spans never meet, a whole number of turns apart
+    if (m_lo <= 0.0 && m_hi >= 0.0) return false;
+    const double m = m_lo > 0.0 ? m_lo : -m_hi;
+    const double reach = (m_lo > 0.0 ? ri->out + rj->in : ri->in + rj->out) * (1.0 + kOffsetSlack);
+    return pitch_lo * m > reach + kProofSlack;
+}
+
+}  // namespace
+
+size_t spiral_cell_benches(const BenchSpec& spec, const std::vector<double>& theta_a, const std::vector<double>& theta_b,
+                           double b_lo, double b_hi, SweptWorkspace& ws) {
+    const size_t nb = std::min(theta_a.size(), theta_b.size()) - 1;
+    // Each bench's offsets from the spiral anywhere in the cell: from its least radii (theta_b at
+    // b_lo: every radius rises with r0 and b), its link's least span (theta_a) and the largest b
+    // (the bounds grow with b).
+    ws.reach.resize(nb);
+    double widest = 0.0;  // rad: the largest reach in angle
+    double most_in = 0.0, most_out = 0.0;  // m: the largest offsets each way
     for (size_t k = 0; k < nb; ++k) {
-        SweptWorkspace::Swept box = ws.benches[k];
-        if (frames == 2) {
-            const SweptWorkspace::Swept& o = ws.benches[nb + k];
-            box.x0 = std::min(box.x0, o.x0), box.x1 = std::max(box.x1, o.x1);
-            box.y0 = std::min(box.y0, o.y0), box.y1 = std::max(box.y1, o.y1);
-            box.radius = std::max(box.radius, o.radius);
-        }
-        ws.boxes[k] = {box.x0, box.x1, box.y0, box.y1, box.radius};
+        const double rho_front = b_lo * theta_b[k], rho_rear = b_lo * theta_b[k + 1];
+        ws.reach[k] = bench_reach(b_hi, spec, static_cast<int>(k) + 1, rho_front / b_hi, rho_rear / b_hi,
+                                  theta_a[k + 1] - theta_a[k]);
+        if (!ws.reach[k]) return nb;
+        widest = std::max(widest, ws.reach[k]->angle);
+        if (k > 0) most_in = std::max(most_in, ws.reach[k]->in), most_out = std::max(most_out, ws.reach[k]->out);
     }
-    // Axes of the fixed frame into the turned one, by -theta_0 at the end (0) or the start (1).
-    std::array<std::array<double, 2>, 2> turn{};
-    for (size_t e = 0; e < 2 && turned; ++e) turn[e] = {math::cos(head[e]), math::sin(head[e])};
-    const auto turn_back = [&](const Vec2& v, size_t e) {
-        const double c = turn[e][0], sn = turn[e][1];
-        return Vec2{c * v.x() + sn * v.y(), -sn * v.x() + c * v.y()};
+    const double pitch_lo = kTwoPi * b_lo;
+    // A pitch above every bench's offsets together (the head's board aside: it is longer) keeps
+    // any two such benches a whole turn or more apart: only their pairs whose spans may meet on
+    // the same turn (m = 0) are left to look at (offsets_apart's test for them decides it for
+    // every m), and the head's pairs.
+    const bool turns_apart = pitch_lo > (most_in + most_out) * (1.0 + kOffsetSlack) + kProofSlack;
+    const double spread = 2.0 * widest;
+    const auto D_a = [&](size_t k) { return theta_a[k] - theta_a[0]; };
+    const auto D_b = [&](size_t k) { return theta_b[k] - theta_b[0]; };
+    // For each bench j and whole turn m, the benches i whose angle spans may meet j's m turns
+    // round form a run that only moves on as j does: i_lo (the first with D_a(i + 1) >=
+    // D_a(j) - 2 pi m - spread) and i_hi (the last with D_b(i) <= D_b(j + 1) + spread - 2 pi m).
+    const double turns = std::floor((D_b(nb) + spread) / kTwoPi);
+    size_t watched = 0;  // benches 1..watched hold every pair not proved apart
+    for (double m = 0.0; m <= turns; ++m) {
+        size_t i_lo = 0, i_hi = 0;  // i_hi: one past the last
+        for (size_t j = 2; j < nb; ++j) {
+            while (i_lo < nb && D_a(i_lo + 1) < D_a(j) - kTwoPi * m - spread) ++i_lo;
+            if (m > 0.0 && turns_apart && i_lo > 0) break;  // none but the head's pairs can meet, and it is behind
+            while (i_hi < nb && D_b(i_hi) <= D_b(j + 1) + spread - kTwoPi * m) ++i_hi;
+            const size_t last = m > 0.0 && turns_apart ? std::min<size_t>(i_hi, 1) : i_hi;
+            for (size_t i = i_lo; i < std::min(last, j - 1); ++i)
+                if (!offsets_apart(D_a(j) - D_a(i + 1), D_b(j + 1) - D_b(i), ws.reach[i], ws.reach[j], pitch_lo))
+                    watched = std::max(watched, j + 1);
+        }
+    }
+    return watched;
+}
+
+StepProof prove_spiral_cell(const BenchSpec& spec, const Frame& fa, const Frame& fb, std::span<const SpiralCorner> corners,
+                            SweptWorkspace& ws) {
+    enclose_on_spiral(spec, fa, fb, corners, ws);
+    // The turning from handle `rear` to handle `front` anywhere in the cell: the polar span
+    // between them, at most its value in fb (every link's span is largest there), plus the
+    // change of atan(theta) over it, at most the span over 1 + theta^2 at the front's least theta.
+    double T_min = INFINITY, b_lo = INFINITY;
+    for (const SpiralCorner& c : corners) T_min = std::min(T_min, c.T), b_lo = std::min(b_lo, c.b);
+    const double fa0 = fa.handles[0].place.u;
+    const auto turning = [&](size_t rear, size_t front) {
+        const double span = fb.handles[rear].place.u - fb.handles[front].place.u;
+        const double theta = T_min + (fa.handles[front].place.u - fa0);
+        return span * (1.0 + 1.0 / (1.0 + theta * theta));
     };
-    // 4. Pairs whose boxes (grown by half the margin each) meet: sweep and prune along x. Every
-    // other pair's boxes are more than kProofBoxMargin apart in x or y, so are its benches.
-    ws.order.resize(nb);
-    for (size_t k = 0; k < nb; ++k) ws.order[k] = static_cast<int>(k);
-    std::sort(ws.order.begin(), ws.order.end(),
-              [&](int a, int b) { return ws.boxes[static_cast<size_t>(a)].x0 < ws.boxes[static_cast<size_t>(b)].x0; });
-    ws.active.clear();
-    out.least_gap = kProofBoxMargin;
-    for (const int k : ws.order) {
-        const SweptWorkspace::Box& s = ws.boxes[static_cast<size_t>(k)];
-        size_t keep = 0;
-        for (const int m : ws.active)
-            if (ws.boxes[static_cast<size_t>(m)].x1 >= s.x0) ws.active[keep++] = m;
-        ws.active.resize(keep);
-        for (const int m : ws.active) {
-            if (std::abs(m - k) < 2) continue;  // neighbours share a handle: never a contact
-            const SweptWorkspace::Box& o = ws.boxes[static_cast<size_t>(m)];
-            if (o.y1 < s.y0 || s.y1 < o.y0) continue;
-            const size_t a = static_cast<size_t>(std::min(k, m)), b = static_cast<size_t>(std::max(k, m));
-            const double radii = o.radius + s.radius;
-            double proved = b >= a + 2 ? chain_gap(turning, spec, f0, a, b) : -INFINITY;
-            if (!(proved > kProofSlack)) {
-                // The boards' edge normals at both ends of the step (in the turned frame there).
-                // The normals first: the long sides face each other in most near pairs, and the
-                // loop stops at the first axis that proves the pair.
-                std::array<Vec2, 8> axes = {perp(f0.benches[a].axis), perp(f0.benches[b].axis), perp(f1.benches[a].axis),
-                                            perp(f1.benches[b].axis), f0.benches[a].axis, f0.benches[b].axis,
-                                            f1.benches[a].axis, f1.benches[b].axis};
-                if (turned)  // the start's axes turned by its theta_0, the end's by its own
-                    for (size_t q = 0; q < axes.size(); ++q) axes[q] = turn_back(axes[q], (q / 2) % 2 == 0 ? 1 : 0);
-                double best = -INFINITY;
-                for (const Vec2& n : axes) {
-                    // b beyond a along n, and a beyond b: each the least over the enclosures
-                    // (both ends of theta_0: concave in it, each side on its own).
-                    double above = INFINITY, below = INFINITY;
-                    for (int t = 0; t < frames; ++t) {
-                        double alo, ahi, blo, bhi;
-                        project(ws.benches[static_cast<size_t>(t) * nb + a], n, alo, ahi);
-                        project(ws.benches[static_cast<size_t>(t) * nb + b], n, blo, bhi);
-                        above = std::min(above, blo - ahi);
-                        below = std::min(below, alo - bhi);
-                    }
-                    best = std::max({best, above, below});
-                    if (best > radii + kProofSlack + kProofBoxMargin) break;  // enough: a sharper bound is not needed
-                }
-                proved = best - radii;
-            }
-            if (!(proved > kProofSlack))
-                return {StepVerdict::too_close, proved, static_cast<int>(a) + 1, static_cast<int>(b) + 1};
-            if (proved < out.least_gap) {
-                out.least_gap = proved;
-                out.bench_a = static_cast<int>(a) + 1;
-                out.bench_b = static_cast<int>(b) + 1;
-            }
-        }
-        ws.active.push_back(k);
-    }
-    return out;
+    const double pitch_lo = kTwoPi * b_lo;
+    const auto apart = [&](size_t i, size_t j) {
+        return offsets_apart(fa.handles[j].place.u - fa.handles[i + 1].place.u,
+                             fb.handles[j + 1].place.u - fb.handles[i].place.u, ws.reach[i], ws.reach[j], pitch_lo);
+    };
+    return separate_enclosures(spec, fa, fb, corners.size(), true, turning, apart, ws);
 }
 
 }  // namespace dragon::contact

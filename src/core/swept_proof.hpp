@@ -20,12 +20,15 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include "dragon/chain.hpp"
 #include "dragon/path.hpp"
 #include "dragon/scenario.hpp"
+#include "untouched_tail.hpp"
 
 namespace dragon::contact {
 
@@ -82,11 +85,40 @@ struct SweptWorkspace {
     std::vector<double> arc0, arc1, dilation;
     std::vector<int> order;
     std::vector<int> active;
+    std::vector<std::optional<BenchReach>> reach;  // each bench's offsets from the spiral (cells only)
 };
 
 // Proves (or fails to prove) that no two non-adjacent benches of the chain touch at any head
 // travel between the frames f0 and f1 (f0 earlier, both of the same chain on `path`, the head
 // moving forward from one to the other within the valid motion).
 StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, const Frame& f1, SweptWorkspace& ws);
+
+// A value of the plain spiral's parameters at which benches are enclosed: the head's angle T
+// (rad) and the spiral's b (pitch / 2 pi, m/rad). A handle at polar offset D from the head lies
+// at b (T + D) (cos D, sin D) in the frame turned by -T: for fixed D, linear in (b T, b), the
+// head's radius and b.
+struct SpiralCorner {
+    double T, b;
+};
+
+// The number K of leading benches of a cell of head radii and pitches on the plain spiral (see
+// prove_spiral_cell) outside of which no two non-adjacent benches can touch anywhere in the
+// cell, proved by their offsets from the spiral (untouched_tail.hpp's bench_reach): every pair
+// with a bench numbered above K stays apart. theta_a, theta_b: every handle's angle in the chains
+// with the least and the largest polar offsets; b_lo, b_hi: the cell's range of b. Fills
+// ws.reach, which prove_spiral_cell then reads for the same cell.
+size_t spiral_cell_benches(const BenchSpec& spec, const std::vector<double>& theta_a, const std::vector<double>& theta_b,
+                           double b_lo, double b_hi, SweptWorkspace& ws);
+
+// Proves (or fails to prove) that no two non-adjacent benches touch anywhere in a cell of head
+// radii and pitches on the plain spiral (pitch_proof.cpp says what the cell is and why these
+// are its bounds): every handle's polar offset from the head and every link's polar span lie,
+// everywhere in the cell, between their values in the chains fa (the least) and fb (the
+// largest), and the cell's (head radius, b) lie in the convex hull of `corners`. A pair's
+// projected gap on a fixed axis is then concave over the cell, so least at a corner. fa and fb
+// may hold the leading benches alone (spiral_cell_benches, called first for the cell, proves
+// the rest apart).
+StepProof prove_spiral_cell(const BenchSpec& spec, const Frame& fa, const Frame& fb, std::span<const SpiralCorner> corners,
+                            SweptWorkspace& ws);
 
 }  // namespace dragon::contact

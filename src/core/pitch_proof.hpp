@@ -1,0 +1,38 @@
+// The minimum pitch's feasible intervals proved pitch by pitch (MinPitchOptions::prove;
+// docs/methods.md, section 8.1): every pitch inside them, not only the grid's and the
+// narrowing's, reaches the turning space's boundary with no two benches touching.
+//
+// The proof covers cells of (head radius r0, spiral parameter b = pitch / 2 pi). On the plain
+// spiral r = b theta let a link's front handle be at radius rho and its rear handle alpha
+// further round: F(alpha; rho, b) = rho^2 + (rho + b alpha)^2 - 2 rho (rho + b alpha) cos alpha
+// - d^2 = 0. On (0, pi], F rises in alpha, rho and b (its three partial derivatives are
+// positive there), so the nearest root alpha = A(rho, b) is simple and falls in rho and in b.
+// The rear's radius G(rho, b) = rho + b A(rho, b) rises in b, and in rho where
+// rho > b tan(alpha / 2) and alpha <= pi / 2. Along the chain from the head (rho_0 = r0) every
+// handle's radius then rises, and every link's span and every polar offset D_i from the head
+// falls, in r0 and in b: over the cell [r0_lo, r0_hi] x [b_lo, b_hi] each lies between its
+// values in the chain at (r0_hi, b_hi) and the chain at (r0_lo, b_lo), checked there (the
+// conditions at the corner where the spans are largest and the radii least hold everywhere).
+// Handle i lies at (r0 + b D_i) (cos D_i, sin D_i) in the frame turned with the head: linear in
+// (r0, b) for fixed D, so swept_proof's enclosures at the cell's four corners prove the whole
+// cell (prove_spiral_cell). Every pitch in [b_lo, b_hi] 2 pi starts no farther out than
+// r0 = 2 pi b_hi start_turn: cells from there in to the turning space's radius cover its run.
+#pragma once
+
+#include <vector>
+
+#include "dragon/analyses.hpp"
+#include "dragon/executor.hpp"
+#include "dragon/scenario.hpp"
+
+namespace dragon {
+
+// m: a range of pitches narrower than this that its cells cannot prove is left unproved (the
+// pitches next to a change of feasibility, where a pair's closest approach falls to zero).
+inline constexpr double kPitchProofFinest = 1e-7;
+
+// Proves the feasible intervals of `intervals` (min_pitch's), each range of pitches on its own;
+// the scenario's bench, start_turn and turn_radius are the runs'.
+PitchProof prove_feasible_pitches(const Scenario& s, const std::vector<PitchInterval>& intervals, Executor& ex);
+
+}  // namespace dragon
