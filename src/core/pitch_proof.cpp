@@ -39,17 +39,17 @@ constexpr double kTailSteps = 8.0;
 // cannot be proved from stepping without end).
 constexpr double kFinestRadiusStep = 1e-12;
 
-// Every handle's angle on the spiral r = b theta with the head at radius r0 (false: a handle
+// Every handle's angle on the spiral of this pitch with the head at radius r0 (false: a handle
 // off the spiral's one piece).
-bool angles_at(const BenchSpec& spec, double r0, double b, std::vector<double>& theta) {
-    const Spiral spiral(kTwoPi * b);
-    return solve_spiral_chain_angles(spiral, spec, spiral.arc({0, r0 / b}), theta);
+bool angles_at(const BenchSpec& spec, double r0, double pitch, std::vector<double>& theta) {
+    const Spiral spiral(pitch);
+    return solve_spiral_chain_angles(spiral, spec, spiral.arc({0, r0 / spiral.b()}), theta);
 }
 
 // The leading `benches` benches of the same chain (its handles' angles are theta's, bit for bit).
-void front_at(const BenchSpec& spec, double r0, double b, size_t benches, Frame& f) {
-    const Spiral spiral(kTwoPi * b);
-    solve_chain_front(spiral, spec, spiral.arc({0, r0 / b}), 1.0, static_cast<int>(benches) + 1, f);
+void front_at(const BenchSpec& spec, double r0, double pitch, size_t benches, Frame& f) {
+    const Spiral spiral(pitch);
+    solve_chain_front(spiral, spec, spiral.arc({0, r0 / spiral.b()}), 1.0, static_cast<int>(benches) + 1, f);
 }
 
 // Whether the cell's bounds hold (pitch_proof.hpp): in theta_b, the chain with the largest spans
@@ -64,9 +64,9 @@ bool bounds_hold(const std::vector<double>& theta_b, double b_lo, double b_hi) {
     return true;
 }
 
-// A range of pitches (as b, m/rad) whose cells are proved from head radius `from` in.
+// A range of pitches (m) whose cells are proved from head radius `from` (m) in.
 struct Range {
-    double b_lo, b_hi, from;
+    double p_lo, p_hi, from;
 };
 
 // Marches the range [p_lo, p_hi] of pitches from its start in to `boundary` (the turning
@@ -75,12 +75,13 @@ void march(const BenchSpec& spec, double start_turn, double boundary, double p_l
     Frame fa, fb;
     std::vector<double> theta_a, theta_b;
     contact::SweptWorkspace ws;
-    std::vector<Range> todo{{p_lo / kTwoPi, p_hi / kTwoPi, kTwoPi * (p_hi / kTwoPi) * start_turn}};
+    std::vector<Range> todo{{p_lo, p_hi, Spiral(p_hi).b() * kTwoPi * start_turn}};
     while (!todo.empty()) {
         const Range range = todo.back();
         todo.pop_back();
         ++out.pitch_ranges;
-        const double b_lo = range.b_lo, b_hi = range.b_hi;
+        // b as the spirals of the range's two ends have it (Spiral::b(): pitch / 2 pi).
+        const double b_lo = Spiral(range.p_lo).b(), b_hi = Spiral(range.p_hi).b();
         double r = range.from;  // m: every cell from the start in to here is proved
         double step = kFirstRadiusStep * r;
         bool done = true;
@@ -95,16 +96,16 @@ void march(const BenchSpec& spec, double start_turn, double boundary, double p_l
                 // hold in every cell inside).
                 tail_hi = r;
                 tail_lo = std::max(boundary, r - kTailSteps * step);
-                if (!angles_at(spec, tail_hi, b_hi, theta_a) || !angles_at(spec, tail_lo, b_lo, theta_b) ||
+                if (!angles_at(spec, tail_hi, range.p_hi, theta_a) || !angles_at(spec, tail_lo, range.p_lo, theta_b) ||
                     !bounds_hold(theta_b, b_lo, b_hi)) {
-                    out.unproved.push_back({kTwoPi * b_lo, kTwoPi * b_hi, true});
+                    out.unproved.push_back({range.p_lo, range.p_hi, true});
                     done = false;
                     break;
                 }
                 watched = contact::spiral_cell_benches(spec, theta_a, theta_b, b_lo, b_hi, ws);
             }
-            front_at(spec, r, b_hi, watched, fa);
-            front_at(spec, r_lo, b_lo, watched, fb);
+            front_at(spec, r, range.p_hi, watched, fa);
+            front_at(spec, r_lo, range.p_lo, watched, fb);
             const std::array<contact::SpiralCorner, 4> corners{{{r_lo / b_lo, b_lo}, {r_lo / b_hi, b_hi},
                                                                  {r / b_lo, b_lo}, {r / b_hi, b_hi}}};
             const contact::StepProof p = contact::prove_spiral_cell(spec, fa, fb, corners, ws);
@@ -116,23 +117,23 @@ void march(const BenchSpec& spec, double start_turn, double boundary, double p_l
                 continue;
             }
             ++out.subdivisions;
-            const double radius_share = (r - r_lo) / r, pitch_share = (b_hi - b_lo) / b_hi;
+            const double radius_share = (r - r_lo) / r, pitch_share = (range.p_hi - range.p_lo) / range.p_hi;
             if (radius_share >= kRadiusToPitch * pitch_share && 0.5 * (r - r_lo) >= kFinestRadiusStep) {
                 step = 0.5 * (r - r_lo);
                 continue;
             }
             done = false;
-            if (kTwoPi * (b_hi - b_lo) <= kPitchProofFinest) {
-                out.unproved.push_back({kTwoPi * b_lo, kTwoPi * b_hi, true});
+            if (range.p_hi - range.p_lo <= kPitchProofFinest) {
+                out.unproved.push_back({range.p_lo, range.p_hi, true});
                 break;
             }
             // Both halves go on from here: everything farther out is proved for the whole range.
-            const double b_mid = 0.5 * (b_lo + b_hi);
-            todo.push_back({b_mid, b_hi, r});
-            todo.push_back({b_lo, b_mid, r});
+            const double p_mid = 0.5 * (range.p_lo + range.p_hi);
+            todo.push_back({p_mid, range.p_hi, r});
+            todo.push_back({range.p_lo, p_mid, r});
             break;
         }
-        if (done) out.proved.push_back({kTwoPi * b_lo, kTwoPi * b_hi, true});
+        if (done) out.proved.push_back({range.p_lo, range.p_hi, true});
     }
 }
 

@@ -1,0 +1,178 @@
+// The minimum pitch's proof (core/pitch_proof.hpp): what it proves checked against runs of the
+// dragon at pitches it never ran, against dense samples inside its cells, and against ranges
+// claimed feasible that hold a collision window narrower than the grid.
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/chain_front.hpp"
+#include "core/pitch_proof.hpp"
+#include "core/swept_proof.hpp"
+#include "dragon/analyses.hpp"
+#include "dragon/chain.hpp"
+#include "dragon/collision.hpp"
+#include "dragon/constants.hpp"
+#include "dragon/path.hpp"
+
+using namespace dragon;
+
+namespace {
+
+// Every handle's angle, and the whole chain, on r = b theta with the head at radius r0.
+std::vector<double> angles_at(const BenchSpec& spec, double r0, double b) {
+    const Spiral spiral(kTwoPi * b);
+    std::vector<double> theta;
+    EXPECT_TRUE(solve_spiral_chain_angles(spiral, spec, spiral.arc({0, r0 / b}), theta));
+    return theta;
+}
+Frame chain_at(const BenchSpec& spec, double r0, double b) {
+    const Spiral spiral(kTwoPi * b);
+    Frame f;
+    solve_chain(spiral, spec, spiral.arc({0, r0 / b}), 1.0, f);
+    return f;
+}
+
+double total_width(const std::vector<PitchInterval>& v) {
+    double w = 0.0;
+    for (const PitchInterval& i : v) w += i.hi - i.lo;
+    return w;
+}
+
+// Whether the run to the boundary at `pitch` touches (a run of the search, independent of the proof).
+bool collides(double pitch) {
+    const BoundaryRun run = run_to_boundary(Scenario{}, pitch);
+    return run.contact.has_value() || run.jam.has_value();
+}
+
+}  // namespace
+
+// Proposition P2 checked by the chain solver alone: inside a cell every handle's polar offset
+// from the head and every link's span lie between their values at the two corners.
+TEST(PitchProof, ACellsCornersBoundEveryChainInsideIt) {
+    const BenchSpec spec;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int cell = 0; cell < 6; ++cell) {
+        const double p_lo = 0.45 + 0.1 * unit(rng), p_hi = p_lo + 2e-3 * unit(rng);
+        const double r_hi = 4.6 + 3.0 * unit(rng), r_lo = r_hi - 0.05 * unit(rng);
+        const double b_lo = p_lo / kTwoPi, b_hi = p_hi / kTwoPi;
+        const std::vector<double> a = angles_at(spec, r_hi, b_hi), z = angles_at(spec, r_lo, b_lo);
+        for (int k = 0; k < 20; ++k) {
+            const double r0 = r_lo + (r_hi - r_lo) * unit(rng), b = b_lo + (b_hi - b_lo) * unit(rng);
+            const std::vector<double> t = angles_at(spec, r0, b);
+            for (size_t i = 1; i < t.size(); ++i) {
+                const double D = t[i] - t[0], span = t[i] - t[i - 1];
+                EXPECT_GE(D, (a[i] - a[0]) - 1e-12) << "cell " << cell << " handle " << i;
+                EXPECT_LE(D, (z[i] - z[0]) + 1e-12) << "cell " << cell << " handle " << i;
+                EXPECT_GE(span, (a[i] - a[i - 1]) - 1e-12);
+                EXPECT_LE(span, (z[i] - z[i - 1]) + 1e-12);
+                EXPECT_GE(b * t[i], b_lo * z[i] - 1e-12);  // radii: least at (r_lo, b_lo)
+                EXPECT_LE(b * t[i], b_hi * a[i] + 1e-12);
+            }
+        }
+    }
+}
+
+// A proved cell holds no contact anywhere inside it (dense samples, every non-adjacent pair);
+// a cell holding a pitch that touches there is not proved.
+TEST(PitchProof, AProvedCellHoldsNoContactAndATouchingOneIsNotProved) {
+    const BenchSpec spec;
+    const MinPitch m = min_pitch(Scenario{}, 0.44, 0.46, {.grid = 0.01});
+    const double cut = m.pitch;  // the least feasible pitch, to 1e-9 m
+    ASSERT_TRUE(std::isfinite(cut));
+    // The pair's closest approach at pitches just above the cut: the radius where the clearance
+    // is least, from a scan of the run (clearance of the whole chain).
+    const double b = (cut + 1e-4) / kTwoPi;
+    double r_star = 0.0, least = INFINITY;
+    for (double r0 = 4.5; r0 < 4.7; r0 += 5e-4) {
+        const double c = clearance(chain_at(spec, r0, b)).distance;
+        if (c < least) least = c, r_star = r0;
+    }
+    ASSERT_GT(least, 0.0);
+    contact::SweptWorkspace ws;
+    int proved = 0;
+    for (const double width : {1e-3, 1e-4, 1e-5}) {
+        const double r_hi = r_star + width, r_lo = r_star - width;
+        const double b_lo = (cut + 1e-4) / kTwoPi, b_hi = (cut + 1.1e-4) / kTwoPi;
+        const std::vector<double> ta = angles_at(spec, r_hi, b_hi), tb = angles_at(spec, r_lo, b_lo);
+        const size_t watched = contact::spiral_cell_benches(spec, ta, tb, b_lo, b_hi, ws);
+        Frame fa, fb;
+        const Spiral sa(kTwoPi * b_hi), sb(kTwoPi * b_lo);
+        solve_chain_front(sa, spec, sa.arc({0, r_hi / b_hi}), 1.0, static_cast<int>(watched) + 1, fa);
+        solve_chain_front(sb, spec, sb.arc({0, r_lo / b_lo}), 1.0, static_cast<int>(watched) + 1, fb);
+        const std::vector<contact::SpiralCorner> corners{
+            {r_lo / b_lo, b_lo}, {r_lo / b_hi, b_hi}, {r_hi / b_lo, b_lo}, {r_hi / b_hi, b_hi}};
+        const contact::StepProof p = contact::prove_spiral_cell(spec, fa, fb, corners, ws);
+        if (p.verdict != contact::StepVerdict::proved) continue;
+        ++proved;
+        for (int i = 0; i <= 10; ++i)
+            for (int j = 0; j <= 10; ++j) {
+                const double r0 = r_lo + (r_hi - r_lo) * i / 10.0, bb = b_lo + (b_hi - b_lo) * j / 10.0;
+                const double c = clearance_all_pairs(chain_at(spec, r0, bb)).distance;
+                EXPECT_GE(c, p.least_gap - 1e-12) << "r0 " << r0 << " b " << bb;
+            }
+    }
+    EXPECT_GT(proved, 0) << "no cell around the closest approach was proved";
+    // Pitches just below the cut touch there: a cell holding them is not proved.
+    const double r_hi = r_star + 1e-3, r_lo = r_star - 1e-3;
+    const double b_lo = (cut - 2e-5) / kTwoPi, b_hi = (cut - 1e-5) / kTwoPi;
+    ASSERT_TRUE(collides(cut - 1.5e-5));
+    const std::vector<double> ta = angles_at(spec, r_hi, b_hi), tb = angles_at(spec, r_lo, b_lo);
+    const size_t watched = contact::spiral_cell_benches(spec, ta, tb, b_lo, b_hi, ws);
+    const Frame fa = chain_at(spec, r_hi, b_hi), fb = chain_at(spec, r_lo, b_lo);
+    (void)watched;
+    const std::vector<contact::SpiralCorner> corners{
+        {r_lo / b_lo, b_lo}, {r_lo / b_hi, b_hi}, {r_hi / b_lo, b_lo}, {r_hi / b_hi, b_hi}};
+    EXPECT_NE(contact::prove_spiral_cell(spec, fa, fb, corners, ws).verdict, contact::StepVerdict::proved);
+}
+
+// The contest: every pitch of the feasible interval is proved but those within a micrometre of
+// the cut, and runs at pitches the search never ran (spread geometrically from the cut) agree.
+TEST(PitchProof, ProvesTheContestsFeasibleIntervalUpToTheCut) {
+    ThreadPool pool(2);
+    MinPitchOptions o;
+    o.executor = &pool;
+    o.prove = true;
+    const MinPitch m = min_pitch(Scenario{}, 0.35, 0.55, o);
+    ASSERT_TRUE(m.proof.has_value());
+    const PitchProof& p = *m.proof;
+    ASSERT_EQ(p.proved.size(), 1u);
+    EXPECT_TRUE(p.proved.front().feasible);
+    EXPECT_EQ(p.proved.front().hi, 0.55);
+    EXPECT_GE(p.proved.front().lo, m.pitch);
+    EXPECT_LT(p.proved.front().lo - m.pitch, 1e-6);
+    EXPECT_LT(total_width(p.unproved), 1e-6);
+    for (const PitchInterval& u : p.unproved) EXPECT_GE(u.lo, m.pitch);
+    EXPECT_GT(p.least_gap, 0.0);
+    EXPECT_GT(p.cells, 0);
+    EXPECT_STREQ(p.method(), "enclosure cells, incomplete");
+    for (double d = 1e-6; d < 0.1; d *= 3.7) {
+        const double pitch = p.proved.front().lo + d;
+        EXPECT_FALSE(collides(pitch)) << pitch;
+    }
+}
+
+// A range claimed feasible that holds a collision window narrower than the grid (the pitches
+// just below the contest's cut, 10 micrometres of them, at its start): the proof leaves the
+// window unproved and proves no pitch that collides.
+TEST(PitchProof, NeverProvesAWindowOfCollisionInsideARangeClaimedFeasible) {
+    const MinPitch m = min_pitch(Scenario{}, 0.44, 0.46, {.grid = 0.01});
+    const double cut = m.pitch;
+    ASSERT_TRUE(std::isfinite(cut));
+    const double window_lo = cut - 1e-5;
+    ASSERT_TRUE(collides(window_lo));
+    ASSERT_TRUE(collides(cut - 2e-9));
+    ThreadPool pool(2);
+    const PitchProof p = prove_feasible_pitches(Scenario{}, {{window_lo, 0.452, true}}, pool);
+    ASSERT_FALSE(p.proved.empty());
+    for (const PitchInterval& iv : p.proved) EXPECT_GE(iv.lo, cut - tol::pitch) << "proved a colliding pitch";
+    ASSERT_FALSE(p.unproved.empty());
+    EXPECT_EQ(p.unproved.front().lo, window_lo);
+    EXPECT_GE(p.unproved.front().hi, cut - tol::pitch);
+    // The rest of the range is proved.
+    EXPECT_EQ(p.proved.back().hi, 0.452);
+    EXPECT_LT(p.proved.front().lo - cut, 1e-6);
+}
