@@ -76,7 +76,10 @@ Json min_pitch_measure(const Scenario& s, const MeasureOptions& options, std::st
     if (mp.jam)
         jam = fmt::format("at pitch {} m the dragon cannot follow the spiral to radius {} m: {}", mp.jam->pitch,
                           s.path.turn_radius, jam_sentence(mp.jam->jam));
-    return min_pitch_answer(mp, s.path.turn_radius);
+    // The command's keys but what it proved ("proof"), as collide's.
+    Json answer = min_pitch_answer(mp, s.path.turn_radius);
+    answer.erase("proof");
+    return answer;
 }
 
 // The command's design, followability and check for a first contact; its length study (two
