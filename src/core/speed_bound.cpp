@@ -155,8 +155,10 @@ Reach reach_between(const Path& path, double lo, double hi, double s0, double s1
 
 }  // namespace
 
-StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainFacts& c0, const ChainFacts& c1) {
+StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainFacts& c0, const ChainFacts& c1,
+                           std::vector<HandleArc>* arcs) {
     StretchBound out;
+    if (arcs) arcs->clear();
     const size_t n = c0.place.size();
     const double h = c1.head_arc - c0.head_arc;
     const auto fail = [&out](size_t handle) {
@@ -182,6 +184,7 @@ StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainF
         if (!travel(path, c0, c1, 0, moved, front.turning, front.kappa)) return fail(0);
         front.from_start = front.from_end = moved;
     }
+    if (arcs) arcs->push_back({front.lo, front.hi, front.turning});
     for (size_t i = 0; i + 1 < n; ++i) {
         const double d = spec.link_after(static_cast<int>(i));
         const double ca0 = c0.cos_a[i], sa0 = c0.sin_a[i], cb0 = c0.cos_b[i], sb0 = c0.sin_b[i];
@@ -290,6 +293,7 @@ StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainF
         }
         v = speed_now;
         rear.forward = forward;
+        if (arcs) arcs->push_back({rear.lo, rear.hi, rear.turning});
         front = rear;
     }
     return out;

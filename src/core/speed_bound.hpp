@@ -82,6 +82,14 @@ void gather(const Path& path, const Frame& f, ChainFacts& out);
 
 // The bound over head travel between the chains c0 and c1 (c0 behind, both of the same chain on
 // `path` at head speed 1, every moment between them within the valid motion).
-StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainFacts& c0, const ChainFacts& c1);
+//
+// If `arcs` is given it receives, when bounded, where each handle lies over the whole stretch
+// (Lemmas A and A'): on the path between the places lo and hi, whose arc turns by `turning`.
+struct HandleArc {
+    Place lo, hi;
+    double turning = 0.0;  // rad
+};
+StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainFacts& c0, const ChainFacts& c1,
+                           std::vector<HandleArc>* arcs = nullptr);
 
 }  // namespace dragon::speed

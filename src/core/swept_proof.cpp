@@ -6,6 +6,7 @@
 #include <numbers>
 #include <span>
 
+#include "speed_bound.hpp"
 #include "untouched_tail.hpp"
 #include "dragon/constants.hpp"
 #include "dragon/geometry.hpp"
@@ -266,6 +267,34 @@ StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Fram
     return out;
 }
 
+// A step where a handle may stop or back up, or a link turn by a quarter turn or more (the
+// turnaround's tight arcs): Proposition 1 does not hold, but the speed bounds of Q5's proof do
+// (core/speed_bound.hpp, Lemmas A and A'): each handle lies, for the whole step, on an arc of the
+// path between two places, from the chain at the step's two ends and the rigid-link relation.
+// Each bench is then enclosed from its handles' arcs (each within L min(tau, 2) / 4 of its chord,
+// Proposition 2) as a forward step's are, and the pairs separated in the fixed frame.
+StepProof prove_by_speed_bounds(const Path& path, const BenchSpec& spec, const Frame& f0, const Frame& f1,
+                                SweptWorkspace& ws) {
+    const size_t nb = std::min(f0.benches.size(), f1.benches.size());
+    speed::gather(path, f0, ws.facts0);
+    speed::gather(path, f1, ws.facts1);
+    const speed::StretchBound bound = speed::bound_stretch(path, spec, ws.facts0, ws.facts1, &ws.arcs);
+    if (bound.verdict != speed::BoundVerdict::bounded || ws.arcs.size() < nb + 1)
+        return {StepVerdict::not_monotone, INFINITY, bound.handle, 0};
+    ws.spans.resize(nb + 1);
+    for (size_t i = 0; i <= nb; ++i) {
+        const speed::HandleArc& a = ws.arcs[i];
+        const double length = std::abs(path.arc(a.hi) - path.arc(a.lo));
+        ws.spans[i] = {path.at(a.lo).pos, path.at(a.hi).pos, length * std::min(a.turning, 2.0) / 4.0};
+    }
+    ws.benches.resize(nb);
+    for (size_t k = 0; k < nb; ++k)
+        enclose(f0.benches[k], spec.link_length(static_cast<int>(k) + 1), ws.spans[k], ws.spans[k + 1], ws.benches[k]);
+    // No chain-neighbour bound here (its turnings assume handles moving forward): enclosures only.
+    const auto no_turning = [](size_t, size_t) { return INFINITY; };
+    return separate_enclosures(spec, f0, f1, 1, false, no_turning, kNotSeparately, ws);
+}
+
 }  // namespace
 
 StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, const Frame& f1, SweptWorkspace& ws) {
@@ -296,13 +325,13 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
     for (size_t i = 0; i < nh; ++i) {
         const Place& p0 = f0.handles[i].place;
         const Place& p1 = f1.handles[i].place;
-        if (!at_or_ahead(path, p1, p0)) return {StepVerdict::not_monotone, INFINITY, static_cast<int>(i), 0};
+        if (!at_or_ahead(path, p1, p0)) return prove_by_speed_bounds(path, spec, f0, f1, ws);
         if (i + 1 < nh) {
             // The link from handle i to handle i + 1 lies, over the step, between handle i + 1's
             // place at the start and handle i's at the end.
             const Place& rear = f0.handles[i + 1].place;
             if (!at_or_ahead(path, p1, rear) || !(turning(i + 1, i) < kMaxLinkTurning))
-                return {StepVerdict::not_monotone, INFINITY, static_cast<int>(i + 1), 0};
+                return prove_by_speed_bounds(path, spec, f0, f1, ws);
         }
         // 2. The handle's arc over the step, within `dilation` of its chord (the fixed frame's
         // enclosures only).

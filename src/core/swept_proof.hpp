@@ -28,6 +28,7 @@
 #include "dragon/chain.hpp"
 #include "dragon/path.hpp"
 #include "dragon/scenario.hpp"
+#include "speed_bound.hpp"
 #include "untouched_tail.hpp"
 
 namespace dragon::contact {
@@ -86,6 +87,8 @@ struct SweptWorkspace {
     std::vector<int> order;
     std::vector<int> active;
     std::vector<std::optional<BenchReach>> reach;  // each bench's offsets from the spiral (cells only)
+    speed::ChainFacts facts0, facts1;   // the steps proved by speed bounds (the turnaround's tight arcs)
+    std::vector<speed::HandleArc> arcs;
 };
 
 // Proves (or fails to prove) that no two non-adjacent benches of the chain touch at any head
