@@ -156,6 +156,7 @@ struct RunClearance {
     int bench_b = 0;           // and its second, bench_a < bench_b
     std::optional<Contact> first_contact;  // the window's first contact, if any
     bool collision_free() const { return !first_contact; }  // no contact in the window
+    ContactProof proof{};      // what the first-contact search proved over the window (`prove`)
     double scan_step = 0.0;    // s
     double scan_travel = 0.0;  // m of head travel: the scan's spacing (each local minimum then refined)
     int evaluations = 0;       // frames whose clearance the scan and its refinement computed
@@ -164,10 +165,11 @@ struct RunClearance {
 };
 // Over `window` cut to the valid motion (cut_window). `progress` hears of the scan's samples
 // (most of the time taken). The first-contact search runs on `executor` (null:
-// the calling thread alone). Throws InputError as cut_window does, ("clearance time range") for a
+// the calling thread alone), and proves every step it takes when `prove` is set
+// (ContactSearchOptions::prove_steps; RunClearance::proof says what it proved). Throws InputError as cut_window does, ("clearance time range") for a
 // window too long to scan (over 1e8 bench checks), and Cancelled when `executor` asks to stop.
 RunClearance min_clearance(const Scenario& s, const RunWindow& window = kTurnaroundWindow,
-                           const WorkProgress& progress = {}, Executor* executor = nullptr);
+                           const WorkProgress& progress = {}, Executor* executor = nullptr, bool prove = false);
 
 // What Q5's proof established (docs/methods.md, section 10.1): branch and bound over head
 // travel, each stretch of the window bounded from the chain at its two ends (a slope bound from

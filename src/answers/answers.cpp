@@ -64,6 +64,12 @@ Json overlap_json(const std::optional<Overlap>& o) {
     return {{"benches", {o->bench_a, o->bench_b}}, {"depth", o->depth}};
 }
 
+// Where a first contact is proved to lie: {"travel": [lo, hi], "time": [lo, hi]}, or null.
+Json enclosure_json(const std::optional<Contact>& c) {
+    return c ? Json{{"travel", {c->enclosure_lo, c->enclosure_hi}}, {"time", {c->enclosure_time_lo, c->enclosure_time_hi}}}
+             : Json(nullptr);
+}
+
 Json proof_json(const ContactProof& p) {
     return {{"method", p.method()},
             {"steps", p.proved_steps},
@@ -80,9 +86,7 @@ Json collide_answer(const CollideAnswer& r, bool with_handles) {
                     : Json{{"time", nullptr}, {"travel", nullptr}, {"benches", nullptr}, {"head_radius", nullptr},
                            {"point", nullptr}, {"tolerance", nullptr}};
     answer["evaluations"] = c ? Json(c->steps) : Json(nullptr);
-    answer["enclosure"] = c ? Json{{"travel", {c->enclosure_lo, c->enclosure_hi}},
-                                   {"time", {c->enclosure_time_lo, c->enclosure_time_hi}}}
-                            : Json(nullptr);
+    answer["enclosure"] = enclosure_json(c);
     answer["proof"] = proof_json(r.proof);
     add_window(answer, r.window);
     answer["jam"] = jam_json(r.jam);
@@ -169,6 +173,8 @@ Json turnaround_answer(const SCurve& d, const std::optional<Jam>& design_jam, co
                   {"evaluations", clear->evaluations}};
         add_window(c, clear->window);
         answer["clearance"] = c;
+        answer["enclosure"] = enclosure_json(clear->first_contact);
+        answer["proof"] = proof_json(clear->proof);
     }
     // The end of the valid motion where it cuts the clearance run short, else on the design.
     answer["jam"] = jam_json(clear && clear->jam ? clear->jam : design_jam);

@@ -91,7 +91,11 @@ Json turnaround_measure(const Scenario& s, const MeasureOptions& options, std::s
     const RunClearance clear = min_clearance(s, options.window(PathKind::turnaround), {}, &here);
     const std::optional<Jam>& j = clear.jam ? clear.jam : design_jam;
     if (j) jam = jam_sentence(*j);
-    return turnaround_answer(design, design_jam, clear, nullptr);
+    // The command's keys but what its first-contact search proved, as collide's.
+    Json answer = turnaround_answer(design, design_jam, clear, nullptr);
+    answer.erase("enclosure");
+    answer.erase("proof");
+    return answer;
 }
 
 Json max_speed_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {

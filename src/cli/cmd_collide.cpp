@@ -5,6 +5,7 @@
 
 #include "dragon/answers.hpp"
 #include "commands.hpp"
+#include "wording.hpp"
 #include "report.hpp"
 #include "scenario_flags.hpp"
 #include "status.hpp"
@@ -25,27 +26,6 @@ struct CollideOptions {
     bool quiet = false;
     bool prove = false;
 };
-
-// What the search proved, in words: one line.
-std::string proof_words(const ContactProof& p, const Contact* c) {
-    if (p.proved_steps == 0)
-        return fmt::format("not proved: each of the search's {} steps rests on its rate bound checked at its end "
-                           "(--prove encloses every bench over each step)\n",
-                           p.unproved_steps);
-    std::string out =
-        c ? fmt::format("proved: the first contact lies in t = [{:.15g}, {:.15g}] s (head travel [{:.15g}, {:.15g}] m): "
-                        "{} steps proved contact-free by enclosing every bench over each step",
-                        c->enclosure_time_lo, c->enclosure_time_hi, c->enclosure_lo, c->enclosure_hi, p.proved_steps)
-          : fmt::format("proved: no contact over head travel [{:.15g}, {:.15g}] m: {} steps proved contact-free by "
-                        "enclosing every bench over each step",
-                        p.proved_from, p.proved_to, p.proved_steps);
-    if (std::isfinite(p.least_gap)) out += fmt::format(", least separation proved {:.3g} m", p.least_gap);
-    if (p.unproved_steps > 0)
-        out += fmt::format("; not proved: {} steps over {:.6g} m of head travel, where a link turned too far for the "
-                           "enclosures, rest on the rate bound checked at their ends",
-                           p.unproved_steps, p.unproved_travel);
-    return out + "\n";
-}
 
 // With no contact the output file still answers: the table with its header and no rows, so
 // that an older file from another run is never left looking like this one's answer.

@@ -29,6 +29,7 @@ struct TurnaroundOptions {
     ScenarioFlags scenario;
     bool json = false;
     bool skip_clearance = false;
+    bool prove = false;
     WindowFlags window;
     std::string out;
     bool quiet = false;
@@ -84,6 +85,7 @@ void print_text(const TurnaroundStudy& st, const std::optional<RunClearance>& cl
                    range, clear->distance, clear->bench_a, clear->bench_b, clear->time);
     }
     fmt::print("{}", window_cuts(w, "the check"));
+    fmt::print("{}", proof_words(clear->proof, clear->first_contact ? &*clear->first_contact : nullptr));
 }
 
 }  // namespace
@@ -97,6 +99,9 @@ void register_turnaround(CLI::App& app, Registry& reg) {
     sub->add_option("-o,--out", opt->out, "Write the length study as CSV to this file");
     auto* skip = sub->add_flag("--no-clearance", opt->skip_clearance,
                                "Skip the check for a first contact and the clearance before it");
+    auto* prove = sub->add_flag("--prove", opt->prove,
+                                "Prove the check: enclose every bench over each step of the first-contact search");
+    prove->excludes(skip);
     // The window is the check's: without the check it would do nothing.
     opt->window.add_to(sub, "Check from here (default -100m: 100 s before the turn at 1 m/s)",
                        "Check up to here (default 100m)");
@@ -118,7 +123,8 @@ void register_turnaround(CLI::App& app, Registry& reg) {
         if (!opt->skip_clearance) {
             ProgressLine progress("samples", opt->quiet);  // long chains and fast heads take seconds
             clear = min_clearance(s, window,
-                                  [&progress](std::int64_t done, std::int64_t total) { progress.update(done, total); }, &ex);
+                                  [&progress](std::int64_t done, std::int64_t total) { progress.update(done, total); }, &ex,
+                                  opt->prove);
         }
         if (!opt->out.empty()) write_study_csv(st, opt->out, &outputs);
         if (opt->json) print_json(turnaround_answer(st.design, st.design_jam, clear, &st));

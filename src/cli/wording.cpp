@@ -1,5 +1,6 @@
 #include "wording.hpp"
 
+#include <cmath>
 #include <vector>
 
 #include <fmt/format.h>
@@ -9,5 +10,26 @@ namespace dragon::cli {
 std::string count_of(long long n, const std::string& one, const std::string& many) {
     return fmt::format("{} {}", n, n == 1 ? one : many.empty() ? one + "s" : many);
 }
+
+std::string proof_words(const ContactProof& p, const Contact* c) {
+    if (p.proved_steps == 0)
+        return fmt::format("not proved: each of the search's {} steps rests on its rate bound checked at its end "
+                           "(--prove encloses every bench over each step)\n",
+                           p.unproved_steps);
+    std::string out =
+        c ? fmt::format("proved: the first contact lies in t = [{:.15g}, {:.15g}] s (head travel [{:.15g}, {:.15g}] m): "
+                        "{} steps proved contact-free by enclosing every bench over each step",
+                        c->enclosure_time_lo, c->enclosure_time_hi, c->enclosure_lo, c->enclosure_hi, p.proved_steps)
+          : fmt::format("proved: no contact over head travel [{:.15g}, {:.15g}] m: {} steps proved contact-free by "
+                        "enclosing every bench over each step",
+                        p.proved_from, p.proved_to, p.proved_steps);
+    if (std::isfinite(p.least_gap)) out += fmt::format(", least separation proved {:.3g} m", p.least_gap);
+    if (p.unproved_steps > 0)
+        out += fmt::format("; not proved: {} steps over {:.6g} m of head travel, where neither the handles' motion nor their speed bounds "
+                           "enclose the benches, rest on the rate bound checked at their ends",
+                           p.unproved_steps, p.unproved_travel);
+    return out + "\n";
+}
+
 
 }  // namespace dragon::cli

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "dragon/analyses.hpp"
 #include "dragon/answers.hpp"
 
 namespace dragon::cli {
@@ -10,5 +11,8 @@ namespace dragon::cli {
 // "1 frame", "2 frames", "0 frames": a count and its noun, singular for one; `many` for a
 // plural that is not the noun plus "s" ("local maxima").
 std::string count_of(long long n, const std::string& one, const std::string& many = "");
+
+// What a first-contact search proved, in words: one line (`c`: its contact, or null).
+std::string proof_words(const ContactProof& p, const Contact* c);
 
 }  // namespace dragon::cli

@@ -63,7 +63,7 @@ private:
 }  // namespace
 
 RunClearance min_clearance(const Scenario& scenario, const RunWindow& window, const WorkProgress& progress,
-                           Executor* executor) {
+                           Executor* executor, bool prove) {
     Scenario s = scenario;
     s.path.kind = PathKind::turnaround;
     const Simulation sim(s);
@@ -83,6 +83,8 @@ RunClearance min_clearance(const Scenario& scenario, const RunWindow& window, co
     // The first contact, exactly, over the whole window: the clearance is looked at up to it.
     ContactSearchOptions options;
     options.executor = executor;
+    options.prove_steps = prove;
+    options.proof = &out.proof;
     out.first_contact = first_contact_travel(sim, cut.from, cut.to, options);
     out.scan_travel = kScanTravel;
     out.scan_step = kScanTravel / v;
