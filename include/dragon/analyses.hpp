@@ -103,7 +103,9 @@ struct Contact {
 // The search takes the range in stretches of head travel cut at fixed places (multiples of
 // 10 m), spread over the executor's workers: the answer, and the work it took, do not depend on
 // the number of workers, nor on which one finished first.
-using StepObserver = std::function<void(double from, double to)>;  // a contact-free stretch, m of head travel
+// A contact-free stretch as times, s, on the simulation's own clock (the search steps in head
+// travel and reports each step's ends as Simulation::time_of them).
+using StepObserver = std::function<void(double from, double to)>;
 // How first_contact searches: where it runs, and what it tells or skips.
 struct ContactSearchOptions {
     // If given, hears of every interval [from, to] the search has declared contact-free by its

@@ -175,6 +175,16 @@ class CollideResult(Result):
     ``to_travel`` in m); ``jam`` (where the dragon's valid motion ended the search, or None);
     ``handles`` (every handle then, rounded as the tool prints). ``frame`` (not in ``to_dict``)
     is that moment as a :class:`Frame`.
+
+    What the search proved, as ``dragon collide --json`` says it: ``enclosure`` (None without a
+    contact) holds the first contact's ``travel`` [lo, hi] (m of head travel: no contact is
+    proved before lo, benches touch at hi) and ``time`` [lo, hi] (s); ``proof`` says how:
+    ``method`` ("enclosure": every step proved contact-free by enclosing each bench over it, with
+    ``prove=True``; "rate": each step rests on the rate bound checked at its end, without it;
+    "enclosure+rate": some steps, ``unproved_steps`` over ``unproved_travel`` m, where a link
+    turned too far for the enclosures), ``steps`` (proved), ``subdivisions``,
+    ``least_separation`` (m, the least separation the proved steps proved, or None) and
+    ``covered_travel`` [from, to] (m of head travel the accepted steps cover).
     """
 
 
@@ -199,6 +209,15 @@ class MaxSpeedResult(Result):
     ``unbounded`` (a handle's speed without bound before the window ends). Where the end of
     the valid motion cuts the window short (``jam`` set), ``max_head_speed`` is None: the dragon
     cannot make the turn at any speed.
+
+    What was proved, as ``dragon max-speed --json`` says it: with ``prove=True``, ``enclosure``
+    [lo, hi] (m/s: every head speed up to lo keeps every handle to the limit, any over hi does
+    not; None if not every stretch could be bounded) and ``proof``: ``method`` ("lipschitz
+    bound", or "lipschitz bound, incomplete"), ``ratio`` [lo, hi] (the largest ratio's
+    enclosure, hi None when not proved), ``tolerance`` (relative), ``stretches``,
+    ``subdivisions``, ``evaluations``, ``unproved``, ``unproved_travel`` (m) and ``narrowest``
+    (m of head travel). Without it, ``enclosure`` is None and ``proof`` is
+    ``{"method": "sampled"}``: the maximum is the scan's and its refinement's.
     """
 
 
@@ -485,7 +504,7 @@ def _workers(workers: Any) -> int:
 
 
 def collide(scenario: Optional[Scenario] = None, *, path: str = "spiral", from_: Moment = None,
-            to: Moment = None, workers: int = 0) -> CollideResult:
+            to: Moment = None, workers: int = 0, prove: bool = False) -> CollideResult:
     """Q2: the first moment two non-adjacent benches touch, to 1e-9 s (``dragon collide``).
 
     Searched over `from_` .. `to` (seconds, or head travel as "-100m"): by default on the plain
@@ -494,8 +513,13 @@ def collide(scenario: Optional[Scenario] = None, *, path: str = "spiral", from_:
     answer's ``overlap_at_start`` (their benches and depth: the chain collided before it), as
     ``dragon collide --json`` says. `workers`: threads the search runs on (0: one per core),
     made for the call and joined before it returns.
+
+    ``prove=True`` (``dragon collide --prove``) proves every step of the search contact-free by
+    enclosing each bench over it: slower (about four times the evaluations on the contest's Q2),
+    the same contact, and the result's ``enclosure`` and ``proof`` say what was proved (see
+    :class:`CollideResult`). `prove` is True or False; anything else is an InputError naming it.
     """
-    text, frame = _core._collide(_values(scenario), path, from_, to, _workers(workers))
+    text, frame = _core._collide(_values(scenario), path, from_, to, _workers(workers), prove)
     result = CollideResult(json.loads(text))
     result.frame = Frame(frame) if frame is not None else None
     return result
@@ -536,11 +560,17 @@ def turnaround(scenario: Optional[Scenario] = None, *, from_: Moment = None, to:
 
 
 def max_speed(scenario: Optional[Scenario] = None, *, limit: float = 2.0, from_: Moment = None,
-              to: Moment = None, workers: int = 0) -> MaxSpeedResult:
+              to: Moment = None, workers: int = 0, prove: bool = False) -> MaxSpeedResult:
     """Q5: the largest head speed (m/s) keeping every handle at or under `limit` (m/s) over the
     turnaround's window (default: 100 m of head travel either side of the turn) (``dragon max-speed``).
-    `workers`: threads the search runs on (0: one per core)."""
-    return MaxSpeedResult(json.loads(_core._max_speed(_values(scenario), float(limit), from_, to, _workers(workers))))
+    `workers`: threads the search runs on (0: one per core).
+
+    ``prove=True`` (``dragon max-speed --prove``) bounds every handle's speed over every stretch
+    of the window: slower (about three times the search), and the result's ``enclosure`` holds
+    the largest head speed (see :class:`MaxSpeedResult`). `prove` is True or False; anything
+    else is an InputError naming it."""
+    return MaxSpeedResult(json.loads(_core._max_speed(_values(scenario), float(limit), from_, to, _workers(workers),
+                                                      prove)))
 
 
 def solve(scenario: Optional[Scenario] = None, out: Union[None, str, os.PathLike] = None, *,

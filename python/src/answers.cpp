@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "common.hpp"
+#include "dragon/analyses.hpp"
 #include "dragon/answers.hpp"
 #include "dragon/atomic_file.hpp"
 #include "dragon/contest.hpp"
@@ -23,18 +24,26 @@ py::dict frame_object(const Simulation& sim, const Frame& f);
 
 
 void bind_answers(py::module_& m) {
+    // `prove`: every step of the search proved by enclosures, as `dragon collide --prove`; the
+    // answer's "enclosure" and "proof" say what was proved either way.
     m.def("_collide",
           [](const py::dict& scenario, const std::string& path, const py::object& from, const py::object& to,
-             int workers) {
+             int workers, const py::object& prove) {
+              ContactSearchOptions options;
+              options.prove_steps = switch_from(prove, Key::prove);
               Scenario s = scenario_from(scenario);
               s.path.kind = path_kind(path);
               const RunWindow window = window_from(default_window(s.path.kind), from, to);
               const Simulation sim(s);
-              const CollideAnswer a = interruptible([&](Executor& ex) { return collide(sim, window, &ex); }, workers_from(workers));
+              const CollideAnswer a = interruptible([&](Executor& ex) {
+                  options.executor = &ex;
+                  return collide(sim, window, options);
+              }, workers_from(workers));
               return py::make_tuple(json_text(collide_answer(a, true)),
                                     a.contact ? py::object(frame_object(sim, a.contact->frame)) : py::none());
           },
-          py::arg("scenario"), py::arg("path"), py::arg("from_"), py::arg("to"), py::arg("workers") = 0);
+          py::arg("scenario"), py::arg("path"), py::arg("from_"), py::arg("to"), py::arg("workers") = 0,
+          py::arg("prove") = false);
 
     m.def("_min_pitch",
           [](const py::dict& scenario, std::optional<double> lo, std::optional<double> hi, double grid,
@@ -71,16 +80,24 @@ void bind_answers(py::module_& m) {
           py::arg("scenario"), py::arg("from_"), py::arg("to"), py::arg("clearance"), py::arg("progress"),
           py::arg("workers"));
 
+    // `prove`: the largest speed bounded over the whole window, as `dragon max-speed --prove`;
+    // the answer's "enclosure" and "proof" say what was proved either way.
     m.def("_max_speed",
-          [](const py::dict& scenario, double limit, const py::object& from, const py::object& to, int workers) {
+          [](const py::dict& scenario, double limit, const py::object& from, const py::object& to, int workers,
+             const py::object& prove) {
+              MaxSpeedOptions how;
+              how.prove = switch_from(prove, Key::prove);
               Scenario s = scenario_from(scenario);
               s.path.kind = PathKind::turnaround;
               const RunWindow window = window_from(kTurnaroundWindow, from, to);
               return interruptible(
-                  [&](Executor& ex) { return json_text(max_speed_answer(max_head_speed(s, limit, window, &ex), limit)); },
+                  [&](Executor& ex) {
+                      return json_text(max_speed_answer(max_head_speed(s, limit, window, &ex, how), limit));
+                  },
                   workers_from(workers));
           },
-          py::arg("scenario"), py::arg("limit"), py::arg("from_"), py::arg("to"), py::arg("workers"));
+          py::arg("scenario"), py::arg("limit"), py::arg("from_"), py::arg("to"), py::arg("workers"),
+          py::arg("prove") = false);
 
     // The contest's questions; with `out`, its files as `dragon solve -o out` writes them (all new
     // or all as they were). Returns summary.json's text.

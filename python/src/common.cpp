@@ -178,6 +178,11 @@ RunWindow window_from(const RunWindow& defaults, const py::object& from, const p
     return w;
 }
 
+bool switch_from(const py::object& v, Key key) {
+    if (!py::isinstance<py::bool_>(v)) throw InputError(key, py::str(py::repr(v)).cast<std::string>(), "give True or False");
+    return v.cast<bool>();
+}
+
 WorkProgress progress_from(const py::object& callback) {
     if (callback.is_none()) return {};
     // The last copy may be dropped on a worker thread: the object is released holding the GIL.

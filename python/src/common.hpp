@@ -41,6 +41,10 @@ PathKind path_kind(const std::string& name);
 std::optional<Along> along_from(const py::object& v, Key field);
 // The window over a default: `from_` and `to` as given.
 RunWindow window_from(const RunWindow& defaults, const py::object& from, const py::object& to);
+// A switch from Python (`prove`): True or False. Anything else, 1 and "yes" among them, is
+// refused naming `key`: a switch that silently took any truthy value would run a slow proof,
+// or skip one, on a typo.
+bool switch_from(const py::object& v, Key key);
 
 // The end of the valid motion as a dict (the answers' "jam" keys), None when unset.
 py::object jam_object(const std::optional<Jam>& j);

@@ -6,6 +6,9 @@
 
 namespace dragon::contact {
 
+// Speeds and rates here are per metre of head travel and steps are head travel, m: the search
+// evaluates the motion at 1 m/s (first_contact.cpp).
+//
 // Pairs beyond the broad phase's margin, bounded group by group. A bench's velocity field seen
 // in a frame turning about the origin at rate w is v_c - w perp(c) + (omega - w) perp(x - c), so
 // its points move there at most S(w) = |v_c - w perp(c)| + |omega - w| R (R: half-diagonal).

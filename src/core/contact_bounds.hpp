@@ -16,13 +16,13 @@ namespace dragon::contact {
 // The benches' distances from the origin and how fast they change (motion.hpp), for every bench.
 void radial_extents(const Frame& f, const std::vector<BenchMotion>& motion, std::vector<Radial>& out);
 // A lower bound on the distance between two benches, or two groups, from their radii alone
-// (not positive when their radii overlap), and the time that distance lasts at least.
+// (not positive when their radii overlap), and the head travel (m) that distance lasts at least.
 double radial_gap(const Radial& a, const Radial& b);
 double radial_step(const Radial& a, const Radial& b, double rate_safety);
 
-// The time no pair of benches farther apart than `margin` can touch in (see contact_bounds.cpp).
-// Each group pair's bounds go to `record`. Given `last`, the records of the evaluation `step`
-// ago (the same groups), `broken` is set when a group pair closes here faster than the gap it
+// The head travel (m) over which no pair of benches farther apart than `margin` can touch (see
+// contact_bounds.cpp). Each group pair's bounds go to `record`. Given `last`, the records of the
+// evaluation `step` m of head travel back (the same groups), `broken` is set when a group pair closes here faster than the gap it
 // had there could take for the whole step: the step's promise for it did not hold at its end.
 double far_pairs_step(const Frame& f, const std::vector<BenchMotion>& motion, const std::vector<double>& half_diagonals,
                       const std::vector<Radial>& radial, double margin, std::vector<GroupRecord>& record,

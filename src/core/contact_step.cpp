@@ -11,10 +11,11 @@ namespace dragon::contact {
 
 // One pass over the broad phase's pairs gives the clearance and the safe step.
 //
-// Each pair first gets the first-order step g / (ws.rate_safety L) from its projected gap g and the
-// bound L on its closing speed. Pairs whose first-order step could decide the step are then
+// Steps are in m of head travel, speeds and rates per m of head travel (the search runs on the
+// motion at 1 m/s). Each pair first gets the first-order step g / (ws.rate_safety L) from its
+// projected gap g and the bound L on its closing speed. Pairs whose first-order step could decide the step are then
 // looked at closer: their eight corner gaps, each with its exact rate, are bounded to second
-// order, d(t + h) >= d + rate h - M h^2 / 2, with M ws.rate_safety times the larger of the rate
+// order, d(x + h) >= d + rate h - M h^2 / 2, with M ws.rate_safety times the larger of the rate
 // changes seen since the last evaluation and a rotational floor. A pair's step is the better
 // of the two bounds. This is what makes grazing passes cheap: a corner gliding past at a
 // tiny distance with zero rate still allows sqrt(2 d / M), where the first-order bound would
@@ -27,7 +28,8 @@ namespace {
 // Stage 1: every broad-phase pair's first-order step. Pairs their radii keep apart for the whole
 // step, farther than a probe looks, are passed over (gap infinite); the others get their
 // projected gap (a lower bound on the distance), and those whose first-order step could set the
-// step go to ws.tight. Returns the index of the pair with the smallest projected gap.
+// step go to ws.tight. Returns the index of the pair with the smallest projected gap. `step`
+// (m of head travel) is how far this evaluation is from `last`, whose promises `check` holds it to.
 size_t screen_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pairs, double cap, const StepRecord& last,
                     StepRecord& next, bool check, double step, Workspace& ws, bool& broken) {
     const std::vector<BenchMotion>& motion = ws.motion;
@@ -86,7 +88,7 @@ size_t screen_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pair
 // only a part of the list is looked at before the first-order steps exceed the step found so
 // far), each bounded to second order on its eight corner gaps. Returns the step; ws.pair_steps
 // holds each pair looked at with its step, and `skipped` what every other pair allows at least.
-double refine_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pairs, double t, double cap,
+double refine_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pairs, double x, double cap,
                     const Memory& memory, Memory& next, FlatMap<GapRecord>& gaps, bool check, Workspace& ws,
                     double& skipped, bool& bound_broken) {
     using Candidate = Workspace::Candidate;
@@ -113,14 +115,14 @@ double refine_pairs(const Frame& f, const std::vector<std::pair<int, int>>& pair
         // tilting a relative velocity of size <= bound.
         double observed = (std::abs(ma.omega) + std::abs(mb.omega)) * c.bound;
         const std::uint64_t key = key_of(ia, ib);
-        PairMemory mem{t, {}, 0.0};
-        if (const PairMemory* last = memory.find(key); last && last->time != t) {
-            const double dt = std::abs(t - last->time);
+        PairMemory mem{x, {}, 0.0};
+        if (const PairMemory* last = memory.find(key); last && last->travel != x) {
+            const double dx = std::abs(x - last->travel);  // m of head travel since the rates were measured
             for (size_t q = 0; q < 8; ++q) {
                 const double change = std::abs(gaps8[q].rate - last->rates[q]);
-                observed = std::max(observed, change / dt);
-                // The last step assumed the rates change by at most curvature * dt.
-                if (check && change > last->curvature * dt * (1.0 + tol::promise_relative) + tol::promise_rate_change) bound_broken = true;
+                observed = std::max(observed, change / dx);
+                // The last step assumed the rates change by at most curvature * dx.
+                if (check && change > last->curvature * dx * (1.0 + tol::promise_relative) + tol::promise_rate_change) bound_broken = true;
             }
         }
         mem.curvature = ws.rate_safety * observed;
@@ -184,12 +186,12 @@ Overlap overlap_of(const Frame& f, Workspace& ws) {
     return out;
 }
 
-Approach approach(const Frame& f, double t, double max_step, const StepRecord& last, StepRecord& next, bool check,
+Approach approach(const Frame& f, double x, double max_step, const StepRecord& last, StepRecord& next, bool check,
                   Workspace& ws) {
     Approach a{{INFINITY, 0, 0, Vec2::Zero(), Vec2::Zero()}, INFINITY, 0.0, false, INFINITY};
-    next.time = t;
+    next.travel = x;
     if (f.benches.size() < 3) return a;
-    const double step = std::abs(t - last.time);
+    const double step = std::abs(x - last.travel);  // m of head travel since the last accepted evaluation
     // The search's own scratch (a search evaluates hundreds of frames).
     bench_motions_into(f, ws.motion);
     ws.half_diagonals.resize(f.benches.size());
@@ -202,7 +204,7 @@ Approach approach(const Frame& f, double t, double max_step, const StepRecord& l
     const auto& pairs = ws.broad.candidate_pairs(f, kMargin);
     const size_t seed = screen_pairs(f, pairs, cap, last, next, check, step, ws, a.bound_broken);
     double skipped = cap;
-    a.safe_step = refine_pairs(f, pairs, t, cap, last.near, next.near, next.gaps, check, ws, skipped, a.bound_broken);
+    a.safe_step = refine_pairs(f, pairs, x, cap, last.near, next.near, next.gaps, check, ws, skipped, a.bound_broken);
     if (pairs.empty()) {
         a.clear = clearance(f, kMargin, ws.broad);
         a.others_step = a.safe_step;

@@ -1,5 +1,7 @@
-// One evaluation of the first-contact search: the clearance of a frame and the time no contact
-// can happen in (the method is described in first_contact.cpp).
+// One evaluation of the first-contact search: the clearance of a frame and the head travel no
+// contact can happen in (the method is described in first_contact.cpp). The search runs on the
+// motion at 1 m/s, so a frame's time is its head travel (m), and every speed and rate here is per
+// metre of head travel.
 #pragma once
 
 #include <array>
@@ -22,7 +24,7 @@ inline constexpr double kProbeGap = 2e-3; // m; below this clearance, try to bra
 // What the stepper remembers of the near pairs at the last evaluation: the corner-gap rates and
 // the curvature bound the step relied on, to check that bound against the rates found next.
 struct PairMemory {
-    double time;
+    double travel;  // m of head travel: where the rates were measured
     std::array<double, 8> rates;
     double curvature;
 };
@@ -104,12 +106,12 @@ struct GroupRecord {
 // Everything an evaluation promised, for checking at the next one: the near pairs' rates, every
 // broad-phase pair's gap and closing speed, every group pair's.
 struct StepRecord {
-    double time = 0.0;
+    double travel = 0.0;  // m of head travel: where the evaluation that promised was made
     Memory near;
     FlatMap<GapRecord> gaps;
     std::vector<GroupRecord> groups;
     void swap(StepRecord& other) noexcept {
-        std::swap(time, other.time);
+        std::swap(travel, other.travel);
         near.swap(other.near);
         gaps.swap(other.gaps);
         groups.swap(other.groups);
@@ -121,7 +123,7 @@ struct Approach {
     // kProbeGap (the pairs passed over are farther apart than that), else only an upper bound.
     Clearance clear;
     double safe_step;  // m of head travel: the rate bounds expect no contact sooner (the step's proof is swept_proof's)
-    double rate;       // d/dt of the closing pair's separation now (negative: closing)
+    double rate;       // m/m: the closing pair's separation's derivative in head travel now (negative: closing)
     // The step that led here broke a promise of the last evaluation: a near pair's rates changed
     // faster than its curvature bound allowed, or a pair (or group of pairs, or two benches kept
     // apart by their radii) closes here faster than the gap it had there could take for the
@@ -163,10 +165,11 @@ inline constexpr double kSureGap = 1e-9;  // m: far above the rounding of a clea
 enum class Overlap { yes, no, unsure };
 Overlap overlap_of(const Frame& f, Workspace& ws);
 
-// `last` is what the last accepted evaluation promised; this one's goes to `next` (cleared
-// first), for the caller to keep if it accepts the step; `check` holds this evaluation, the end
-// of the step from `last`, to those promises.
-Approach approach(const Frame& f, double t, double max_step, const StepRecord& last, StepRecord& next, bool check,
+// The evaluation of `f`, the chain at head travel `x` (m); `max_step` caps its step (m of head
+// travel). `last` is what the last accepted evaluation promised; this one's goes to `next`
+// (cleared first), for the caller to keep if it accepts the step; `check` holds this evaluation,
+// the end of the step from `last`, to those promises.
+Approach approach(const Frame& f, double x, double max_step, const StepRecord& last, StepRecord& next, bool check,
                   Workspace& ws);
 
 }  // namespace dragon::contact

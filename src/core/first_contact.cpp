@@ -54,8 +54,8 @@ using contact::Workspace;
 // 8 of the contest's 223 benches on average, against 30 for one proof of the whole run.
 constexpr double kStretchTravel = 10.0;  // m
 // The proof of the last steps before a contact stops where the step it fails to prove is below
-// this fraction of the travel left to the contact (or below tol::travel): there the pair's gap
-// is within the proof's slack (contact::kProofSlack) of zero.
+// this fraction (dimensionless) of the travel left to the contact (or below tol::travel): there
+// the pair's gap is within the proof's slack (contact::kProofSlack) of zero.
 constexpr double kFinalStep = 1e-3;
 
 double head_radius(const Frame& f) { return norm(f.handles.front().pos); }
@@ -267,12 +267,13 @@ public:
         : unit_(unit), edge_(edge), angles_(edge.size()), made_(edge.size()) {}
     const ChainAngles& at(size_t k, Frame& scratch) {
         std::call_once(made_[k], [&] {
-            const double t = edge_[k];
-            unit_.require_valid(t, Key::time);  // as a frame there would
+            // The edge, m of head travel: on the motion at 1 m/s also its time, s.
+            const double x = edge_[k];
+            unit_.require_valid(x, Key::time);  // as a frame there would
             ChainAngles& a = angles_[k];
-            a.time = t;
-            if (!solve_spiral_chain_angles(unit_.path(), unit_.scenario().bench, unit_.head_arc(t), a.theta)) {
-                unit_.frame_into(t, scratch);
+            a.time = x;
+            if (!solve_spiral_chain_angles(unit_.path(), unit_.scenario().bench, unit_.head_arc(x), a.theta)) {
+                unit_.frame_into(x, scratch);
                 a = chain_angles(scratch);
             }
         });

@@ -1,0 +1,101 @@
+"""prove=True: what collide and max_speed proved, said as the tool's --prove --json says it, and
+what it proves holding the answer found without it."""
+
+import pytest
+
+import benchdragon as bd
+
+# (keywords, the tool's flags): a contact on the spiral, on the turnaround path, and none.
+COLLIDE_CASES = [
+    ({}, []),
+    ({"path": "turnaround", "from_": "-50m", "to": 30}, ["--path", "turnaround", "--from", "-50m", "--to", "30"]),
+    ({"from_": 0, "to": "100m"}, ["--from", "0", "--to", "100m"]),
+]
+COLLIDE_SCENARIOS = [bd.Scenario(), bd.Scenario(turn_pitch=0.44), bd.Scenario()]
+COLLIDE_FLAGS = [[], ["--turn-pitch", "0.44"], []]
+
+
+@pytest.mark.parametrize("case", range(len(COLLIDE_CASES)))
+def test_collide_proof_is_the_tools(dragon_json, case):
+    keywords, flags = COLLIDE_CASES[case]
+    mine = bd.collide(COLLIDE_SCENARIOS[case], prove=True, **keywords).to_dict()
+    tool = dragon_json("collide", "--prove", *COLLIDE_FLAGS[case], *flags)
+    assert mine["enclosure"] == tool["enclosure"]
+    assert mine["proof"] == tool["proof"]
+    assert mine == tool
+    # Asked to prove, every step was (the method says so), and the steps cover the window up to
+    # the contact, or all of it without one.
+    assert mine["proof"]["method"] in ("enclosure", "enclosure+rate")
+    assert mine["proof"]["steps"] > 0
+    covered = mine["proof"]["covered_travel"]
+    assert covered[0] == mine["from_travel"]
+    if mine["travel"] is None:
+        assert mine["enclosure"] is None
+        assert covered[1] == mine["to_travel"]
+    else:
+        assert covered[1] == mine["enclosure"]["travel"][0]
+
+
+@pytest.mark.parametrize("case", range(len(COLLIDE_CASES)))
+def test_collide_proved_enclosure_holds_the_unproved_contact(case):
+    keywords, _ = COLLIDE_CASES[case]
+    s = COLLIDE_SCENARIOS[case]
+    proved = bd.collide(s, prove=True, **keywords)
+    sampled = bd.collide(s, **keywords)
+    assert sampled.proof["method"] == "rate" and sampled.proof["steps"] == 0
+    assert (proved.travel is None) == (sampled.travel is None)
+    if proved.travel is None:
+        return
+    assert proved.benches == sampled.benches
+    # The first contact lies in the enclosure; the unproved search's contact is a moment the
+    # benches touch, at most its own tolerance (s, so tolerance * speed m of head travel) past
+    # the first contact: at or after the enclosure's low end, and within that of its high end.
+    lo, hi = proved.enclosure["travel"]
+    assert lo <= hi
+    assert lo <= sampled.travel <= hi + sampled.tolerance * s.speed
+    t_lo, t_hi = proved.enclosure["time"]
+    assert t_lo <= sampled.time <= t_hi + sampled.tolerance
+    assert hi == proved.travel and t_hi == proved.time
+
+
+MAX_SPEED_CASES = [
+    (bd.Scenario(), {}, []),
+    (bd.Scenario(turn_radius=4.0, arc_ratio=1.5), {"limit": 1.8, "from_": -20, "to": "40m"},
+     ["--turn-radius", "4", "--arc-ratio", "1.5", "--limit", "1.8", "--from", "-20", "--to", "40m"]),
+]
+
+
+@pytest.mark.parametrize("case", range(len(MAX_SPEED_CASES)))
+def test_max_speed_proof_is_the_tools(dragon_json, case):
+    s, keywords, flags = MAX_SPEED_CASES[case]
+    mine = bd.max_speed(s, prove=True, **keywords).to_dict()
+    tool = dragon_json("max-speed", "--prove", *flags)
+    assert mine["enclosure"] == tool["enclosure"]
+    assert mine["proof"] == tool["proof"]
+    assert mine == tool
+    assert mine["proof"]["method"] == "lipschitz bound"
+
+
+@pytest.mark.parametrize("case", range(len(MAX_SPEED_CASES)))
+def test_max_speed_proved_enclosure_holds_the_sampled_maximum(case):
+    s, keywords, _ = MAX_SPEED_CASES[case]
+    proved = bd.max_speed(s, prove=True, **keywords)
+    sampled = bd.max_speed(s, **keywords)
+    assert sampled.enclosure is None and sampled.proof == {"method": "sampled"}
+    lo, hi = proved.enclosure
+    assert lo <= sampled.max_head_speed <= hi
+    assert lo <= proved.max_head_speed <= hi
+    # The ratio's enclosure, the same claim seen from the handles: limit / ratio.
+    r_lo, r_hi = proved.proof["ratio"]
+    assert r_lo <= sampled.ratio <= r_hi
+
+
+@pytest.mark.parametrize("value", ["yes", 1, 0, None, 1.0])
+def test_a_bad_prove_is_refused_naming_it(value):
+    for call in (lambda: bd.collide(prove=value), lambda: bd.max_speed(prove=value)):
+        with pytest.raises(bd.InputError) as e:
+            call()
+        assert e.value.field == "prove"
+        assert e.value.value == repr(value)
+        assert e.value.allowed == "give True or False"
+        assert str(e.value) == f"prove {value!r} is not allowed: give True or False"
