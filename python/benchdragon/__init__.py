@@ -194,11 +194,22 @@ class MinPitchResult(Result):
     ``pitch`` (m, to 1e-9 m), or None with ``below_range`` / ``above_range`` saying which side it
     lies on; ``intervals`` (feasible and infeasible pitches over the range), ``grid``, ``jam``
     and ``guarantee`` (what the search proves).
+
+    What was proved, as ``dragon min-pitch --json`` says it: ``proof`` with ``method``
+    ("enclosure cells" with ``prove=True``, "enclosure cells, incomplete" when some feasible
+    pitches, those within a fraction of a micrometre of a change, are left to the runs; "runs"
+    without it), ``proved`` ([lo, hi] ranges of pitches, m, every pitch inside proved feasible),
+    ``unproved`` (the feasible intervals' parts not proved; None without ``prove``), ``cells``,
+    ``pitch_ranges``, ``subdivisions`` and ``least_separation`` (m, or None).
     """
 
 
 class TurnaroundResult(Result):
-    """Q4: the S-curve, whether it can be shorter, its first contact and clearance (``dragon turnaround --json``)."""
+    """Q4: the S-curve, whether it can be shorter, its first contact and clearance (``dragon turnaround --json``).
+
+    With the clearance check, ``enclosure`` and ``proof`` say what its first-contact search
+    proved, as :class:`CollideResult`'s do (every step with ``prove=True``).
+    """
 
 
 class MaxSpeedResult(Result):
@@ -527,34 +538,45 @@ def collide(scenario: Optional[Scenario] = None, *, path: str = "spiral", from_:
 
 def min_pitch(scenario: Optional[Scenario] = None, *, lo: Optional[float] = None, hi: Optional[float] = None,
               grid: float = 0.0025,
-              progress: Union[bool, Callable[[int, int], None], None] = True, workers: int = 0) -> MinPitchResult:
+              progress: Union[bool, Callable[[int, int], None], None] = True, workers: int = 0,
+              prove: bool = False) -> MinPitchResult:
     """Q3: the smallest pitch (m) with which the head reaches the turning space collision-free
     (``dragon min-pitch``), searched over `lo` .. `hi` on a first scan of spacing `grid`, each
     change of feasibility narrowed to 1e-9 m. Left out, `lo` and `hi` are the scenario's own range
     as the command searches it (0.35 .. 0.55 m, moved up for a dragon too wide for it).
-    `progress` hears the first scan's runs; `workers` (0: one per core) runs the pitches."""
+    `progress` hears the first scan's runs; `workers` (0: one per core) runs the pitches.
+
+    ``prove=True`` (``dragon min-pitch --prove``) proves every pitch of the feasible intervals
+    feasible, not only the pitches run, by enclosing the benches over cells of head radius and
+    pitch: slower (about 1.5 s of CPU for the contest). The result's ``proof`` says what was
+    proved (see :class:`MinPitchResult`). `prove` is True or False; anything else is an
+    InputError naming it."""
     callback, close = _progress(progress, "pitches", "min_pitch")
     try:
         return MinPitchResult(json.loads(_core._min_pitch(_values(scenario), None if lo is None else float(lo),
                                                           None if hi is None else float(hi), float(grid),
-                                                          callback, _workers(workers))))
+                                                          callback, _workers(workers), prove)))
     finally:
         close()
 
 
 def turnaround(scenario: Optional[Scenario] = None, *, from_: Moment = None, to: Moment = None,
                clearance: bool = True, progress: Union[bool, Callable[[int, int], None], None] = True,
-               workers: int = 0) -> TurnaroundResult:
+               workers: int = 0, prove: bool = False) -> TurnaroundResult:
     """Q4: the S-curve's design, whether it can be shorter (its length against the radius ratio
     and the entry radius, and whether this dragon can follow each), and over `from_` .. `to`
     (default: 100 m of head travel either side of the turn) its first contact and the smallest
     clearance before it (``dragon turnaround``; `clearance=False` leaves that check out).
-    `workers`: threads the check runs on (0: one per core)."""
+    `workers`: threads the check runs on (0: one per core).
+
+    ``prove=True`` (``dragon turnaround --prove``) proves every step of the first-contact check,
+    as ``collide(prove=True)`` does; the result's ``enclosure`` and ``proof`` say what was proved
+    (absent with `clearance=False`, which `prove=True` cannot go with)."""
     workers = _workers(workers)
     callback, close = _progress(progress, "samples", "turnaround")
     try:
         return TurnaroundResult(json.loads(_core._turnaround(_values(scenario), from_, to, bool(clearance), callback,
-                                                             workers)))
+                                                             workers, prove)))
     finally:
         close()
 

@@ -47,12 +47,13 @@ void bind_answers(py::module_& m) {
 
     m.def("_min_pitch",
           [](const py::dict& scenario, std::optional<double> lo, std::optional<double> hi, double grid,
-             const py::object& progress, int workers) {
+             const py::object& progress, int workers, const py::object& prove) {
               Scenario s = scenario_from(scenario);
               s.path.kind = PathKind::spiral;
               const PitchRange range = pitch_search_range(s, lo, hi);  // the command's, to the digit
               MinPitchOptions o;
               o.grid = grid;
+              o.prove = switch_from(prove, Key::prove);
               o.progress = progress_from(progress);
               const MinPitch mp = interruptible([&](Executor& ex) {
                   o.executor = &ex;
@@ -61,24 +62,27 @@ void bind_answers(py::module_& m) {
               return json_text(min_pitch_answer(mp, s.path.turn_radius));
           },
           py::arg("scenario"), py::arg("lo"), py::arg("hi"), py::arg("grid"), py::arg("progress"),
-          py::arg("workers") = 0);
+          py::arg("workers") = 0, py::arg("prove") = false);
 
     m.def("_turnaround",
           [](const py::dict& scenario, const py::object& from, const py::object& to, bool clearance,
-             const py::object& progress, int workers) {
+             const py::object& progress, int workers, const py::object& prove) {
               Scenario s = scenario_from(scenario);
               s.path.kind = PathKind::turnaround;
               const RunWindow window = window_from(kTurnaroundWindow, from, to);
               const WorkProgress report = progress_from(progress);
+              const bool proved = switch_from(prove, Key::prove);
+              if (proved && !clearance)
+                  throw InputError(Key::prove, "True", "it proves the clearance check, which clearance=False leaves out");
               return interruptible([&](Executor& ex) {
                   const TurnaroundStudy st = study_turnaround(s);
                   std::optional<RunClearance> clear;
-                  if (clearance) clear = min_clearance(s, window, report, &ex);
+                  if (clearance) clear = min_clearance(s, window, report, &ex, proved);
                   return json_text(turnaround_answer(st.design, st.design_jam, clear, &st));
               }, workers_from(workers));
           },
           py::arg("scenario"), py::arg("from_"), py::arg("to"), py::arg("clearance"), py::arg("progress"),
-          py::arg("workers"));
+          py::arg("workers"), py::arg("prove") = false);
 
     // `prove`: the largest speed bounded over the whole window, as `dragon max-speed --prove`;
     // the answer's "enclosure" and "proof" say what was proved either way.

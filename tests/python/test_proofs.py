@@ -99,3 +99,34 @@ def test_a_bad_prove_is_refused_naming_it(value):
         assert e.value.value == repr(value)
         assert e.value.allowed == "give True or False"
         assert str(e.value) == f"prove {value!r} is not allowed: give True or False"
+
+
+def test_min_pitch_proof_is_the_tools(dragon_json):
+    # A range about the contest's cut, so that the proof runs in a second or so.
+    mine = bd.min_pitch(lo=0.44, hi=0.47, grid=0.01, prove=True, progress=False).to_dict()
+    tool = dragon_json("min-pitch", "--prove", "--lo", "0.44", "--hi", "0.47", "--grid", "0.01")
+    assert mine == tool
+    proof = mine["proof"]
+    assert proof["method"].startswith("enclosure cells")
+    # What it proved lies inside the feasible intervals; the rest of them is what it did not.
+    feasible = [(i["lo"], i["hi"]) for i in mine["intervals"] if i["feasible"]]
+    for lo, hi in proof["proved"] + proof["unproved"]:
+        assert any(a <= lo and hi <= b for a, b in feasible)
+    width = sum(hi - lo for lo, hi in proof["proved"] + proof["unproved"])
+    assert width == pytest.approx(sum(b - a for a, b in feasible), abs=1e-12)
+    # Only the pitches next to the cut are left to the runs.
+    assert sum(hi - lo for lo, hi in proof["unproved"]) < 1e-6
+    unproved = bd.min_pitch(lo=0.44, hi=0.47, grid=0.01, progress=False).to_dict()
+    assert unproved["proof"]["method"] == "runs" and unproved["proof"]["unproved"] is None
+    assert unproved["pitch"] == mine["pitch"]
+
+
+def test_turnaround_proof_is_the_tools(dragon_json):
+    mine = bd.turnaround(prove=True, progress=False).to_dict()
+    tool = dragon_json("turnaround", "--prove")
+    assert mine["proof"] == tool["proof"] and mine["enclosure"] == tool["enclosure"]
+    assert mine["proof"]["method"] == "enclosure"
+    assert mine["proof"]["covered_travel"] == [mine["clearance"]["from_travel"], mine["clearance"]["to_travel"]]
+    with pytest.raises(bd.InputError) as e:
+        bd.turnaround(prove=True, clearance=False, progress=False)
+    assert e.value.field == "prove"
