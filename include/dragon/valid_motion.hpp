@@ -81,7 +81,7 @@ struct JamSearchStats {
 struct JamSearchOptions {
     // Prove those too, by each link's health over each half of the step (and every link behind a
     // handle that may back up over ranges of its places): the motion is then proved to within
-    // about 1e-8 m of the jam. Opt-in: on the contest's spiral it costs about 100 times the search.
+    // about 1e-8 m of the jam. Opt-in: on the contest's spiral it costs about 45 times the search.
     bool prove = false;
 };
 
