@@ -32,6 +32,16 @@ std::vector<std::string> with_jam(std::vector<std::string> keys, std::vector<std
     return keys;
 }
 
+// The answer's jam without what its search proved ("enclosure", "proof"), as collide's own keys
+// leave theirs out: a sweep's columns stay those its files were written with.
+Json plain_jam(Json answer) {
+    if (Json& j = answer["jam"]; j.is_object()) {
+        j.erase("enclosure");
+        j.erase("proof");
+    }
+    return answer;
+}
+
 std::string cell(const Json& v) {
     if (v.is_null()) return "";
     if (v.is_string()) return v.get<std::string>();
@@ -64,7 +74,7 @@ Json collide_measure(const Scenario& s, const MeasureOptions& options, std::stri
     answer.erase("enclosure");
     answer.erase("proof");
     answer.erase("overlap_at_start");
-    return answer;
+    return plain_jam(answer);
 }
 
 Json min_pitch_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
@@ -76,7 +86,7 @@ Json min_pitch_measure(const Scenario& s, const MeasureOptions& options, std::st
     if (mp.jam)
         jam = fmt::format("at pitch {} m the dragon cannot follow the spiral to radius {} m: {}", mp.jam->pitch,
                           s.path.turn_radius, jam_sentence(mp.jam->jam));
-    return min_pitch_answer(mp, s.path.turn_radius);
+    return plain_jam(min_pitch_answer(mp, s.path.turn_radius));
 }
 
 // The command's design, followability and check for a first contact; its length study (two
@@ -88,7 +98,7 @@ Json turnaround_measure(const Scenario& s, const MeasureOptions& options, std::s
     const RunClearance clear = min_clearance(s, options.window(PathKind::turnaround), {}, &here);
     const std::optional<Jam>& j = clear.jam ? clear.jam : design_jam;
     if (j) jam = jam_sentence(*j);
-    return turnaround_answer(design, design_jam, clear, nullptr);
+    return plain_jam(turnaround_answer(design, design_jam, clear, nullptr));
 }
 
 Json max_speed_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
@@ -102,7 +112,7 @@ Json max_speed_measure(const Scenario& s, const MeasureOptions& options, std::st
     Json answer = max_speed_answer(v, options.limit);
     answer.erase("enclosure");
     answer.erase("proof");
-    return answer;
+    return plain_jam(answer);
 }
 
 }  // namespace

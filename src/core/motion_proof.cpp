@@ -27,8 +27,8 @@ constexpr int kSampleBudget = 3000;
 // A rear handle's range is first guessed from its front's as the speed ratio times (1 + this)
 // (plus this): along 223 links that compounds to about 1.6.
 constexpr double kFirstWidening = 2e-3;
-// Guesses at a range's ends (the far end of the health's range, the rear handle's reach): each
-// try doubles the last.
+// Guesses at a range's ends: the far end of the health's range and the rear's far side (each try
+// doubles the last), a rear handle's range (each try widens it four times as much).
 constexpr int kTries = 8;
 
 using End = MotionProofWork::End;
