@@ -26,8 +26,11 @@ std::string turnaround_conclusion(const TurnaroundStudy& st);
 Json overlap_json(const std::optional<Overlap>& o);
 
 // The end of the valid motion as an answer's "jam" key: {"time", "travel", "handle", "kind",
-// "ahead", "point", "tolerance"}, or null. "kind" is what happens as time runs forward; "ahead":
-// the motion is valid until the jam (else from it).
+// "ahead", "point", "tolerance", "enclosure", "proof"}, or null. "kind" is what happens as time
+// runs forward; "ahead": the motion is valid until the jam (else from it). "enclosure":
+// {"travel": [lo, hi], "time": [lo, hi]}, the motion proved continuous from t = 0 up to the end
+// nearer it and past the jam at the other; "proof": {"method" (Jam::method), "steps",
+// "unproved_steps"}.
 Json jam_json(const std::optional<Jam>& j);
 // The window an answer searched, both ways: "from", "to" (s) and "from_travel", "to_travel" (m of
 // head travel), added to `answer`.

@@ -44,6 +44,18 @@ struct Jam {
     Vec2 point = Vec2::Zero();  // where the circle of the link's length about handle - 1 touches the path
     double tolerance = 0.0;  // s: the motion stops within this much of `time`, on the far side of it
     double travel_tolerance = 0.0;  // m: the same as head travel
+    // What the search proved (docs/methods.md, section 4.1). The motion is proved continuous
+    // from t = 0 to `proved_travel` (m of head travel; every step up to there proved, or the
+    // path certified calm there); the jam lies between it and `travel` + `travel_tolerance` (on
+    // the other side of t = 0 for a jam behind): its enclosure.
+    double proved_travel = 0.0;
+    double proved_time = 0.0;  // s: the same as time
+    int proved_steps = 0;    // steps of the search proved jam-free from the chain at their ends
+    int unproved_steps = 0;  // steps accepted on their rates checked at their ends alone
+    // "turning" (every step proved), "rate" (none) or "turning+rate" (some on the rate check alone).
+    const char* method() const {
+        return unproved_steps == 0 ? "turning" : proved_steps == 0 ? "rate" : "turning+rate";
+    }
 };
 
 // Does the valid motion's own handle race without bound as the jam nears? Yes where the root it
@@ -57,6 +69,20 @@ inline bool speed_unbounded_at(const Jam& j) {
 struct JamSearchStats {
     int evaluations = 0;  // chains solved and checked
     int retreats = 0;     // steps taken back because a bound the step relied on was broken
+    int proved_steps = 0;    // steps proved jam-free from the chain at their two ends (section 4.1)
+    int unproved_steps = 0;  // steps accepted on their rates checked at their ends alone
+    int subdivisions = 0;    // steps the proof failed, taken again shorter
+    double unproved_travel = 0.0;  // m of head travel the unproved steps cover
+};
+
+// How a jam search proves its steps (docs/methods.md, section 4.1). Every step where each link
+// turns gently (its path turning by less than pi/2 over the step) is proved by default; the
+// others rest on their rates checked at their ends, unless `prove`.
+struct JamSearchOptions {
+    // Prove those too, by each link's health over each half of the step (and every link behind a
+    // handle that may back up over ranges of its places): the motion is then proved to within
+    // about 1e-8 m of the jam. Opt-in: on the contest's spiral it costs about 45 times the search.
+    bool prove = false;
 };
 
 // The first jam met as the head's arc position runs from s_from towards s_to (either way), or
@@ -81,6 +107,7 @@ struct JamSearchStats {
 // curvature k satisfies k d <= 1.3 are certified at once: by Schur's comparison theorem the link
 // then spans at most 2 asin(k d / 2) < pi/2 of turning.
 std::optional<Jam> find_jam(const Path& path, const BenchSpec& spec, double start_arc, double head_speed,
-                            double t_from, double t_to, JamSearchStats* stats = nullptr);
+                            double t_from, double t_to, JamSearchStats* stats = nullptr,
+                            const JamSearchOptions& options = {});
 
 }  // namespace dragon

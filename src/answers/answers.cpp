@@ -1,6 +1,7 @@
 // The --json answers of the question commands, built in one place (dragon/answers.hpp).
 #include "dragon/answers.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -29,6 +30,14 @@ Json rows_json(const std::vector<TurnStudyRow>& rows) {
     return out;
 }
 
+// The jam's enclosure: proved continuous up to one end, past the jam at the other.
+Json jam_enclosure_json(const Jam& j) {
+    const double past = j.ahead ? j.travel + j.travel_tolerance : j.travel - j.travel_tolerance;
+    const double past_time = j.ahead ? j.time + j.tolerance : j.time - j.tolerance;
+    return {{"travel", {std::min(j.proved_travel, past), std::max(j.proved_travel, past)}},
+            {"time", {std::min(j.proved_time, past_time), std::max(j.proved_time, past_time)}}};
+}
+
 }  // namespace
 
 Json jam_json(const std::optional<Jam>& j) {
@@ -39,7 +48,9 @@ Json jam_json(const std::optional<Jam>& j) {
                 {"kind", to_string(j->kind)},
                 {"ahead", j->ahead},
                 {"point", {j->point.x(), j->point.y()}},
-                {"tolerance", j->tolerance}};
+                {"tolerance", j->tolerance},
+                {"enclosure", jam_enclosure_json(*j)},
+                {"proof", {{"method", j->method()}, {"steps", j->proved_steps}, {"unproved_steps", j->unproved_steps}}}};
 }
 
 void add_window(Json& answer, const Searched& w) {

@@ -32,6 +32,19 @@ std::vector<std::string> with_jam(std::vector<std::string> keys, std::vector<std
     return keys;
 }
 
+// The answer without what its searches proved (its own "enclosure" and "proof", and its jam's):
+// how a search went is not a value of the scenario, and a sweep's columns stay those its files
+// were written with.
+Json without_proofs(Json answer) {
+    answer.erase("enclosure");
+    answer.erase("proof");
+    if (Json& j = answer["jam"]; j.is_object()) {
+        j.erase("enclosure");
+        j.erase("proof");
+    }
+    return answer;
+}
+
 std::string cell(const Json& v) {
     if (v.is_null()) return "";
     if (v.is_string()) return v.get<std::string>();
@@ -57,14 +70,11 @@ Json collide_measure(const Scenario& s, const MeasureOptions& options, std::stri
     const CollideAnswer search = collide(Simulation(s), options.window(s.path.kind), &here);
     if (search.overlap) throw CollidesAtStart{*search.overlap, search.asked.from};
     if (search.jam) jam = "no contact before the end of the valid motion: " + jam_sentence(*search.jam);
-    // The command's keys but what it proved (its "enclosure" and "proof") and the overlap (always
-    // null here: an overlap is the row's verdict instead): a sweep's columns stay those its files
-    // were written with.
+    // The command's keys but what it proved and the overlap (always null here: an overlap is the
+    // row's verdict instead).
     Json answer = collide_answer(search, false);
-    answer.erase("enclosure");
-    answer.erase("proof");
     answer.erase("overlap_at_start");
-    return answer;
+    return without_proofs(answer);
 }
 
 Json min_pitch_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
@@ -76,10 +86,7 @@ Json min_pitch_measure(const Scenario& s, const MeasureOptions& options, std::st
     if (mp.jam)
         jam = fmt::format("at pitch {} m the dragon cannot follow the spiral to radius {} m: {}", mp.jam->pitch,
                           s.path.turn_radius, jam_sentence(mp.jam->jam));
-    // The command's keys but what it proved ("proof"), as collide's.
-    Json answer = min_pitch_answer(mp, s.path.turn_radius);
-    answer.erase("proof");
-    return answer;
+    return without_proofs(min_pitch_answer(mp, s.path.turn_radius));
 }
 
 // The command's design, followability and check for a first contact; its length study (two
@@ -91,11 +98,7 @@ Json turnaround_measure(const Scenario& s, const MeasureOptions& options, std::s
     const RunClearance clear = min_clearance(s, options.window(PathKind::turnaround), {}, &here);
     const std::optional<Jam>& j = clear.jam ? clear.jam : design_jam;
     if (j) jam = jam_sentence(*j);
-    // The command's keys but what its first-contact search proved, as collide's.
-    Json answer = turnaround_answer(design, design_jam, clear, nullptr);
-    answer.erase("enclosure");
-    answer.erase("proof");
-    return answer;
+    return without_proofs(turnaround_answer(design, design_jam, clear, nullptr));
 }
 
 Json max_speed_measure(const Scenario& s, const MeasureOptions& options, std::string& jam) {
@@ -105,11 +108,8 @@ Json max_speed_measure(const Scenario& s, const MeasureOptions& options, std::st
         jam = v.unbounded ? fmt::format("no head speed keeps every handle at or under {} m/s: {}", options.limit,
                                         jam_sentence(*v.jam))
                           : "searched only as far as " + jam_sentence(*v.jam);
-    // The command's keys but how the search went ("enclosure", "proof"), as collide's.
-    Json answer = max_speed_answer(v, options.limit);
-    answer.erase("enclosure");
-    answer.erase("proof");
-    return answer;
+    // The command's keys but how the search went, as collide's.
+    return without_proofs(max_speed_answer(v, options.limit));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "dragon/chain.hpp"
 #include "dragon/valid_motion.hpp"
@@ -20,13 +21,33 @@ struct Found {
     int link = 0;                           // 0..N-1: the link whose rear handle would jump
     JamKind kind = JamKind::root_vanishes;  // as the walk's direction sees it
     Vec2 point = Vec2::Zero();
+    double proved = 0.0;  // arc position: the motion is proved continuous from the walk's start to here
+    int proved_steps = 0, unproved_steps = 0;  // the walk's, up to the jam
+};
+
+// How a walk chooses and proves its steps (the defaults but in tests).
+struct WalkOptions {
+    bool prove = true;  // prove each step (motion_proof.hpp); false: the rate check at its end alone
+    // And the links that turn too far for the turning proof, by their health (JamSearchOptions::prove)
+    bool prove_health = false;
+    bool prove_backing = false;  // and past rear handles that may back up (with prove_health)
+    // Multiplies every step the rates allow (> 1: steps longer than the rates warrant, to show
+    // what the proof catches that the end check does not).
+    double step_scale = 1.0;
+    bool check_ends = true;  // check each step's rate bounds at its end (false: tests only)
+    // Every step accepted, in arc position (from, to), and whether it was proved: for tests.
+    struct Step {
+        double from, to;
+        bool proved;
+    };
+    std::vector<Step>* log = nullptr;
 };
 
 class Walk {
 public:
     // From the chain the nearest-root rule gives at arc position `from`, in direction `dir` (+1
     // ahead, -1 back), never past `end` (the path's end that way, or an infinity).
-    Walk(const Path& path, const BenchSpec& spec, double from, double dir, double end);
+    Walk(const Path& path, const BenchSpec& spec, double from, double dir, double end, const WalkOptions& options = {});
     ~Walk();
     Walk(const Walk&) = delete;
     Walk& operator=(const Walk&) = delete;
@@ -36,6 +57,8 @@ public:
     void advance(double target);
     // The motion is continuous from `from` to here (infinite once certified for ever).
     double known() const;
+    // And proved so, step by step (section 4.1), from `from` to here.
+    double proved() const;
     // Nothing is left to find: a jam was found, `end` reached, or the motion certified for ever.
     bool finished() const;
     const std::optional<Found>& found() const;

@@ -1,5 +1,6 @@
 // An upper bound on every handle's speed ratio over a stretch of head travel (speed_bound.hpp).
 #include "speed_bound.hpp"
+#include "gentle_link.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -50,12 +51,7 @@ Iv curvature_over(const Path& path, const Place& rear, double k_rear, const Plac
 
 constexpr double kUlp = 0x1p-52;
 
-// Whether place `a` is at or ahead of place `b` on the path (further in the direction of travel).
-bool at_or_ahead(const Path& path, const Place& a, const Place& b) {
-    if (a.piece != b.piece) return a.piece > b.piece;
-    const auto [begin, end] = path.piece_span(a.piece);
-    return end > begin ? a.u >= b.u : a.u <= b.u;
-}
+using gentle::at_or_ahead;
 
 // Handle i's way from chain c0 to chain c1: false if it ends behind where it began; else the
 // curvature over it, its turning (the integral of |kappa|) and an upper bound on its length:

@@ -1,5 +1,6 @@
 // Proof that a step of the chain's motion holds no contact (swept_proof.hpp).
 #include "swept_proof.hpp"
+#include "gentle_link.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,12 +17,7 @@ namespace dragon::contact {
 
 namespace {
 
-// Whether place `a` is at or ahead of place `b` on the path (further in the direction of travel).
-bool at_or_ahead(const Path& path, const Place& a, const Place& b) {
-    if (a.piece != b.piece) return a.piece > b.piece;
-    const auto [begin, end] = path.piece_span(a.piece);
-    return end > begin ? a.u >= b.u : a.u <= b.u;
-}
+using gentle::at_or_ahead;
 
 // The projections of an enclosure's hull points on n: least and largest.
 void project(const SweptWorkspace::Swept& s, const Vec2& n, double& lo, double& hi) {
@@ -329,8 +325,7 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
         if (i + 1 < nh) {
             // The link from handle i to handle i + 1 lies, over the step, between handle i + 1's
             // place at the start and handle i's at the end.
-            const Place& rear = f0.handles[i + 1].place;
-            if (!at_or_ahead(path, p1, rear) || !(turning(i + 1, i) < kMaxLinkTurning))
+            if (!gentle::hull_turns_gently(path, p1, f0.handles[i + 1].place, turning(i + 1, i)))
                 return prove_by_speed_bounds(path, spec, f0, f1, ws);
         }
         // 2. The handle's arc over the step, within `dilation` of its chord (the fixed frame's

@@ -25,6 +25,7 @@
 #include <span>
 #include <vector>
 
+#include "gentle_link.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/path.hpp"
 #include "dragon/scenario.hpp"
@@ -41,9 +42,9 @@ namespace dragon::contact {
 // how close to a contact the proof reaches: within about kProofSlack / (closing speed) of head
 // travel.
 inline constexpr double kProofSlack = 1e-12;
-// rad: the largest turning of the path over a link's hull for which step 1 above holds, pi/2
-// less a margin far above the rounding of Path::turning (~1e-15 rad).
-inline constexpr double kMaxLinkTurning = 0.5 * std::numbers::pi - 1e-9;
+// rad: the largest turning of the path over a link's hull for which step 1 above holds (the
+// valid motion's proof uses the same induction, gentle_link.hpp).
+inline constexpr double kMaxLinkTurning = gentle::kMaxLinkTurning;
 // m: margin of the enclosures' bounding boxes within which a pair's separation is looked at; a
 // pair farther apart is proved apart by its boxes alone, and the least separation a proof
 // reports is at most this.

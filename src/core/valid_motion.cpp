@@ -10,6 +10,7 @@
 #include "chain_front.hpp"
 #include "jam_walk.hpp"
 #include "link_watch.hpp"
+#include "motion_proof.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/constants.hpp"
 #include "dragon/errors.hpp"
@@ -35,6 +36,8 @@ constexpr double kMaxTravel = jam::kMaxStep;
 // Below this fraction of half a link's length, a link's health is close enough to zero to try
 // bracketing the tangency that would end the motion.
 constexpr double kProbeHealth = 0.05;
+// Halvings a step gets for a link proved by its health before it is accepted on the rate check.
+constexpr int kHealthHalvings = 4;
 // A search needing more evaluations than this has a broken bound: fail loudly, never hang.
 constexpr int kMaxEvaluations = 100000;
 
@@ -168,6 +171,9 @@ public:
         return Bracket{valid, past, k, kind, last_point_};
     }
 
+    const jam::Calm& calm_head() const { return calm_head_; }
+    const jam::Calm& calm_body() const { return calm_body_; }
+
 private:
     const Path& path_;
     const BenchSpec& spec_;
@@ -199,11 +205,12 @@ JamKind reversed(JamKind k) { return k == JamKind::root_vanishes ? JamKind::near
 namespace jam {
 
 struct Walk::State {
-    State(const Path& path, const BenchSpec& spec, double dir)
-        : path(path), spec(spec), dir(dir), search(path, spec, dir, tol::travel, stats) {}
+    State(const Path& path, const BenchSpec& spec, double dir, const WalkOptions& options)
+        : path(path), spec(spec), dir(dir), options(options), search(path, spec, dir, tol::travel, stats) {}
     const Path& path;
     const BenchSpec& spec;
     double dir;
+    WalkOptions options;
     double end = 0.0;
     double calm_head = 0.0;  // the walk going back ends here: the motion is continuous behind it for ever
     JamSearchStats stats;
@@ -212,19 +219,27 @@ struct Walk::State {
     std::optional<Bracket> candidate;
     double probed_at = INFINITY;  // the margin at the last probe that found nothing
     double retry_cap = INFINITY;  // after a broken bound, retry shorter from cur
+    double proof_cap = INFINITY;  // the longest step the proof is expected to prove (halved when it fails)
+    double proved = 0.0;          // the motion is proved continuous from the walk's start to here
+    int health_halvings = 0;      // halvings of this step for its links' health (at most kHealthHalvings)
+    MotionProofWork proof_work;
+    bool proving = true;          // every step so far proved (`proved` follows the walk)
     bool done = false, forever = false;
     std::optional<Found> found;
 
     void finish(const Bracket& b) {
-        found = Found{b.valid, b.past, b.link, b.kind, b.point};
+        found = Found{b.valid, b.past, b.link, b.kind, b.point, proved, stats.proved_steps, stats.unproved_steps};
         done = true;
     }
+    // Proves the step from cur to next (section 4.1). Returns false when it was not proved but a
+    // shorter one may be: the step is to be taken again shorter.
+    bool prove_step(double travel, double here_tol);
     // One step of the walk (or one probe for a bracket, or one retreat).
     void step();
 };
 
-Walk::Walk(const Path& path, const BenchSpec& spec, double from, double dir, double end)
-    : state_(std::make_unique<State>(path, spec, dir)) {
+Walk::Walk(const Path& path, const BenchSpec& spec, double from, double dir, double end, const WalkOptions& options)
+    : state_(std::make_unique<State>(path, spec, dir, options)) {
     State& w = *state_;
     w.end = end;
     // Head at or behind `calm_head`: every link lies where the curvature is small for the
@@ -244,6 +259,8 @@ Walk::Walk(const Path& path, const BenchSpec& spec, double from, double dir, dou
     }
     if (!std::isfinite(s))
         throw SolverError(fmt::format("the valid-motion walk cannot start at head travel {} m", s));
+    // Up to s the path is calm for every link (or s is where the walk starts).
+    w.proved = s;
     w.search.evaluate(s, w.cur);
     if (s == end) w.done = true;
 }
@@ -273,10 +290,10 @@ void Walk::State::step() {
         return;
     }
     // Steps are cut short only at the walk's end, never at a place a caller asked about.
-    const double travel = std::min({cur.step, kMaxTravel, retry_cap, (end - cur.s) * dir});
+    const double travel = std::min({cur.step * options.step_scale, kMaxTravel, retry_cap, proof_cap, (end - cur.s) * dir});
     const double to = travel == (end - cur.s) * dir ? end : cur.s + dir * travel;
     search.evaluate(to, next);
-    if (const int broken = search.step_held(cur, next); broken >= 0) {
+    if (const int broken = options.check_ends ? search.step_held(cur, next) : -1; broken >= 0) {
         if (travel > here_tol) {
             retry_cap = 0.25 * travel;
             ++stats.retreats;
@@ -287,15 +304,72 @@ void Walk::State::step() {
         return finish({cur.s, to, broken, l.gentle || l.at_root ? JamKind::root_vanishes : JamKind::nearer_root,
                        cur.frame.handles[static_cast<size_t>(broken) + 1].pos});
     }
+    if (!prove_step(travel, here_tol)) return;
     std::swap(cur, next);
     retry_cap = INFINITY;
     if (candidate && (cur.s - candidate->valid) * dir > 0.0) candidate.reset();  // it was not in the way
     if (cur.s == end) done = true;
 }
 
+bool Walk::State::prove_step(double travel, double here_tol) {
+    const Evaluation& lo = dir > 0.0 ? cur : next;
+    const Evaluation& hi = dir > 0.0 ? next : cur;
+    // Past the first step left unproved the proof could not extend `proved` any more: the
+    // rest of the walk rests on the rate check, and costs no proof.
+    const bool attempt = options.prove && proving;
+    const MotionStepProof p = attempt ? prove_motion_step(path, spec, lo.frame, hi.frame, search.calm_head(),
+                                                                search.calm_body(), options.prove_health,
+                                                                options.prove_backing, proof_work)
+                                            : MotionStepProof{MotionVerdict::turns, 0, false};
+    if (p.verdict != MotionVerdict::proved && attempt && travel > here_tol) {
+        // A shorter step may prove what this one did not: a link that turns gently at the step's
+        // start (its hull then turns little more over a short step), or a handle that moves
+        // forward there. Other links cannot be proved by turning at any length; their health
+        // needs the front's reach over each half below the health, which a shorter step may give
+        // (a few halvings: near a jam the health falls as fast as the steps the rates allow).
+        const size_t k = static_cast<size_t>(p.link);
+        const bool gentle_start = p.verdict == MotionVerdict::turns && (cur.links[k].calm || cur.links[k].gentle);
+        // (speeds are per unit of head travel ahead: a handle ends ahead of where it began, in arc
+        // order, when its speed is positive, whichever way the walk goes)
+        const bool forward_start = cur.frame.handles[k].speed > 0.0;
+        const bool health_may = options.prove_health && health_halvings < kHealthHalvings;
+        const bool shorter_may = p.verdict == MotionVerdict::turns       ? gentle_start || health_may
+                                 : p.verdict == MotionVerdict::backwards ? forward_start
+                                                                         : forward_start && health_may;
+        if (shorter_may) {
+            if (!gentle_start) ++health_halvings;
+            proof_cap = 0.5 * travel;
+            ++stats.subdivisions;
+            return false;
+        }
+    }
+    health_halvings = 0;
+    const bool proved_here = p.verdict == MotionVerdict::proved;
+    if (proved_here) {
+        ++stats.proved_steps;
+        if (proving) proved = next.s;
+    } else {
+        ++stats.unproved_steps;
+        stats.unproved_travel += travel;
+        // The rest rests on the rate check: its steps as long as the rates allow.
+        if (proving) proof_cap = INFINITY;
+        proving = false;
+    }
+    // As long as the last step the proof allowed: try a little longer next.
+    if (travel >= proof_cap) proof_cap *= 1.5;
+    if (options.log) options.log->push_back({std::min(cur.s, next.s), std::max(cur.s, next.s), proved_here});
+    return true;
+}
+
 void Walk::advance(double target) {
     State& w = *state_;
     while (!w.done && (target - w.cur.s) * w.dir > 0.0) w.step();
+}
+
+double Walk::proved() const {
+    const State& w = *state_;
+    if (w.forever && w.proving) return w.dir * INFINITY;
+    return w.proved;
 }
 
 double Walk::known() const {
@@ -320,6 +394,10 @@ Jam to_jam(const Found& f, double dir, double start_arc, double head_speed) {
     j.point = f.point;
     // How far past `time` the motion may still go: the bracket, and the rounding of t itself.
     j.travel_tolerance = std::abs(f.past - f.valid);
+    j.proved_travel = f.proved - start_arc;
+    j.proved_time = j.proved_travel / head_speed;
+    j.proved_steps = f.proved_steps;
+    j.unproved_steps = f.unproved_steps;
     const double rounding = std::abs(std::nextafter(j.time, dir * INFINITY) - j.time);
     j.tolerance = std::max(j.travel_tolerance / head_speed, rounding);
     return j;
@@ -328,12 +406,14 @@ Jam to_jam(const Found& f, double dir, double start_arc, double head_speed) {
 }  // namespace jam
 
 std::optional<Jam> find_jam(const Path& path, const BenchSpec& spec, double start_arc, double head_speed,
-                            double t_from, double t_to, JamSearchStats* stats_out) {
+                            double t_from, double t_to, JamSearchStats* stats_out, const JamSearchOptions& options) {
     const double s_from = start_arc + head_speed * t_from;
     const double s_to = start_arc + head_speed * t_to;
     if (!(s_to != s_from)) return std::nullopt;
     const double dir = s_to > s_from ? 1.0 : -1.0;
-    jam::Walk walk(path, spec, s_from, dir, s_to);
+    jam::WalkOptions walk_options;
+    walk_options.prove_health = walk_options.prove_backing = options.prove;
+    jam::Walk walk(path, spec, s_from, dir, s_to, walk_options);
     walk.advance(s_to);
     if (stats_out) *stats_out = walk.stats();
     if (!walk.found()) return std::nullopt;

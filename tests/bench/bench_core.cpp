@@ -65,6 +65,17 @@ static void BM_ValidRange(benchmark::State& state) {
 }
 BENCHMARK(BM_ValidRange)->Unit(benchmark::kMillisecond);
 
+// The same search with every step proved (JamSearchOptions::prove, docs/methods.md section 4.1).
+static void BM_ValidRangeProved(benchmark::State& state) {
+    const Simulation sim{Scenario{}};
+    JamSearchOptions o;
+    o.prove = true;
+    for (auto _ : state)
+        benchmark::DoNotOptimize(find_jam(sim.path(), sim.scenario().bench, sim.start_arc(), sim.scenario().head_speed, 0.0,
+                                                  sim.end_time(), nullptr, o));
+}
+BENCHMARK(BM_ValidRangeProved)->Unit(benchmark::kMillisecond);
+
 static void BM_Q3MinPitch(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(min_pitch(Scenario{}, 0.35, 0.55));
 }
