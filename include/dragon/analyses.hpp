@@ -13,6 +13,7 @@
 #include "dragon/constants.hpp"
 #include "dragon/executor.hpp"
 #include "dragon/progress.hpp"
+#include "dragon/valid_motion.hpp"
 #include "dragon/window.hpp"
 
 namespace dragon {
@@ -74,6 +75,12 @@ struct ContactProof {
     const char* method() const {
         return unproved_steps == 0 ? "enclosure" : proved_steps == 0 ? "rate" : "enclosure+rate";
     }
+    // The valid motion over the range, which the steps' proofs assume (docs/methods.md, section
+    // 4.1): proved by the walk asked to prove every step (find_jam's JamSearchOptions::prove) when
+    // the search was asked to prove its own, else nothing of it looked at here (`motion_checked`
+    // false; the simulation's own walk proves what it does by default).
+    bool motion_checked = false;
+    JamSearchStats motion{};
 };
 
 // Q2: the first moment two non-adjacent benches touch. The search runs in head travel, so the

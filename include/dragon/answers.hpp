@@ -40,7 +40,9 @@ void add_window(Json& answer, const Searched& w);
 Json contact_json(const Contact& c);
 // What a first-contact search proved: {"method", "steps", "subdivisions", "unproved_steps",
 // "unproved_travel", "least_separation", "covered_travel": [from, to]: the head
-// travel the accepted steps cover, proved contact-free where "method" is "enclosure"}.
+// travel the accepted steps cover, proved contact-free where "method" is "enclosure", "motion":
+// the valid motion's proof over that range when the steps were proved, {"method" ("proved" or
+// "proved+rate"), "steps", "unproved_steps", "unproved_travel"}, else null}.
 Json proof_json(const ContactProof& p);
 // collide's answer: the contact's keys (null where there is none), "evaluations", "enclosure"
 // ({"travel": [lo, hi], "time": [lo, hi]}: the first contact lies within; null without one),

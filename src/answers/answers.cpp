@@ -88,7 +88,12 @@ Json proof_json(const ContactProof& p) {
             {"unproved_steps", p.unproved_steps},
             {"unproved_travel", p.unproved_travel},
             {"least_separation", std::isfinite(p.least_gap) ? Json(p.least_gap) : Json(nullptr)},
-            {"covered_travel", {p.proved_from, p.proved_to}}};
+            {"covered_travel", {p.proved_from, p.proved_to}},
+            {"motion", p.motion_checked ? Json{{"method", p.motion.unproved_steps == 0 ? "proved" : "proved+rate"},
+                                               {"steps", p.motion.proved_steps},
+                                               {"unproved_steps", p.motion.unproved_steps},
+                                               {"unproved_travel", p.motion.unproved_travel}}
+                                        : Json(nullptr)}};
 }
 
 Json collide_answer(const CollideAnswer& r, bool with_handles) {

@@ -24,6 +24,11 @@ std::string proof_words(const ContactProof& p, const Contact* c) {
                         "enclosing every bench over each step",
                         p.proved_from, p.proved_to, p.proved_steps);
     if (std::isfinite(p.least_gap)) out += fmt::format(", least separation proved {:.3g} m", p.least_gap);
+    if (p.motion_checked)
+        out += p.motion.unproved_steps == 0
+                   ? std::string("; the valid motion proved over it")
+                   : fmt::format("; the valid motion proved over it but for {} steps ({:.6g} m of head travel) on their "
+                                 "rates checked at their ends", p.motion.unproved_steps, p.motion.unproved_travel);
     if (p.unproved_steps > 0)
         out += fmt::format("; not proved: {} steps over {:.6g} m of head travel, where neither the handles' motion nor their speed bounds "
                            "enclose the benches, rest on the rate bound checked at their ends",

@@ -374,6 +374,13 @@ std::optional<Contact> first_contact_travel(const Simulation& sim, double x_from
         proved.least_gap = std::min(proved.least_gap, p.least_gap);
         proved.proved_to = p.proved_to;
     }
+    if (options.prove_steps) {
+        // The steps' proofs assume the valid motion over the range (Proposition 1's premise):
+        // proved here by the walk asked to prove every step, up to the contact (or the range's end).
+        proved.motion_checked = true;
+        const double x_end = w == chunks ? x_to : *found[w];
+        find_jam(unit.path(), unit.scenario().bench, unit.head_arc(0.0), 1.0, x_from, x_end, &proved.motion, {true});
+    }
     if (options.proof) *options.proof = proved;
     if (w == chunks) return std::nullopt;
     Contact c = make_contact(sim, *found[w], ws.front().broad);

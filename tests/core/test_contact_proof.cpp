@@ -236,3 +236,28 @@ TEST(Q2Proof, TheRateAssumptionAloneMissesAGrazeTheProofDoesNot) {
     EXPECT_EQ(c3->proof.unproved_steps, 0);
     EXPECT_GT(c3->proof.subdivisions, 0);
 }
+
+// Asked to prove its steps, the search also proves the valid motion they assume over its range:
+// on the turnaround, whose tight arcs the default walk leaves to its rates, every step of it.
+TEST(Q2Proof, TheValidMotionTheStepsAssumeIsProvedToo) {
+    Scenario sc;
+    sc.path.kind = PathKind::turnaround;
+    const Simulation sim(sc);
+    ContactProof proof;
+    ContactSearchOptions o;
+    o.prove_steps = true;
+    o.proof = &proof;
+    EXPECT_FALSE(first_contact_travel(sim, -100.0, 100.0, o).has_value());
+    EXPECT_TRUE(proof.motion_checked);
+    EXPECT_GT(proof.motion.proved_steps, 0);
+    EXPECT_EQ(proof.motion.unproved_steps, 0);
+    // The default walk over the same range leaves steps to their rates.
+    JamSearchStats plain;
+    find_jam(sim.path(), sc.bench, sim.head_arc(0.0), 1.0, -100.0, 100.0, &plain);
+    EXPECT_GT(plain.unproved_steps, 0);
+    ContactProof unproved;
+    o.prove_steps = false;
+    o.proof = &unproved;
+    first_contact_travel(sim, -100.0, 100.0, o);
+    EXPECT_FALSE(unproved.motion_checked);
+}
