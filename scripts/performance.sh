@@ -66,6 +66,20 @@ the test run); commands are the median wall time of five runs.
 | \`dragon figures --print column --format pdf\` (ten figures) | | $(wall $dragon figures -q --print column --format pdf -o "$tmp/figs") s | \`time $dragon figures --print column --format pdf -o figs\` |
 | The minimum-pitch map, 525 scenarios on 2 workers (median of 3) | < 10 s | $(wall3 $dragon sweep -q assets/sweeps/min_pitch_map.toml -o "$tmp/map.csv") s | \`time $dragon sweep assets/sweeps/min_pitch_map.toml -o map.csv\` |
 
+## What the proofs cost (opt-in: \`--prove\`)
+
+Each proof is asked for with \`--prove\` (docs/methods.md, sections 4.1, 6.1, 8.1, 10.1); the
+answers without it are the same searches, whose steps rest on their rates checked at their ends.
+
+| What | Without | With \`--prove\` | Command |
+|---|---|---|---|
+| Q2 first contact (benchmark) | $(bm BM_Q2FirstContact ms) | $(bm BM_Q2FirstContactProved ms) | \`$bench --benchmark_filter=BM_Q2FirstContact\` |
+| The valid motion of the contest's spiral (benchmark) | $(bm BM_ValidRange ms) | $(bm BM_ValidRangeProved ms) | \`$bench --benchmark_filter=BM_ValidRange\` |
+| \`dragon collide\` | $(wall $dragon collide) s | $(wall $dragon collide --prove) s | \`time $dragon collide [--prove]\` |
+| \`dragon turnaround\` | $(wall $dragon turnaround -q) s | $(wall $dragon turnaround -q --prove) s | \`time $dragon turnaround [--prove]\` |
+| \`dragon min-pitch\` | $(wall $dragon min-pitch) s | $(wall $dragon min-pitch --prove) s | \`time $dragon min-pitch [--prove]\` |
+| \`dragon max-speed\` | $(wall $dragon max-speed) s | $(wall $dragon max-speed --prove) s | \`time $dragon max-speed [--prove]\` |
+
 ## Encoding that suits line art
 
 \`scripts/bench-video.sh\` makes the README's coil-in film (\`dragon video --to collision --speedup
