@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "support/random_bench.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/collision.hpp"
 
@@ -70,11 +71,7 @@ Case random_case(std::mt19937& rng, PathKind kind, bool contact) {
         Case c;
         Scenario& s = c.scenario;
         s.path.kind = kind;
-        s.bench.bench_count = 6 + static_cast<int>(u(rng) * 18);
-        s.bench.body_length = 1.2 + 1.3 * u(rng);
-        s.bench.head_length = s.bench.body_length + 1.5 * u(rng);
-        s.bench.width = 0.15 + 0.2 * u(rng);
-        s.bench.hole_offset = 0.1 + 0.2 * u(rng);
+        dragon_test::draw_bench(s.bench, rng);
         s.head_speed = 0.5 + 2.0 * u(rng);
         s.path.pitch = s.bench.width + 0.05 + 0.5 * u(rng);
         s.path.start_turn = 5.0 + 6.0 * u(rng);

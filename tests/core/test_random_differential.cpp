@@ -15,6 +15,7 @@
 #include <sstream>
 #include <vector>
 
+#include "support/random_bench.hpp"
 #include "dragon/analyses.hpp"
 #include "dragon/collision.hpp"
 #include "dragon/turnaround.hpp"
@@ -43,11 +44,7 @@ Scenario random_scenario(std::mt19937& rng, PathKind kind) {
     for (;;) {
         Scenario s;
         s.path.kind = kind;
-        s.bench.bench_count = 6 + static_cast<int>(u(rng) * 18);
-        s.bench.body_length = 1.2 + 1.3 * u(rng);
-        s.bench.head_length = s.bench.body_length + 1.5 * u(rng);
-        s.bench.width = 0.15 + 0.2 * u(rng);
-        s.bench.hole_offset = 0.1 + 0.2 * u(rng);
+        dragon_test::draw_bench(s.bench, rng);
         const double speeds[] = {0.05, 1.0, 5.0};
         s.head_speed = speeds[static_cast<int>(u(rng) * 3) % 3];
         s.path.pitch = s.bench.width + 0.05 + 0.6 * u(rng);
