@@ -13,9 +13,13 @@ std::string count_of(long long n, const std::string& one, const std::string& man
 
 std::string proof_words(const ContactProof& p, const Contact* c) {
     if (p.proved_steps == 0)
-        return fmt::format("not proved: each of the search's {} steps rests on its rate bound checked at its end "
-                           "(--prove encloses every bench over each step)\n",
-                           p.unproved_steps);
+        return p.motion_checked  // asked to prove (the valid motion was), but no step could be enclosed
+                   ? fmt::format("not proved: none of the search's {} steps could be enclosed (a link turning too far "
+                                 "for the enclosures and the speed bounds); each rests on its rate bound checked at "
+                                 "its end\n", p.unproved_steps)
+                   : fmt::format("not proved: each of the search's {} steps rests on its rate bound checked at its end "
+                                 "(--prove encloses every bench over each step)\n",
+                                 p.unproved_steps);
     std::string out =
         c ? fmt::format("proved: the first contact lies in t = [{:.15g}, {:.15g}] s (head travel [{:.15g}, {:.15g}] m): "
                         "{} steps proved contact-free by enclosing every bench over each step",
