@@ -40,11 +40,20 @@ constexpr double kProbeHealth = 0.05;
 constexpr int kHealthHalvings = 4;
 // A search needing more evaluations than this has a broken bound: fail loudly, never hang.
 constexpr int kMaxEvaluations = 100000;
+// Bracketing a watched tangency: its excess is looked at this many predicted distances ahead
+// (a prediction from the excess's rate now, which grows as the jam nears), then narrowed by at
+// most kFalsiIterations steps of regula falsi (each at least halves the bracket every other step).
+constexpr double kProbeReach[] = {1.5, 3.0, 6.0};
+constexpr int kFalsiIterations = 200;
+// A step whose bound broke is taken again this much shorter.
+constexpr double kRetryShrink = 0.25;
+// Roundings of the head's arc position that its resolution allows at least (resolution()).
+constexpr double kArcRoundings = 4.0;
 
 double resolution(double s, double tolerance);
 
 struct Evaluation {
-    double s = 0.0;
+    double s = 0.0;  // the head's arc position, m
     Frame frame;
     std::vector<LinkCheck> links;
     double step = INFINITY;  // head travel no link's margin can run out in, m
@@ -53,7 +62,7 @@ struct Evaluation {
 
 // Where a jam lies: `valid` is continuous, `past` is not, |past - valid| <= the tolerance.
 struct Bracket {
-    double valid = 0.0, past = 0.0;
+    double valid = 0.0, past = 0.0;  // the head's arc positions, m
     int link = 0;
     JamKind kind = JamKind::root_vanishes;
     Vec2 point = Vec2::Zero();
@@ -62,7 +71,7 @@ struct Bracket {
 class JamSearch {
 public:
     JamSearch(const Path& path, const BenchSpec& spec, double dir, double arc_tolerance, JamSearchStats& stats)
-        : path_(path), spec_(spec), dir_(dir), tol_(arc_tolerance), stats_(stats),
+        : path_(path), spec_(spec), dir_(dir), arc_tol_(arc_tolerance), stats_(stats),
           calm_head_(jam::calm_for(path, spec.link_length(1))),
           calm_body_(spec.bench_count > 1 ? jam::calm_for(path, spec.link_length(2)) : calm_head_) {}
 
@@ -118,27 +127,27 @@ public:
         const double chord = spec_.link_after(k);
         const double window = 0.5 * chord;
         const Handle& front = e.frame.handles[static_cast<size_t>(k)];
-        const auto t0 = jam::watch_tangency(path_, front.pos, chord, e.links[static_cast<size_t>(k)].watch_arc, window);
-        if (!t0) return std::nullopt;
-        if (t0->excess == 0.0) return Bracket{e.s, e.s, k, JamKind::root_vanishes, t0->point};
+        const auto tangency0 = jam::watch_tangency(path_, front.pos, chord, e.links[static_cast<size_t>(k)].watch_arc, window);
+        if (!tangency0) return std::nullopt;
+        if (tangency0->excess == 0.0) return Bracket{e.s, e.s, k, JamKind::root_vanishes, tangency0->point};
         // The tangency's excess changes with the head's travel at -dir . (velocity of handle k).
-        const double slope = -dot(t0->dir, front.tangent) * front.speed * dir_;
-        if (!(slope * t0->excess < 0.0)) return std::nullopt;  // not heading for zero
-        const double predicted = -t0->excess / slope;
+        const double slope = -dot(tangency0->dir, front.tangent) * front.speed * dir_;
+        if (!(slope * tangency0->excess < 0.0)) return std::nullopt;  // not heading for zero
+        const double predicted = -tangency0->excess / slope;
         // The excess is positive while a root-to-be-lost still has its hump beyond the chord.
-        const JamKind kind = t0->excess > 0.0 ? JamKind::root_vanishes : JamKind::nearer_root;
-        double seed = t0->arc;
+        const JamKind kind = tangency0->excess > 0.0 ? JamKind::root_vanishes : JamKind::nearer_root;
+        double seed = tangency0->arc;
         auto excess_at = [&](double s) -> std::optional<double> {
             solve_chain_front(path_, spec_, s, 1.0, k + 1, scratch_);
             ++stats_.evaluations;
-            const auto t = jam::watch_tangency(path_, scratch_.handles[static_cast<size_t>(k)].pos, chord, seed, window);
-            if (!t) return std::nullopt;
-            seed = t->arc;
-            last_point_ = t->point;
-            return t->excess;
+            const auto tangency = jam::watch_tangency(path_, scratch_.handles[static_cast<size_t>(k)].pos, chord, seed, window);
+            if (!tangency) return std::nullopt;
+            seed = tangency->arc;
+            last_point_ = tangency->point;
+            return tangency->excess;
         };
-        double valid = e.s, g_valid = t0->excess, past = NAN, g_past = NAN;
-        for (double reach : {1.5, 3.0, 6.0}) {
+        double valid = e.s, g_valid = tangency0->excess, past = NAN, g_past = NAN;
+        for (double reach : kProbeReach) {
             const double travel = std::min(reach * predicted, kMaxTravel);
             const double s = e.s + dir_ * travel;
             const auto g = excess_at(s);
@@ -152,7 +161,7 @@ public:
         if (std::isnan(past)) return std::nullopt;
         // Regula falsi (Illinois) on the head's arc position.
         int side = 0;
-        for (int it = 0; it < 200 && std::abs(past - valid) > resolution(valid, tol_); ++it) {
+        for (int it = 0; it < kFalsiIterations && std::abs(past - valid) > resolution(valid, arc_tol_); ++it) {
             double s = valid + g_valid * (past - valid) / (g_valid - g_past);
             if (!((s - valid) * dir_ > 0.0 && (past - s) * dir_ > 0.0)) s = 0.5 * (valid + past);
             if (s == valid || s == past) break;
@@ -178,7 +187,7 @@ private:
     const Path& path_;
     const BenchSpec& spec_;
     double dir_;
-    double tol_;
+    double arc_tol_;  // m of the head's arc position: where jams are located to
     JamSearchStats& stats_;
     jam::Calm calm_head_, calm_body_;  // for the head's link and the others
     Frame scratch_;
@@ -189,7 +198,7 @@ private:
 // itself where those are larger.
 double resolution(double s, double tolerance) {
     const double a = std::abs(s);
-    return std::max(tolerance, 4.0 * (std::nextafter(a, INFINITY) - a));
+    return std::max(tolerance, kArcRoundings * (std::nextafter(a, INFINITY) - a));
 }
 
 double longest_link(const BenchSpec& spec) {
@@ -217,8 +226,8 @@ struct Walk::State {
     JamSearch search;
     Evaluation cur, next;
     std::optional<Bracket> candidate;
-    double probed_at = INFINITY;  // the margin at the last probe that found nothing
-    double retry_cap = INFINITY;  // after a broken bound, retry shorter from cur
+    double probed_at = INFINITY;  // m: the margin at the last probe that found nothing
+    double retry_cap = INFINITY;  // m of head travel: after a broken bound, retry shorter from cur
     double proof_cap = INFINITY;  // the longest step the proof is expected to prove (halved when it fails)
     double proved = 0.0;          // the motion is proved continuous from the walk's start to here
     int health_halvings = 0;      // halvings of this step for its links' health (at most kHealthHalvings)
@@ -295,7 +304,7 @@ void Walk::State::step() {
     search.evaluate(to, next);
     if (const int broken = options.check_ends ? search.step_held(cur, next) : -1; broken >= 0) {
         if (travel > here_tol) {
-            retry_cap = 0.25 * travel;
+            retry_cap = kRetryShrink * travel;
             ++stats.retreats;
             return;
         }
