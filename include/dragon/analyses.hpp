@@ -199,20 +199,32 @@ struct PitchJam {
     double pitch;  // m
     Jam jam;       // where the valid motion ended at that pitch
 };
-// What min_pitch proved of its feasible intervals (MinPitchOptions::prove; docs/methods.md,
-// section 8.1): every pitch in each `proved` range reaches the boundary with no two benches
-// touching, by enclosures over cells of head radius and pitch; the `unproved` ranges (within
-// kPitchProofFinest of a change of feasibility, or where a link spans more than a quarter turn)
-// rest on the runs at the pitches probed. The infeasible intervals rest on those runs too.
+// What min_pitch proved (MinPitchOptions::prove; docs/methods.md, section 8.1), of every pitch
+// of the range, not only the pitches run: every pitch in each `proved` range reaches the boundary
+// with no two benches touching (by enclosures over cells of head radius and pitch), every pitch
+// in each `proved_colliding` range meets a contact before it (one bench's corner inside another
+// at one head radius for all of them). The `unproved` parts of the feasible intervals and the
+// `unproved_colliding` parts of the others (within 1e-7 m of a change of feasibility, or where a
+// link spans a quarter turn or more, or the runs end in a jam) rest on the runs.
 struct PitchProof {
     std::vector<PitchInterval> proved;    // m: ranges of pitches proved feasible (feasible = true)
     std::vector<PitchInterval> unproved;  // m: parts of feasible intervals not proved
+    std::vector<PitchInterval> proved_colliding;    // m: ranges of pitches proved infeasible (feasible = false)
+    std::vector<PitchInterval> unproved_colliding;  // m: parts of infeasible intervals not proved
     int cells = 0;          // cells of head radius and pitch proved contact-free
-    int pitch_ranges = 0;   // ranges of pitches marched from the start in to the boundary
+    int pitch_ranges = 0;   // ranges of pitches marched, or proved colliding
     int subdivisions = 0;   // cells taken again smaller (a shorter radius step, or half the pitches)
     double least_gap = INFINITY;  // m: the least separation proved (at most 0.05 m)
-    // "enclosure cells" (every feasible pitch proved), or "enclosure cells, incomplete".
-    const char* method() const { return unproved.empty() ? "enclosure cells" : "enclosure cells, incomplete"; }
+    // m: the least feasible pitch of the range lies in [least_lo, least_hi]: every pitch below
+    // least_lo collides (the proved colliding ranges from the range's low end on; the low end
+    // itself when none starts there) and least_hi reaches the boundary untouched (the least pitch
+    // proved feasible). NaN when nothing is proved feasible.
+    double least_lo = NAN, least_hi = NAN;
+    // "enclosure cells" (every pitch of the range proved feasible or colliding), or
+    // "enclosure cells, incomplete".
+    const char* method() const {
+        return unproved.empty() && unproved_colliding.empty() ? "enclosure cells" : "enclosure cells, incomplete";
+    }
 };
 
 // Q3's answer: the smallest feasible pitch and the feasibility of the whole range searched.
@@ -267,8 +279,8 @@ struct MinPitchOptions {
     double grid = kDefaultPitchGrid;  // the first scan's pitch spacing, m
     WorkProgress progress;         // hears of the first scan's runs, one call per run
     Executor* executor = nullptr;  // runs the pitches in parallel; null: the calling thread alone
-    // Prove every pitch of the feasible intervals feasible (MinPitch::proof; dragon min-pitch
-    // --prove), not only the pitches run. Opt-in: it costs several times the search.
+    // Prove every pitch of the range feasible or colliding as its interval says (MinPitch::proof;
+    // dragon min-pitch --prove), not only the pitches run. Opt-in: it costs many times the search.
     bool prove = false;
 };
 // The answer and any error are the same whatever the executor and its size (the pitches run

@@ -54,8 +54,12 @@ Json collide_answer(const CollideAnswer& a, bool with_handles);
 Json min_pitch_answer(const MinPitch& m, double turn_radius);
 // What min_pitch proved: {"method" ("enclosure cells", "enclosure cells, incomplete", or "runs"
 // when not asked to prove), "proved": [[lo, hi], ...] (m, every pitch inside feasible),
-// "unproved": the feasible intervals' parts left to the runs (null when not asked), "cells",
-// "pitch_ranges", "subdivisions", "least_separation" (m, or null)}.
+// "unproved": the feasible intervals' parts left to the runs (null when not asked),
+// "proved_colliding": [[lo, hi], ...] (m, every pitch inside meets a contact before the
+// boundary), "unproved_colliding": the infeasible intervals' parts left to the runs (null when
+// not asked), "least_feasible": [lo, hi] (m: the least feasible pitch of the range lies in it,
+// PitchProof::least_lo/hi; null when nothing is proved feasible), "cells", "pitch_ranges",
+// "subdivisions", "least_separation" (m, or null)}.
 Json pitch_proof_json(const std::optional<PitchProof>& p);
 // The S-curve's design, whether this dragon can follow it, the first contact and the clearance
 // up to it if the check was run ("first_contact": contact_json or null; "clearance": the

@@ -199,8 +199,11 @@ class MinPitchResult(Result):
     ("enclosure cells" with ``prove=True``, "enclosure cells, incomplete" when some feasible
     pitches, those within a fraction of a micrometre of a change, are left to the runs; "runs"
     without it), ``proved`` ([lo, hi] ranges of pitches, m, every pitch inside proved feasible),
-    ``unproved`` (the feasible intervals' parts not proved; None without ``prove``), ``cells``,
-    ``pitch_ranges``, ``subdivisions`` and ``least_separation`` (m, or None).
+    ``unproved`` (the feasible intervals' parts not proved; None without ``prove``),
+    ``proved_colliding`` and ``unproved_colliding`` (the same for the intervals that collide:
+    every pitch in a proved range meets a contact before the boundary), ``least_feasible``
+    ([lo, hi] m: the least feasible pitch of the range is proved to lie in it; None without
+    ``prove``), ``cells``, ``pitch_ranges``, ``subdivisions`` and ``least_separation`` (m, or None).
     """
 
 

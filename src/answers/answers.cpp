@@ -123,11 +123,16 @@ Json pitch_proof_json(const std::optional<PitchProof>& p) {
         for (const PitchInterval& i : v) out.push_back({i.lo, i.hi});
         return out;
     };
-    if (!p) return {{"method", "runs"}, {"proved", Json::array()}, {"unproved", nullptr}, {"cells", 0},
+    if (!p) return {{"method", "runs"}, {"proved", Json::array()}, {"unproved", nullptr},
+                    {"proved_colliding", Json::array()}, {"unproved_colliding", nullptr},
+                    {"least_feasible", nullptr}, {"cells", 0},
                     {"pitch_ranges", 0}, {"subdivisions", 0}, {"least_separation", nullptr}};
     return {{"method", p->method()},
             {"proved", ranges(p->proved)},
             {"unproved", ranges(p->unproved)},
+            {"proved_colliding", ranges(p->proved_colliding)},
+            {"unproved_colliding", ranges(p->unproved_colliding)},
+            {"least_feasible", std::isnan(p->least_lo) ? Json(nullptr) : Json::array({p->least_lo, p->least_hi})},
             {"cells", p->cells},
             {"pitch_ranges", p->pitch_ranges},
             {"subdivisions", p->subdivisions},

@@ -1,4 +1,5 @@
 // dragon min-pitch (Q3): the smallest pitch that reaches the turning space collision-free.
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -36,26 +37,34 @@ struct MinPitchOptions {
     bool quiet = false;
 };
 
+// "[lo, hi], [lo, hi] and [lo, hi]", m to ten decimals.
+std::string range_list(const std::vector<PitchInterval>& v) {
+    std::string out;
+    for (size_t k = 0; k < v.size(); ++k)
+        out += fmt::format("{}[{:.10f}, {:.10f}]", k == 0 ? "" : k + 1 == v.size() ? " and " : ", ", v[k].lo, v[k].hi);
+    return out;
+}
+
 // What the search proved, in words: one line.
 std::string proof_line(const MinPitch& m) {
-    if (!m.proof) return "not proved between the pitches run (--prove proves every pitch of the feasible intervals)\n";
+    if (!m.proof) return "not proved between the pitches run (--prove proves every pitch of the range)\n";
     const PitchProof& p = *m.proof;
-    std::string out = "proved: every pitch in ";
-    for (size_t k = 0; k < p.proved.size(); ++k)
-        out += fmt::format("{}[{:.10f}, {:.10f}]", k == 0 ? "" : k + 1 == p.proved.size() ? " and " : ", ",
-                           p.proved[k].lo, p.proved[k].hi);
-    if (p.proved.empty()) out = "proved: no pitch";
+    std::string out = p.proved.empty() ? "proved: no pitch" : "proved: every pitch in " + range_list(p.proved);
     out += fmt::format(" m reaches the boundary with no contact ({} cells of head radius and pitch enclosed", p.cells);
     if (std::isfinite(p.least_gap)) out += fmt::format(", least separation proved {:.3g} m", p.least_gap);
     out += ")";
-    if (!p.unproved.empty()) {
-        out += "; not proved: ";
-        for (size_t k = 0; k < p.unproved.size(); ++k)
-            out += fmt::format("{}[{:.10f}, {:.10f}]", k == 0 ? "" : ", ", p.unproved[k].lo, p.unproved[k].hi);
-        out += " m (rests on the runs at the pitches probed)";
-    }
-    return out + "; the intervals that collide rest on the runs at the pitches probed\n";
+    if (!p.proved_colliding.empty())
+        out += "; every pitch in " + range_list(p.proved_colliding) + " m meets a contact before it";
+    std::vector<PitchInterval> unproved = p.unproved;
+    unproved.insert(unproved.end(), p.unproved_colliding.begin(), p.unproved_colliding.end());
+    std::sort(unproved.begin(), unproved.end(), [](const PitchInterval& a, const PitchInterval& b) { return a.lo < b.lo; });
+    if (!unproved.empty()) out += "; not proved: " + range_list(unproved) + " m (rests on the runs at the pitches probed)";
+    if (!std::isnan(p.least_lo))
+        out += fmt::format("\nproved: the least feasible pitch of the range lies in [{:.10f}, {:.10f}] m", p.least_lo,
+                           p.least_hi);
+    return out + "\n";
 }
+
 }  // namespace
 
 void register_min_pitch(CLI::App& app, Registry& reg) {

@@ -287,7 +287,7 @@ MinPitch min_pitch(const Scenario& scenario, double lo, double hi, const MinPitc
                                std::abs(std::nextafter(j.time, INFINITY) - j.time));
     }
     out.tolerance = tol::pitch;
-    if (options.prove) out.proof = prove_feasible_pitches(s, out.intervals, ex);
+    if (options.prove) out.proof = prove_pitches(s, out.intervals, ex);
     return out;
 }
 

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "chain_front.hpp"
+#include "golden_section.hpp"
 #include "swept_proof.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/constants.hpp"
@@ -35,6 +36,11 @@ constexpr double kRadiusToPitch = 0.25;
 // The benches left out of the cells (those their offsets from the spiral keep apart) are found
 // for this many radius steps at once: their proof holds in every cell inside.
 constexpr double kTailSteps = 8.0;
+// Head radii between the first contact and the boundary at which a witness of a collision is
+// looked for (the deepest overlap of the contact's pair).
+constexpr int kWitnessSamples = 48;
+// m: the golden section on the deepest overlap stops at this bracket of head radius.
+constexpr double kWitnessRadius = 1e-7;
 // m: a radius step below this is not tried (far below any cell's use; stops a range that
 // cannot be proved from stepping without end).
 constexpr double kFinestRadiusStep = 1e-12;
@@ -137,6 +143,124 @@ void march(const BenchSpec& spec, double start_turn, double boundary, double p_l
     }
 }
 
+// A collision proved for every pitch of [p_lo, p_hi] (pitch_proof.hpp's second part): at one head
+// radius r the same corner of one bench lies inside another for every pitch, deeper than the two
+// benches can move as the pitch does. The witness is taken from the run at the range's middle
+// pitch: its first contact's pair, at the radius (between the contact and the boundary) where
+// that pair's deepest corner is deepest.
+bool collides_throughout(const Scenario& s, double p_lo, double p_hi, Frame& f, std::vector<double>& theta_a,
+                         std::vector<double>& theta_b) {
+    const BenchSpec& spec = s.bench;
+    const double p_mid = 0.5 * (p_lo + p_hi);
+    const BoundaryRun run = run_to_boundary(s, p_mid);
+    if (!run.contact) return false;  // a jam (or no contact at all): nothing to take a witness from
+    const int a = run.contact->bench_a, b = run.contact->bench_b;
+    const size_t ka = static_cast<size_t>(a - 1), kb = static_cast<size_t>(b - 1);
+    const Spiral mid(p_mid);
+    // The corner of one bench inside the other, and how deep (its distance to the other's
+    // boundary), at head radius r for the middle pitch.
+    struct Witness {
+        double r = 0.0, depth = -INFINITY;
+        size_t inner = 0, outer = 0;  // the bench whose corner it is, and the bench it is inside (0-based)
+        double along = 0.0, across = 0.0;  // which corner: +-1 each
+    };
+    const auto deepest_at = [&](double r) {
+        solve_chain_front(mid, spec, mid.arc({0, r / mid.b()}), 1.0, b + 1, f);
+        Witness w;
+        w.r = r;
+        for (const auto& [inner, outer] : {std::pair{ka, kb}, std::pair{kb, ka}}) {
+            const Rect& in = f.benches[inner];
+            const Rect& out = f.benches[outer];
+            for (const double along : {-1.0, 1.0})
+                for (const double across : {-1.0, 1.0}) {
+                    const Vec2 c = in.centre + along * in.half_length * in.axis + across * in.half_width * perp(in.axis);
+                    const Vec2 d = c - out.centre;
+                    const double depth = std::min(out.half_length - std::abs(dot(d, out.axis)),
+                                                  out.half_width - std::abs(dot(d, perp(out.axis))));
+                    if (depth > w.depth) w = {r, depth, inner, outer, along, across};
+                }
+        }
+        return w;
+    };
+    const double r_contact = run.contact->head_radius, boundary = s.path.turn_radius;
+    const double spacing = (r_contact - boundary) / kWitnessSamples;
+    Witness best = deepest_at(r_contact);
+    for (int k = 1; k <= kWitnessSamples; ++k) {
+        const Witness w = deepest_at(r_contact - spacing * k);
+        if (w.depth > best.depth) best = w;
+    }
+    // The deepest sample's neighbourhood by golden section (a grazing overlap lasts a few
+    // millimetres of radius, between samples).
+    if (spacing > 0.0) {
+        const double lo = std::max(boundary, best.r - spacing), hi = std::min(r_contact, best.r + spacing);
+        const double r_peak = golden_min([&](double r) { return -deepest_at(r).depth; }, lo, hi, kWitnessRadius).first;
+        if (const Witness w = deepest_at(r_peak); w.depth > best.depth) best = w;
+    }
+    if (!(best.depth > 0.0)) return false;
+    // Every pitch of the range at that radius: each handle's polar offset D between its values at
+    // the range's two ends (Proposition P2, the cell [r, start] x [b_lo, b_hi], its bounds checked
+    // at (r, b_lo): this also proves the motion valid all the way down to r for every pitch).
+    const double r = best.r;
+    const double b_lo = Spiral(p_lo).b(), b_hi = Spiral(p_hi).b(), b_mid = mid.b();
+    if (!angles_at(spec, r, p_hi, theta_a) || !angles_at(spec, r, p_lo, theta_b) || !bounds_hold(theta_b, b_lo, b_hi))
+        return false;
+    solve_chain_front(mid, spec, mid.arc({0, r / b_mid}), 1.0, b + 1, f);  // the witness's chain again
+    // How far handle i can be from its place at the middle pitch, in the frame turned with the
+    // head (where the chain's shape is compared at each pitch: overlapping is the same turned):
+    // P = (r + b D)(cos D, sin D) moves by D |b - b_mid| as b does and by at most
+    // sqrt(b^2 + (r + b D)^2) |D - D_mid| as D does.
+    const auto moved = [&](size_t i) {
+        const double d_mid = f.handles[i].place.u - f.handles[0].place.u;
+        const double d_lo = theta_a[i] - theta_a[0], d_hi = theta_b[i] - theta_b[0];
+        const double spread = std::max(d_hi - d_mid, d_mid - d_lo);
+        return d_hi * std::max(b_hi - b_mid, b_mid - b_lo) + math::hypot(b_hi, r + b_hi * d_hi) * spread;
+    };
+    // A corner c = cF F + cR R + j perp(F - R) of bench k moves by at most (|cF| + |j|) times its
+    // front handle's move plus (|cR| + |j|) times its rear's.
+    const auto corner_moved = [&](size_t k, double along, double across) {
+        const Rect& rect = f.benches[k];
+        const double d = spec.link_length(static_cast<int>(k) + 1);
+        const double cF = 0.5 + along * rect.half_length / d, cR = 0.5 - along * rect.half_length / d;
+        const double j = std::abs(across * rect.half_width / d);
+        return (std::abs(cF) + j) * moved(k) + (std::abs(cR) + j) * moved(k + 1);
+    };
+    double outer_moved = 0.0;  // the outer bench moves no point farther than its farthest corner
+    for (const double along : {-1.0, 1.0})
+        for (const double across : {-1.0, 1.0}) outer_moved = std::max(outer_moved, corner_moved(best.outer, along, across));
+    // The depth again from this chain (the same solve as the scan's, bit for bit).
+    const Rect& in = f.benches[best.inner];
+    const Rect& out = f.benches[best.outer];
+    const Vec2 c = in.centre + best.along * in.half_length * in.axis + best.across * in.half_width * perp(in.axis);
+    const Vec2 d = c - out.centre;
+    const double depth = std::min(out.half_length - std::abs(dot(d, out.axis)), out.half_width - std::abs(dot(d, perp(out.axis))));
+    return depth > corner_moved(best.inner, best.along, best.across) + outer_moved + contact::kProofSlack;
+}
+
+// Proves the range [p_lo, p_hi] of an infeasible interval colliding, halving what one witness
+// cannot cover; adds what it proved to `out`.
+void prove_colliding(const Scenario& s, double p_lo, double p_hi, PitchProof& out) {
+    Frame f;
+    std::vector<double> theta_a, theta_b;
+    std::vector<std::pair<double, double>> todo{{p_lo, p_hi}};
+    while (!todo.empty()) {
+        const auto [lo, hi] = todo.back();
+        todo.pop_back();
+        ++out.pitch_ranges;
+        if (collides_throughout(s, lo, hi, f, theta_a, theta_b)) {
+            out.proved_colliding.push_back({lo, hi, false});
+            continue;
+        }
+        ++out.subdivisions;
+        if (hi - lo <= kPitchProofFinest) {
+            out.unproved_colliding.push_back({lo, hi, false});
+            continue;
+        }
+        const double mid = 0.5 * (lo + hi);
+        todo.push_back({mid, hi});
+        todo.push_back({lo, mid});
+    }
+}
+
 // Sorted, with touching ranges merged.
 std::vector<PitchInterval> merged(std::vector<PitchInterval> v) {
     std::sort(v.begin(), v.end(), [](const PitchInterval& a, const PitchInterval& b) { return a.lo < b.lo; });
@@ -150,7 +274,7 @@ std::vector<PitchInterval> merged(std::vector<PitchInterval> v) {
 
 }  // namespace
 
-PitchProof prove_feasible_pitches(const Scenario& s, const std::vector<PitchInterval>& intervals, Executor& ex) {
+PitchProof prove_pitches(const Scenario& s, const std::vector<PitchInterval>& intervals, Executor& ex) {
     // The ranges marched: each feasible interval in kFirstRanges equal parts.
     std::vector<std::pair<double, double>> ranges;
     for (const PitchInterval& iv : intervals) {
@@ -159,14 +283,28 @@ PitchProof prove_feasible_pitches(const Scenario& s, const std::vector<PitchInte
             ranges.emplace_back(k == 0 ? iv.lo : iv.lo + (iv.hi - iv.lo) * k / kFirstRanges,
                                 k + 1 == kFirstRanges ? iv.hi : iv.lo + (iv.hi - iv.lo) * (k + 1) / kFirstRanges);
     }
+    // And each infeasible interval's, to be proved colliding.
+    const size_t feasible_ranges = ranges.size();
+    for (const PitchInterval& iv : intervals) {
+        if (iv.feasible) continue;
+        for (int k = 0; k < kFirstRanges; ++k)
+            ranges.emplace_back(k == 0 ? iv.lo : iv.lo + (iv.hi - iv.lo) * k / kFirstRanges,
+                                k + 1 == kFirstRanges ? iv.hi : iv.lo + (iv.hi - iv.lo) * (k + 1) / kFirstRanges);
+    }
     std::vector<PitchProof> parts(ranges.size());
     ex.parallel_for(ranges.size(), [&](size_t k, int) {
-        march(s.bench, s.path.start_turn, s.path.turn_radius, ranges[k].first, ranges[k].second, parts[k]);
+        if (k < feasible_ranges)
+            march(s.bench, s.path.start_turn, s.path.turn_radius, ranges[k].first, ranges[k].second, parts[k]);
+        else
+            prove_colliding(s, ranges[k].first, ranges[k].second, parts[k]);
     });
     PitchProof out;
     for (const PitchProof& p : parts) {
         out.proved.insert(out.proved.end(), p.proved.begin(), p.proved.end());
         out.unproved.insert(out.unproved.end(), p.unproved.begin(), p.unproved.end());
+        out.proved_colliding.insert(out.proved_colliding.end(), p.proved_colliding.begin(), p.proved_colliding.end());
+        out.unproved_colliding.insert(out.unproved_colliding.end(), p.unproved_colliding.begin(),
+                                      p.unproved_colliding.end());
         out.cells += p.cells;
         out.pitch_ranges += p.pitch_ranges;
         out.subdivisions += p.subdivisions;
@@ -174,6 +312,15 @@ PitchProof prove_feasible_pitches(const Scenario& s, const std::vector<PitchInte
     }
     out.proved = merged(std::move(out.proved));
     out.unproved = merged(std::move(out.unproved));
+    out.proved_colliding = merged(std::move(out.proved_colliding));
+    out.unproved_colliding = merged(std::move(out.unproved_colliding));
+    if (!out.proved.empty() && !intervals.empty()) {
+        const double lo = intervals.front().lo;
+        out.least_hi = out.proved.front().lo;
+        out.least_lo = !out.proved_colliding.empty() && out.proved_colliding.front().lo == lo
+                           ? std::min(out.proved_colliding.front().hi, out.least_hi)
+                           : lo;
+    }
     return out;
 }
 

@@ -1,6 +1,7 @@
-// The minimum pitch's feasible intervals proved pitch by pitch (MinPitchOptions::prove;
-// docs/methods.md, section 8.1): every pitch inside them, not only the grid's and the
-// narrowing's, reaches the turning space's boundary with no two benches touching.
+// The minimum pitch's intervals proved pitch by pitch (MinPitchOptions::prove; docs/methods.md,
+// section 8.1): every pitch inside the feasible ones, not only the grid's and the narrowing's,
+// reaches the turning space's boundary with no two benches touching; every pitch inside the
+// others meets a contact before it.
 //
 // The proof covers cells of (head radius r0, spiral parameter b = pitch / 2 pi). On the plain
 // spiral r = b theta let a link's front handle be at radius rho and its rear handle alpha
@@ -31,8 +32,14 @@ namespace dragon {
 // pitches next to a change of feasibility, where a pair's closest approach falls to zero).
 inline constexpr double kPitchProofFinest = 1e-7;
 
-// Proves the feasible intervals of `intervals` (min_pitch's), each range of pitches on its own;
-// the scenario's bench, start_turn and turn_radius are the runs'.
-PitchProof prove_feasible_pitches(const Scenario& s, const std::vector<PitchInterval>& intervals, Executor& ex);
+// Proves the intervals of `intervals` (min_pitch's) each as it says, feasible or colliding, each
+// range of pitches on its own; the scenario's bench, start_turn and turn_radius are the runs'.
+// A colliding range is proved by a witness: at one head radius r at or outside the turning
+// space, a corner of one bench of the contact's pair lies inside the other at the range's middle
+// pitch deeper than both can move over the range (Proposition P2 at the fixed radius r bounds
+// every handle's polar offset between its values at the range's ends; each handle then moves at
+// most D |b - b_mid| + sqrt(b^2 + (r + b D)^2) |D - D_mid|, and a corner as its two handles do).
+// Every pitch of the range then overlaps at r: it met its first contact before the boundary.
+PitchProof prove_pitches(const Scenario& s, const std::vector<PitchInterval>& intervals, Executor& ex);
 
 }  // namespace dragon

@@ -153,20 +153,52 @@ TEST(PitchProof, ProvesTheContestsFeasibleIntervalUpToTheCut) {
         const double pitch = p.proved.front().lo + d;
         EXPECT_FALSE(collides(pitch)) << pitch;
     }
+    // Below the cut every pitch is proved to collide but those within a few micrometres of it,
+    // and runs at pitches the search never ran agree; the least feasible pitch is bracketed.
+    ASSERT_EQ(p.proved_colliding.size(), 1u);
+    EXPECT_EQ(p.proved_colliding.front().lo, 0.35);
+    EXPECT_LE(p.proved_colliding.front().hi, m.pitch);
+    EXPECT_LT(m.pitch - p.proved_colliding.front().hi, 1e-5);
+    EXPECT_LT(total_width(p.unproved_colliding), 1e-5);
+    for (double d = 1e-5; d < 0.1; d *= 3.7) {
+        const double pitch = p.proved_colliding.front().hi - d;
+        EXPECT_TRUE(collides(pitch)) << pitch;
+    }
+    EXPECT_EQ(p.least_lo, p.proved_colliding.front().hi);
+    EXPECT_EQ(p.least_hi, p.proved.front().lo);
+    EXPECT_LE(p.least_lo, m.pitch);
+    EXPECT_GE(p.least_hi, m.pitch);
+}
+
+// A range claimed colliding that holds feasible pitches (the contest's cut inside it): no pitch
+// at or above the cut is proved colliding, and the pitches well below it are.
+TEST(PitchProof, NeverProvesFeasiblePitchesColliding) {
+    const MinPitch m = min_pitch(Scenario{}, 0.44, 0.46, {.grid = 0.01});
+    const double cut = m.pitch;
+    ASSERT_TRUE(std::isfinite(cut));
+    ASSERT_FALSE(collides(cut + 1e-6));
+    ThreadPool pool(2);
+    const PitchProof p = prove_pitches(Scenario{}, {{0.448, cut + 2e-6, false}}, pool);
+    ASSERT_FALSE(p.proved_colliding.empty());
+    for (const PitchInterval& iv : p.proved_colliding) EXPECT_LE(iv.hi, cut) << "proved a feasible pitch colliding";
+    EXPECT_EQ(p.proved_colliding.front().lo, 0.448);
+    EXPECT_GT(p.proved_colliding.back().hi, cut - 1e-5);
+    EXPECT_FALSE(p.unproved_colliding.empty());
+    EXPECT_EQ(p.unproved_colliding.back().hi, cut + 2e-6);
 }
 
 // A range claimed feasible that holds a collision window narrower than the grid (the pitches
-// just below the contest's cut, 10 micrometres of them, at its start): the proof leaves the
+// just below the contest's cut, 3 micrometres of them, at its start): the proof leaves the
 // window unproved and proves no pitch that collides.
 TEST(PitchProof, NeverProvesAWindowOfCollisionInsideARangeClaimedFeasible) {
     const MinPitch m = min_pitch(Scenario{}, 0.44, 0.46, {.grid = 0.01});
     const double cut = m.pitch;
     ASSERT_TRUE(std::isfinite(cut));
-    const double window_lo = cut - 1e-5;
+    const double window_lo = cut - 3e-6;
     ASSERT_TRUE(collides(window_lo));
     ASSERT_TRUE(collides(cut - 2e-9));
     ThreadPool pool(2);
-    const PitchProof p = prove_feasible_pitches(Scenario{}, {{window_lo, 0.452, true}}, pool);
+    const PitchProof p = prove_pitches(Scenario{}, {{window_lo, 0.452, true}}, pool);
     ASSERT_FALSE(p.proved.empty());
     for (const PitchInterval& iv : p.proved) EXPECT_GE(iv.lo, cut - tol::pitch) << "proved a colliding pitch";
     ASSERT_FALSE(p.unproved.empty());

@@ -116,6 +116,9 @@ def test_min_pitch_proof_is_the_tools(dragon_json):
     assert width == pytest.approx(sum(b - a for a, b in feasible), abs=1e-12)
     # Only the pitches next to the cut are left to the runs.
     assert sum(hi - lo for lo, hi in proof["unproved"]) < 1e-6
+    # The least feasible pitch is bracketed around the one the search found.
+    lo, hi = proof["least_feasible"]
+    assert lo <= mine["pitch"] <= hi and hi - lo < 1e-5
     unproved = bd.min_pitch(lo=0.44, hi=0.47, grid=0.01, progress=False).to_dict()
     assert unproved["proof"]["method"] == "runs" and unproved["proof"]["unproved"] is None
     assert unproved["pitch"] == mine["pitch"]
