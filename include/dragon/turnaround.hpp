@@ -189,6 +189,9 @@ struct MaxSpeedProof {
                             // every handle moving forward), or split down to 1e-11 m, or past the work cap
     double unproved_travel = 0.0;  // m of head travel those stretches cover
     double narrowest = 0.0;  // m of head travel: the narrowest stretch bounded
+    // The valid motion over the window, which the bounds assume: proved by the walk asked to
+    // prove every step (find_jam's JamSearchOptions::prove; docs/methods.md, section 4.1).
+    JamSearchStats motion{};
     // "lipschitz bound" when every stretch was bounded (ratio_hi holds over the whole window),
     // else "lipschitz bound, incomplete" (ratio_hi is +inf: only the lower end is claimed).
     const char* method() const { return unproved == 0 ? "lipschitz bound" : "lipschitz bound, incomplete"; }

@@ -81,6 +81,14 @@ Json enclosure_json(const std::optional<Contact>& c) {
              : Json(nullptr);
 }
 
+// What a walk asked to prove every step proved of the valid motion.
+Json motion_json(const JamSearchStats& m) {
+    return {{"method", m.unproved_steps == 0 ? "proved" : "proved+rate"},
+            {"steps", m.proved_steps},
+            {"unproved_steps", m.unproved_steps},
+            {"unproved_travel", m.unproved_travel}};
+}
+
 Json proof_json(const ContactProof& p) {
     return {{"method", p.method()},
             {"steps", p.proved_steps},
@@ -89,11 +97,7 @@ Json proof_json(const ContactProof& p) {
             {"unproved_travel", p.unproved_travel},
             {"least_separation", std::isfinite(p.least_gap) ? Json(p.least_gap) : Json(nullptr)},
             {"covered_travel", {p.proved_from, p.proved_to}},
-            {"motion", p.motion_checked ? Json{{"method", p.motion.unproved_steps == 0 ? "proved" : "proved+rate"},
-                                               {"steps", p.motion.proved_steps},
-                                               {"unproved_steps", p.motion.unproved_steps},
-                                               {"unproved_travel", p.motion.unproved_travel}}
-                                        : Json(nullptr)}};
+            {"motion", p.motion_checked ? motion_json(p.motion) : Json(nullptr)}};
 }
 
 Json collide_answer(const CollideAnswer& r, bool with_handles) {
@@ -235,7 +239,8 @@ Json max_speed_answer(const MaxSpeed& m, double limit) {
                            {"evaluations", p.evaluations},
                            {"unproved", p.unproved},
                            {"unproved_travel", p.unproved_travel},
-                           {"narrowest", p.narrowest}};
+                           {"narrowest", p.narrowest},
+                           {"motion", motion_json(p.motion)}};
     } else {
         answer["enclosure"] = nullptr;
         answer["proof"] = {{"method", "sampled"}};

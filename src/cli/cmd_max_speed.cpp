@@ -29,9 +29,14 @@ std::string proof_line(const MaxSpeed& m) {
         return fmt::format("not proved: {} of the window's stretches ({} m of head travel) could not be bounded; "
                            "the largest speed is at most {} m/s\n", count_of(p.unproved, "stretch", "stretches"),
                            format_amount(p.unproved_travel), format_amount(p.max_head_speed_hi));
+    const std::string motion =
+        p.motion.unproved_steps == 0
+            ? std::string("; the valid motion proved over the window")
+            : fmt::format("; the valid motion proved over the window but for {} ({} m of head travel) on their rates",
+                          count_of(p.motion.unproved_steps, "step", "steps"), format_amount(p.motion.unproved_travel));
     return fmt::format("proved: the largest head speed lies in [{:.12f}, {:.12f}] m/s (every handle's speed bounded "
-                       "over {}, {} split)\n", p.max_head_speed_lo, p.max_head_speed_hi,
-                       count_of(p.stretches, "stretch", "stretches"), p.subdivisions);
+                       "over {}, {} split){}\n", p.max_head_speed_lo, p.max_head_speed_hi,
+                       count_of(p.stretches, "stretch", "stretches"), p.subdivisions, motion);
 }
 
 struct MaxSpeedFlags {

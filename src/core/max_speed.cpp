@@ -211,6 +211,8 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
         out.proof = MaxSpeedProof{};
         MaxSpeedProof& proof = *out.proof;
         proof.tolerance = kProofTolerance;
+        // The bounds assume the valid motion over the window: proved here, step by step.
+        find_jam(path, s.bench, sim.start_arc(), 1.0, cut.from, cut.to, &proof.motion, {true});
         proof.narrowest = ds;
         // A stretch [a, b] whose bound `top` (NaN: none) is not yet within the tolerance: split
         // it at its middle, the chain solved there counting as found, until each part's is.

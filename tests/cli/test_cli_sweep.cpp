@@ -29,6 +29,7 @@ const std::set<std::string> kTables = {"handles", "length_vs_ratio", "length_vs_
 sweep_test::Table sweep(const std::string& args) {
     const fs::path out = dragon_test::scratch_dir() / "sweep.csv";
     fs::remove(out);
+    fs::remove(out.string() + ".partial");  // a run interrupted before this one may have left it
     const dragon_test::CliRun r = run_dragon("sweep -q -o " + out.string() + " " + args);
     EXPECT_EQ(r.code, 0) << args << "\n" << r.err;
     EXPECT_EQ(r.err, "");

@@ -83,6 +83,9 @@ TEST(MaxSpeedProof, EnclosesTheContestsMaximumWithinTheTolerance) {
     const MaxSpeedProof& p = *m.proof;
     EXPECT_GT(p.stretches, 0);
     EXPECT_GT(p.narrowest, 0.0);
+    // The valid motion the bounds assume is proved over the window too, every step of it.
+    EXPECT_GT(p.motion.proved_steps, 0);
+    EXPECT_EQ(p.motion.unproved_steps, 0);
     // The printed answer (6 decimals of m/s) is proved: both ends of the enclosure print alike.
     EXPECT_EQ(fmt::format("{:.6f}", p.max_head_speed_lo), fmt::format("{:.6f}", p.max_head_speed_hi));
     EXPECT_EQ(fmt::format("{:.6f}", p.max_head_speed_lo), fmt::format("{:.6f}", m.max_head_speed));
