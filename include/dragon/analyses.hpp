@@ -215,11 +215,12 @@ struct PitchProof {
     int pitch_ranges = 0;   // ranges of pitches marched, or proved colliding
     int subdivisions = 0;   // cells taken again smaller (a shorter radius step, or half the pitches)
     double least_gap = INFINITY;  // m: the least separation proved (at most 0.05 m)
-    // m: the least feasible pitch of the range lies in [least_lo, least_hi]: every pitch below
+    // m: the least feasible pitch of the range lies in [least_lo, least_hi]. Every pitch below
     // least_lo collides (the proved colliding ranges from the range's low end on; the low end
-    // itself when none starts there) and least_hi reaches the boundary untouched (the least pitch
-    // proved feasible). NaN when nothing is proved feasible.
-    double least_lo = NAN, least_hi = NAN;
+    // itself when none starts there). NaN when nothing is proved feasible.
+    double least_lo = NAN;
+    // m: the least pitch proved feasible (it reaches the boundary untouched); NaN when none is.
+    double least_hi = NAN;
     // "enclosure cells" (every pitch of the range proved feasible or colliding), or
     // "enclosure cells, incomplete".
     const char* method() const {
