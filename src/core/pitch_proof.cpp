@@ -1,10 +1,10 @@
-// The minimum pitch's feasible intervals proved pitch by pitch (the method is in pitch_proof.hpp).
+// The minimum pitch's intervals proved pitch by pitch, feasible and colliding (the method is in
+// pitch_proof.hpp).
 #include "pitch_proof.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <mutex>
 #include <numbers>
 
 #include "chain_front.hpp"
@@ -12,7 +12,6 @@
 #include "swept_proof.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/constants.hpp"
-#include "dragon/errors.hpp"
 #include "dragon/path.hpp"
 #include "dragon/portable_math.hpp"
 
