@@ -45,16 +45,23 @@ std::string range_list(const std::vector<PitchInterval>& v) {
     return out;
 }
 
-// What the search proved, in words: one line.
+// What the search proved, in words.
 std::string proof_line(const MinPitch& m) {
     if (!m.proof) return "not proved between the pitches run (--prove proves every pitch of the range)\n";
     const PitchProof& p = *m.proof;
-    std::string out = p.proved.empty() ? "proved: no pitch" : "proved: every pitch in " + range_list(p.proved);
-    out += fmt::format(" m reaches the boundary with no contact ({} cells of head radius and pitch enclosed", p.cells);
-    if (std::isfinite(p.least_gap)) out += fmt::format(", least separation proved {:.3g} m", p.least_gap);
-    out += ")";
+    std::vector<std::string> parts;
+    if (!p.proved.empty()) {
+        std::string feasible = "every pitch in " + range_list(p.proved) +
+                               fmt::format(" m reaches the boundary with no contact ({} cells of head radius and pitch "
+                                           "enclosed", p.cells);
+        if (std::isfinite(p.least_gap)) feasible += fmt::format(", least separation proved {:.3g} m", p.least_gap);
+        parts.push_back(feasible + ")");
+    }
     if (!p.proved_colliding.empty())
-        out += "; every pitch in " + range_list(p.proved_colliding) + " m meets a contact before it";
+        parts.push_back("every pitch in " + range_list(p.proved_colliding) + " m meets a contact before it");
+    std::string out = "proved: ";
+    for (size_t k = 0; k < parts.size(); ++k) out += (k == 0 ? "" : "; ") + parts[k];
+    if (parts.empty()) out += "nothing";
     std::vector<PitchInterval> unproved = p.unproved;
     unproved.insert(unproved.end(), p.unproved_colliding.begin(), p.unproved_colliding.end());
     std::sort(unproved.begin(), unproved.end(), [](const PitchInterval& a, const PitchInterval& b) { return a.lo < b.lo; });

@@ -32,6 +32,20 @@ void project(const SweptWorkspace::Swept& s, const Vec2& n, double& lo, double& 
 
 using HandleSpan = SweptWorkspace::HandleSpan;
 
+// An enclosure's bounding box: its hull points' extent, dilated by its radius and half the
+// box margin (two boxes that do not meet are then more than kProofBoxMargin apart).
+void set_box(SweptWorkspace::Swept& s) {
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (const Vec2& v : s.v) {
+        x0 = std::min(x0, v.x());
+        x1 = std::max(x1, v.x());
+        y0 = std::min(y0, v.y());
+        y1 = std::max(y1, v.y());
+    }
+    const double grow = s.radius + 0.5 * kProofBoxMargin;
+    s.x0 = x0 - grow, s.x1 = x1 + grow, s.y0 = y0 - grow, s.y1 = y1 + grow;
+}
+
 // The enclosure of a board (its rectangle `r`, the link `d` between its handles) whose front
 // handle lies in `F` and rear handle in `R`: the 16 combinations of their chords' ends in each
 // corner's linear form, and the radius the dilations add.
@@ -49,15 +63,7 @@ void enclose(const Rect& r, double d, const HandleSpan& F, const HandleSpan& R, 
             s.radius = std::max(s.radius, math::hypot(cF, j) * F.dilation + math::hypot(cR, j) * R.dilation);
         }
     }
-    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-    for (const Vec2& v : s.v) {
-        x0 = std::min(x0, v.x());
-        x1 = std::max(x1, v.x());
-        y0 = std::min(y0, v.y());
-        y1 = std::max(y1, v.y());
-    }
-    const double grow = s.radius + 0.5 * kProofBoxMargin;
-    s.x0 = x0 - grow, s.x1 = x1 + grow, s.y0 = y0 - grow, s.y1 = y1 + grow;
+    set_box(s);
 }
 
 
@@ -158,15 +164,7 @@ void enclose_on_spiral(const BenchSpec& spec, const Frame& fa, const Frame& fb, 
                 }
             }
             sw.radius = worst;
-            double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-            for (const Vec2& v : sw.v) {
-                x0 = std::min(x0, v.x());
-                x1 = std::max(x1, v.x());
-                y0 = std::min(y0, v.y());
-                y1 = std::max(y1, v.y());
-            }
-            const double grow = sw.radius + 0.5 * kProofBoxMargin;
-            sw.x0 = x0 - grow, sw.x1 = x1 + grow, sw.y0 = y0 - grow, sw.y1 = y1 + grow;
+            set_box(sw);
         }
     }
 }
