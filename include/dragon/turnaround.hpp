@@ -141,6 +141,14 @@ TurnaroundStudy study_turnaround(const Scenario& s);
 // write_study_csv (dragon/turnaround_csv.hpp, the io component) writes it to a file.
 std::string study_csv(const TurnaroundStudy& study);
 
+// What the proof of a run's least clearance established (min_clearance with `prove`).
+struct ClearanceProof {
+    bool proved = false;  // no two non-adjacent benches come within `lower` anywhere in the window
+    double lower = 0.0;   // m: the bound proved, a little under the smallest clearance found
+    int steps = 0;        // steps of head travel proved
+    int subdivisions = 0; // steps not proved, taken again shorter
+};
+
 // Is the turnaround collision-free, and how close do benches come before they touch? The first
 // contact over a window of the run (as collide finds it over the same window), and the smallest
 // clearance between non-adjacent benches up to it, or over the whole window when there is none
@@ -157,6 +165,8 @@ struct RunClearance {
     std::optional<Contact> first_contact;  // the window's first contact, if any
     bool collision_free() const { return !first_contact; }  // no contact in the window
     ContactProof proof{};      // what the first-contact search proved over the window (`prove`)
+    // With `prove` and no contact: the smallest clearance's lower bound, proved over the window.
+    std::optional<ClearanceProof> clearance_proof;
     double scan_step = 0.0;    // s
     double scan_travel = 0.0;  // m of head travel: the scan's spacing (each local minimum then refined)
     int evaluations = 0;       // frames whose clearance the scan and its refinement computed

@@ -211,7 +211,10 @@ class TurnaroundResult(Result):
     """Q4: the S-curve, whether it can be shorter, its first contact and clearance (``dragon turnaround --json``).
 
     With the clearance check, ``enclosure`` and ``proof`` say what its first-contact search
-    proved, as :class:`CollideResult`'s do (every step with ``prove=True``).
+    proved, as :class:`CollideResult`'s do (every step with ``prove=True``). ``proof["clearance"]``
+    is None without ``prove=True``; with it, ``proved``, ``at_least`` (m: no two benches come
+    closer anywhere in the window, within 1e-6 m under ``clearance["distance"]``; None when not
+    proved), ``steps`` and ``subdivisions``.
     """
 
 

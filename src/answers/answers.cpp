@@ -200,6 +200,13 @@ Json turnaround_answer(const SCurve& d, const std::optional<Jam>& design_jam, co
         answer["clearance"] = c;
         answer["enclosure"] = enclosure_json(clear->first_contact);
         answer["proof"] = proof_json(clear->proof);
+        // The smallest clearance's proved lower bound (with `prove` and no contact).
+        const std::optional<ClearanceProof>& cp = clear->clearance_proof;
+        answer["proof"]["clearance"] = cp ? Json{{"proved", cp->proved},
+                                                 {"at_least", cp->proved ? Json(cp->lower) : Json(nullptr)},
+                                                 {"steps", cp->steps},
+                                                 {"subdivisions", cp->subdivisions}}
+                                          : Json(nullptr);
     }
     // The end of the valid motion where it cuts the clearance run short, else on the design.
     answer["jam"] = jam_json(clear && clear->jam ? clear->jam : design_jam);

@@ -34,8 +34,8 @@ std::string proof_line(const MaxSpeed& m) {
             ? std::string("; the valid motion proved over the window")
             : fmt::format("; the valid motion proved over the window but for {} ({} m of head travel) on their rates",
                           count_of(p.motion.unproved_steps, "step", "steps"), format_amount(p.motion.unproved_travel));
-    return fmt::format("proved: the largest head speed lies in [{:.12f}, {:.12f}] m/s (every handle's speed bounded "
-                       "over {}, {} split){}\n", p.max_head_speed_lo, p.max_head_speed_hi,
+    return fmt::format("proved: the largest head speed lies in {} m/s (every handle's speed bounded "
+                       "over {}, {} split){}\n", proved_interval(p.max_head_speed_lo, p.max_head_speed_hi, 12),
                        count_of(p.stretches, "stretch", "stretches"), p.subdivisions, motion);
 }
 

@@ -37,11 +37,11 @@ struct MinPitchOptions {
     bool quiet = false;
 };
 
-// "[lo, hi], [lo, hi] and [lo, hi]", m to ten decimals.
-std::string range_list(const std::vector<PitchInterval>& v) {
+// "[lo, hi], [lo, hi] and [lo, hi]", m to ten decimals, rounded as `r` says (proved_interval).
+std::string range_list(const std::vector<PitchInterval>& v, Rounding r) {
     std::string out;
     for (size_t k = 0; k < v.size(); ++k)
-        out += fmt::format("{}[{:.10f}, {:.10f}]", k == 0 ? "" : k + 1 == v.size() ? " and " : ", ", v[k].lo, v[k].hi);
+        out += (k == 0 ? "" : k + 1 == v.size() ? " and " : ", ") + proved_interval(v[k].lo, v[k].hi, 10, r);
     return out;
 }
 
@@ -51,24 +51,24 @@ std::string proof_line(const MinPitch& m) {
     const PitchProof& p = *m.proof;
     std::vector<std::string> parts;
     if (!p.proved.empty()) {
-        std::string feasible = "every pitch in " + range_list(p.proved) +
+        std::string feasible = "every pitch in " + range_list(p.proved, Rounding::inward) +
                                fmt::format(" m reaches the boundary with no contact ({} cells of head radius and pitch "
                                            "enclosed", p.cells);
         if (std::isfinite(p.least_gap)) feasible += fmt::format(", least separation proved {:.3g} m", p.least_gap);
         parts.push_back(feasible + ")");
     }
     if (!p.proved_colliding.empty())
-        parts.push_back("every pitch in " + range_list(p.proved_colliding) + " m meets a contact before it");
+        parts.push_back("every pitch in " + range_list(p.proved_colliding, Rounding::inward) + " m meets a contact before it");
     std::string out = "proved: ";
     for (size_t k = 0; k < parts.size(); ++k) out += (k == 0 ? "" : "; ") + parts[k];
     if (parts.empty()) out += "nothing";
     std::vector<PitchInterval> unproved = p.unproved;
     unproved.insert(unproved.end(), p.unproved_colliding.begin(), p.unproved_colliding.end());
     std::sort(unproved.begin(), unproved.end(), [](const PitchInterval& a, const PitchInterval& b) { return a.lo < b.lo; });
-    if (!unproved.empty()) out += "; not proved: " + range_list(unproved) + " m (rests on the runs at the pitches probed)";
+    if (!unproved.empty()) out += "; not proved: " + range_list(unproved, Rounding::outward) + " m (rests on the runs at the pitches probed)";
     if (!std::isnan(p.least_lo))
-        out += fmt::format("\nproved: the least feasible pitch of the range lies in [{:.10f}, {:.10f}] m", p.least_lo,
-                           p.least_hi);
+        out += fmt::format("\nproved: the least feasible pitch of the range lies in {} m",
+                           proved_interval(p.least_lo, p.least_hi, 10));
     return out + "\n";
 }
 

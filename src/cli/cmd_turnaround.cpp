@@ -86,6 +86,19 @@ void print_text(const TurnaroundStudy& st, const std::optional<RunClearance>& cl
     }
     fmt::print("{}", window_cuts(w, "the check"));
     fmt::print("{}", proof_words(clear->proof, clear->first_contact ? &*clear->first_contact : nullptr));
+    if (const std::optional<ClearanceProof>& p = clear->clearance_proof) {
+        // The clearance found is a moment's own, so the least lies between the bound and it.
+        if (p->proved && clear->bench_a == 0)  // no pair within the scan's cutoff: a bound, no moment
+            fmt::print("proved: no two benches come closer than {:.9f} m anywhere in the window ({} enclosing every "
+                       "bench)\n", std::floor(p->lower * 1e9) / 1e9, count_of(p->steps, "step", "steps"));
+        else if (p->proved)
+            fmt::print("proved: the smallest clearance lies in {} m (no two benches come closer than its lower end "
+                       "anywhere in the window: {} enclosing every bench)\n",
+                       proved_interval(p->lower, clear->distance, 9), count_of(p->steps, "step", "steps"));
+        else
+            fmt::print("not proved: that no two benches come closer than {:.9f} m (a step could not be enclosed that "
+                       "closely); the smallest clearance rests on the scan and its refinement\n", p->lower);
+    }
 }
 
 }  // namespace
@@ -100,7 +113,7 @@ void register_turnaround(CLI::App& app, Registry& reg) {
     auto* skip = sub->add_flag("--no-clearance", opt->skip_clearance,
                                "Skip the check for a first contact and the clearance before it");
     auto* prove = sub->add_flag("--prove", opt->prove,
-                                "Prove the check: enclose every bench over each step of the first-contact search");
+                                "Prove the check: enclose every bench over each step of the first-contact search, and the smallest clearance to 1e-6 m (slower)");
     prove->excludes(skip);
     // The window is the check's: without the check it would do nothing.
     opt->window.add_to(sub, "Check from here (default -100m: 100 s before the turn at 1 m/s)",

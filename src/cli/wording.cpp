@@ -11,6 +11,24 @@ std::string count_of(long long n, const std::string& one, const std::string& man
     return fmt::format("{} {}", n, n == 1 ? one : many.empty() ? one + "s" : many);
 }
 
+std::string proved_interval(double lo, double hi, int decimals, Rounding r) {
+    // Rounded to the decimals, then stepped by one unit of the last decimal wherever the rounding
+    // went the wrong way (judged on the printed value read back as a double: right to within an
+    // ulp, far inside the proofs' own slack, contact::kProofSlack = 1e-12 m).
+    const double unit = std::pow(10.0, -decimals);
+    double a = std::stod(fmt::format("{:.{}f}", lo, decimals));
+    double b = std::stod(fmt::format("{:.{}f}", hi, decimals));
+    if (r == Rounding::outward) {
+        if (a > lo) a -= unit;
+        if (b < hi) b += unit;
+    } else {
+        if (a < lo) a += unit;
+        if (b > hi) b -= unit;
+        if (a > b) return fmt::format("[{:.17g}, {:.17g}]", lo, hi);
+    }
+    return fmt::format("[{:.{}f}, {:.{}f}]", a, decimals, b, decimals);
+}
+
 std::string proof_words(const ContactProof& p, const Contact* c) {
     if (p.proved_steps == 0)
         return p.motion_checked  // asked to prove (the valid motion was), but no step could be enclosed

@@ -12,6 +12,13 @@ namespace dragon::cli {
 // plural that is not the noun plus "s" ("local maxima").
 std::string count_of(long long n, const std::string& one, const std::string& many = "");
 
+// An interval [lo, hi] as "[lo, hi]" with `decimals` decimals, rounded so that what it says
+// stays proved: outwards (lo down, hi up) for an enclosure of an unknown value, or for what a
+// proof left open; inwards for a range all of whose values a proof established, so that the
+// printed range claims none it did not (one too narrow for the decimals: all 17 digits).
+enum class Rounding { outward, inward };
+std::string proved_interval(double lo, double hi, int decimals, Rounding r = Rounding::outward);
+
 // What a first-contact search proved, in words: one line (`c`: its contact, or null).
 std::string proof_words(const ContactProof& p, const Contact* c);
 

@@ -9,6 +9,7 @@
 
 #include "speed_bound.hpp"
 #include "untouched_tail.hpp"
+#include "dragon/collision.hpp"
 #include "dragon/constants.hpp"
 #include "dragon/geometry.hpp"
 #include "dragon/portable_math.hpp"
@@ -175,9 +176,14 @@ void enclose_on_spiral(const BenchSpec& spec, const Frame& fa, const Frame& fb, 
 // angle when `turned`), at every frame's enclosures.
 template <class Turning, class Apart>
 StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Frame& fb, size_t frames, bool turned,
-                              const Turning& turning, const Apart& apart, SweptWorkspace& ws) {
+                              const Turning& turning, const Apart& apart, SweptWorkspace& ws, double apart_by = 0.0) {
     StepProof out;
     const size_t nb = std::min(fa.benches.size(), fb.benches.size());
+    // What a pair must be proved apart by, and the boxes' margin: two boxes that do not meet
+    // are more than `margin` apart, at least apart_by.
+    const double required = apart_by + kProofSlack;
+    const double margin = std::max(kProofBoxMargin, required);
+    const double grow = 0.5 * (margin - kProofBoxMargin);
     // Boxes: each bench's over its enclosures.
     ws.boxes.resize(nb);
     for (size_t k = 0; k < nb; ++k) {
@@ -188,7 +194,7 @@ StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Fram
             box.y0 = std::min(box.y0, o.y0), box.y1 = std::max(box.y1, o.y1);
             box.radius = std::max(box.radius, o.radius);
         }
-        ws.boxes[k] = {box.x0, box.x1, box.y0, box.y1, box.radius};
+        ws.boxes[k] = {box.x0 - grow, box.x1 + grow, box.y0 - grow, box.y1 + grow, box.radius};
     }
     // The frames' axes into the turned one, each by its own head's -theta_0.
     std::array<std::array<double, 2>, 2> turn{};
@@ -201,13 +207,13 @@ StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Fram
         return Vec2{c * v.x() + sn * v.y(), -sn * v.x() + c * v.y()};
     };
     // Pairs whose boxes (grown by half the margin each) meet: sweep and prune along x. Every
-    // other pair's boxes are more than kProofBoxMargin apart in x or y, so are its benches.
+    // other pair's boxes are more than `margin` apart in x or y, so are its benches.
     ws.order.resize(nb);
     for (size_t k = 0; k < nb; ++k) ws.order[k] = static_cast<int>(k);
     std::sort(ws.order.begin(), ws.order.end(),
               [&](int a, int b) { return ws.boxes[static_cast<size_t>(a)].x0 < ws.boxes[static_cast<size_t>(b)].x0; });
     ws.active.clear();
-    out.least_gap = kProofBoxMargin;
+    out.least_gap = margin;
     for (const int k : ws.order) {
         const SweptWorkspace::Box& s = ws.boxes[static_cast<size_t>(k)];
         size_t keep = 0;
@@ -222,7 +228,7 @@ StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Fram
             if (apart(a, b)) continue;
             const double radii = o.radius + s.radius;
             double proved = b >= a + 2 ? chain_gap(turning, spec, fa, a, b) : -INFINITY;
-            if (!(proved > kProofSlack)) {
+            if (!(proved > required)) {
                 // The boards' edge normals in both frames (in the turned frame there). The
                 // normals first: the long sides face each other in most near pairs, and the
                 // loop stops at the first axis that proves the pair.
@@ -232,7 +238,7 @@ StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Fram
                 if (turned)
                     for (size_t q = 0; q < axes.size(); ++q) axes[q] = turn_back(axes[q], (q / 2) % 2);
                 double best = -INFINITY;
-                for (const Vec2& n : axes) {
+                const auto try_axis = [&](const Vec2& n) {
                     // b beyond a along n, and a beyond b: each the least over the enclosures
                     // (every frame: concave in the frames' parameters, each side on its own).
                     double above = INFINITY, below = INFINITY;
@@ -244,11 +250,24 @@ StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Fram
                         below = std::min(below, alo - bhi);
                     }
                     best = std::max({best, above, below});
-                    if (best > radii + kProofSlack + kProofBoxMargin) break;  // enough: a sharper bound is not needed
+                };
+                for (const Vec2& n : axes) {
+                    try_axis(n);
+                    if (best > radii + margin) break;  // enough: a sharper bound is not needed
+                }
+                if (!(best - radii > required)) {
+                    // Where the boards' nearest points are corner to corner no edge normal is
+                    // the direction between them, and each falls short of their distance: the
+                    // exact separation's axis in each frame is.
+                    for (size_t e = 0; e < 2; ++e) {
+                        const Frame& fe = e == 0 ? fa : fb;
+                        const Vec2 n = separation(fe.benches[a], fe.benches[b]).axis;
+                        try_axis(turned ? turn_back(n, e) : n);
+                    }
                 }
                 proved = best - radii;
             }
-            if (!(proved > kProofSlack))
+            if (!(proved > required))
                 return {StepVerdict::too_close, proved, static_cast<int>(a) + 1, static_cast<int>(b) + 1};
             if (proved < out.least_gap) {
                 out.least_gap = proved;
@@ -268,7 +287,7 @@ StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Fram
 // Each bench is then enclosed from its handles' arcs (each within L min(tau, 2) / 4 of its chord,
 // Proposition 2) as a forward step's are, and the pairs separated in the fixed frame.
 StepProof prove_by_speed_bounds(const Path& path, const BenchSpec& spec, const Frame& f0, const Frame& f1,
-                                SweptWorkspace& ws) {
+                                SweptWorkspace& ws, double apart_by) {
     const size_t nb = std::min(f0.benches.size(), f1.benches.size());
     speed::gather(path, f0, ws.facts0);
     speed::gather(path, f1, ws.facts1);
@@ -286,12 +305,13 @@ StepProof prove_by_speed_bounds(const Path& path, const BenchSpec& spec, const F
         enclose(f0.benches[k], spec.link_length(static_cast<int>(k) + 1), ws.spans[k], ws.spans[k + 1], ws.benches[k]);
     // No chain-neighbour bound here (its turnings assume handles moving forward): enclosures only.
     const auto no_turning = [](size_t, size_t) { return INFINITY; };
-    return separate_enclosures(spec, f0, f1, 1, false, no_turning, kNotSeparately, ws);
+    return separate_enclosures(spec, f0, f1, 1, false, no_turning, kNotSeparately, ws, apart_by);
 }
 
 }  // namespace
 
-StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, const Frame& f1, SweptWorkspace& ws) {
+StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, const Frame& f1, SweptWorkspace& ws,
+                     double apart_by) {
     StepProof out;
     const size_t nb = std::min(f0.benches.size(), f1.benches.size());
     const size_t nh = nb + 1;
@@ -319,12 +339,12 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
     for (size_t i = 0; i < nh; ++i) {
         const Place& p0 = f0.handles[i].place;
         const Place& p1 = f1.handles[i].place;
-        if (!at_or_ahead(path, p1, p0)) return prove_by_speed_bounds(path, spec, f0, f1, ws);
+        if (!at_or_ahead(path, p1, p0)) return prove_by_speed_bounds(path, spec, f0, f1, ws, apart_by);
         if (i + 1 < nh) {
             // The link from handle i to handle i + 1 lies, over the step, between handle i + 1's
             // place at the start and handle i's at the end.
             if (!gentle::hull_turns_gently(path, p1, f0.handles[i + 1].place, turning(i + 1, i)))
-                return prove_by_speed_bounds(path, spec, f0, f1, ws);
+                return prove_by_speed_bounds(path, spec, f0, f1, ws, apart_by);
         }
         // 2. The handle's arc over the step, within `dilation` of its chord (the fixed frame's
         // enclosures only).
@@ -349,14 +369,14 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
         const double b = spiral->b();
         const std::array<SpiralCorner, 2> corners{{{f1.handles[0].place.u, b}, {f0.handles[0].place.u, b}}};
         enclose_on_spiral(spec, f0, f1, corners, ws);
-        return separate_enclosures(spec, f0, f1, corners.size(), true, turning, kNotSeparately, ws);
+        return separate_enclosures(spec, f0, f1, corners.size(), true, turning, kNotSeparately, ws, apart_by);
     }
     ws.benches.resize(nb);
     for (size_t k = 0; k < nb; ++k)
         enclose(f0.benches[k], spec.link_length(static_cast<int>(k) + 1),
                 {f0.handles[k].pos, f1.handles[k].pos, ws.dilation[k]},
                 {f0.handles[k + 1].pos, f1.handles[k + 1].pos, ws.dilation[k + 1]}, ws.benches[k]);
-    return separate_enclosures(spec, f0, f1, 1, false, turning, kNotSeparately, ws);
+    return separate_enclosures(spec, f0, f1, 1, false, turning, kNotSeparately, ws, apart_by);
 }
 
 namespace {

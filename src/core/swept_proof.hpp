@@ -59,7 +59,8 @@ enum class StepVerdict {
 struct StepProof {
     StepVerdict verdict = StepVerdict::proved;
     // m: the least separation proved between two non-adjacent benches over the step (a lower
-    // bound on their distance at every moment of it; at most kProofBoxMargin), when proved.
+    // bound on their distance at every moment of it; at most kProofBoxMargin, or the apart_by
+    // asked for when larger), when proved.
     double least_gap = INFINITY;
     int bench_a = 0, bench_b = 0;  // the pair that set least_gap (or first failed), 1..N
 };
@@ -94,8 +95,10 @@ struct SweptWorkspace {
 
 // Proves (or fails to prove) that no two non-adjacent benches of the chain touch at any head
 // travel between the frames f0 and f1 (f0 earlier, both of the same chain on `path`, the head
-// moving forward from one to the other within the valid motion).
-StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, const Frame& f1, SweptWorkspace& ws);
+// moving forward from one to the other within the valid motion); with `apart_by` (m), that none
+// comes within apart_by of another (a lower bound on the least clearance over the step).
+StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, const Frame& f1, SweptWorkspace& ws,
+                     double apart_by = 0.0);
 
 // A value of the plain spiral's parameters at which benches are enclosed: the head's angle T
 // (rad) and the spiral's b (pitch / 2 pi, m/rad). A handle at polar offset D from the head lies

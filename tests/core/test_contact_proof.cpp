@@ -132,6 +132,51 @@ TEST(StepProof, StepsWhereHandlesBackUpAreProvedBySpeedBounds) {
     EXPECT_GE(backing, 5);
 }
 
+// A step proved farther apart than `apart_by` keeps every pair so at every sample inside it (all
+// pairs, not the broad phase); a step holding a moment closer than apart_by is never so proved.
+// On the turnaround, where its least clearance is proved this way, and on the spiral.
+TEST(StepProof, AStepProvedApartByABoundKeepsEveryPairFartherThanIt) {
+    for (const PathKind kind : {PathKind::turnaround, PathKind::spiral}) {
+        Scenario sc;
+        sc.path.kind = kind;
+        const Simulation sim(sc);
+        contact::SweptWorkspace ws;
+        Frame f;
+        int proved = 0, refused = 0;
+        const double x_from = kind == PathKind::spiral ? 300.0 : -8.0;
+        for (double x0 = x_from; x0 < x_from + 16.0; x0 += 0.97) {
+            for (const double h : {2e-4, 1e-3, 0.05, 0.4}) {
+                const Frame a = sim.frame_at_travel(x0), b = sim.frame_at_travel(x0 + h);
+                // The least clearance of dense samples inside the step, and a bound under it.
+                double least = INFINITY;
+                for (int k = 0; k <= 24; ++k) {
+                    sim.frame_at_travel_into(x0 + h * k / 24.0, f);
+                    least = std::min(least, clearance_all_pairs(f).distance);
+                }
+                for (const double below : {1e-2, 1e-4}) {
+                    const double bound = least - below;
+                    const contact::StepProof p = contact::prove_step(sim.path(), sc.bench, a, b, ws, bound);
+                    if (p.verdict != contact::StepVerdict::proved) continue;
+                    ++proved;
+                    EXPECT_GT(p.least_gap, bound);
+                    for (int k = 0; k <= 24; ++k) {
+                        sim.frame_at_travel_into(x0 + h * (k + 0.5) / 25.0, f);
+                        EXPECT_GT(clearance_all_pairs(f).distance, bound) << x0 << " + " << h << " at " << k;
+                    }
+                }
+                // As far apart as a sample inside it, or farther: never proved.
+                for (const double above : {0.0, 1e-3}) {
+                    const contact::StepProof p = contact::prove_step(sim.path(), sc.bench, a, b, ws, least + above);
+                    EXPECT_NE(p.verdict, contact::StepVerdict::proved) << x0 << " + " << h;
+                    ++refused;
+                }
+            }
+        }
+        EXPECT_GE(proved, 20) << static_cast<int>(kind);
+        EXPECT_EQ(refused, 2 * 4 * 17);  // every step, both bounds
+    }
+}
+
 // The contest's Q2: every step proved, the contact enclosed by what was proved and where the
 // benches touch, the enclosure within the printed resolution of the time.
 TEST(Q2Proof, TheContestsContactIsProvedFirst) {

@@ -21,6 +21,13 @@ using namespace dragon;
 
 namespace {
 
+// The search's options with a 1 cm pitch grid (the cut is then narrowed as always).
+MinPitchOptions coarse_grid() {
+    MinPitchOptions o;
+    o.grid = 0.01;
+    return o;
+}
+
 // Every handle's angle, and the whole chain, on r = b theta with the head at radius r0.
 std::vector<double> angles_at(const BenchSpec& spec, double r0, double b) {
     const Spiral spiral(kTwoPi * b);
@@ -80,7 +87,7 @@ TEST(PitchProof, ACellsCornersBoundEveryChainInsideIt) {
 // a cell holding a pitch that touches there is not proved.
 TEST(PitchProof, AProvedCellHoldsNoContactAndATouchingOneIsNotProved) {
     const BenchSpec spec;
-    const MinPitch m = min_pitch(Scenario{}, 0.44, 0.46, {.grid = 0.01});
+    const MinPitch m = min_pitch(Scenario{}, 0.44, 0.46, coarse_grid());
     const double cut = m.pitch;  // the least feasible pitch, to 1e-9 m
     ASSERT_TRUE(std::isfinite(cut));
     // The pair's closest approach at pitches just above the cut: the radius where the clearance
@@ -173,7 +180,7 @@ TEST(PitchProof, ProvesTheContestsFeasibleIntervalUpToTheCut) {
 // A range claimed colliding that holds feasible pitches (the contest's cut inside it): no pitch
 // at or above the cut is proved colliding, and the pitches well below it are.
 TEST(PitchProof, NeverProvesFeasiblePitchesColliding) {
-    const MinPitch m = min_pitch(Scenario{}, 0.44, 0.46, {.grid = 0.01});
+    const MinPitch m = min_pitch(Scenario{}, 0.44, 0.46, coarse_grid());
     const double cut = m.pitch;
     ASSERT_TRUE(std::isfinite(cut));
     ASSERT_FALSE(collides(cut + 1e-6));
@@ -191,7 +198,7 @@ TEST(PitchProof, NeverProvesFeasiblePitchesColliding) {
 // just below the contest's cut, 3 micrometres of them, at its start): the proof leaves the
 // window unproved and proves no pitch that collides.
 TEST(PitchProof, NeverProvesAWindowOfCollisionInsideARangeClaimedFeasible) {
-    const MinPitch m = min_pitch(Scenario{}, 0.44, 0.46, {.grid = 0.01});
+    const MinPitch m = min_pitch(Scenario{}, 0.44, 0.46, coarse_grid());
     const double cut = m.pitch;
     ASSERT_TRUE(std::isfinite(cut));
     const double window_lo = cut - 3e-6;

@@ -130,6 +130,10 @@ def test_turnaround_proof_is_the_tools(dragon_json):
     assert mine["proof"] == tool["proof"] and mine["enclosure"] == tool["enclosure"]
     assert mine["proof"]["method"] == "enclosure"
     assert mine["proof"]["covered_travel"] == [mine["clearance"]["from_travel"], mine["clearance"]["to_travel"]]
+    # The smallest clearance enclosed: proved at least `at_least`, found at `distance`, 1e-6 m apart.
+    least = mine["proof"]["clearance"]
+    assert least["proved"] and 0 < mine["clearance"]["distance"] - least["at_least"] <= 1.0001e-6
+    assert bd.turnaround(progress=False).to_dict()["proof"]["clearance"] is None
     with pytest.raises(bd.InputError) as e:
         bd.turnaround(prove=True, clearance=False, progress=False)
     assert e.value.field == "prove"
