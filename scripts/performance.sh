@@ -79,6 +79,7 @@ answers without it are the same searches, whose steps rest on their rates checke
 | \`dragon turnaround\` | $(wall $dragon turnaround -q) s | $(wall $dragon turnaround -q --prove) s | \`time $dragon turnaround [--prove]\` |
 | \`dragon min-pitch\` | $(wall $dragon min-pitch) s | $(wall $dragon min-pitch --prove) s | \`time $dragon min-pitch [--prove]\` |
 | \`dragon max-speed\` | $(wall $dragon max-speed) s | $(wall $dragon max-speed --prove) s | \`time $dragon max-speed [--prove]\` |
+| \`dragon solve\` (all five, on two cores) | $(wall $dragon solve -q -o "$tmp/proofs") s | $(wall $dragon solve -q -o "$tmp/proofs" --prove) s | \`time $dragon solve -q -o out [--prove]\` |
 
 ## Encoding that suits line art
 

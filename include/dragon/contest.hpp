@@ -45,6 +45,10 @@ struct ContestOptions {
     // The same for Q4's table.
     std::function<void(const std::vector<Frame>&)> on_q4_table;
     Executor* executor = nullptr;  // null: the calling thread alone
+    // Every search proves its answer (dragon solve --prove): Q2's first contact and Q4's check
+    // step by step (ContactSearchOptions::prove_steps), Q3's every pitch (MinPitchOptions::prove),
+    // Q5's largest speed (MaxSpeedOptions::prove). Opt-in: it costs many times the searches.
+    bool prove = false;
 
     bool asks(Question q) const;  // whether `questions` holds q
 };
@@ -87,6 +91,7 @@ struct ContestAnswers {
     std::optional<SCurve> q4_design;         // the turnaround's S-curve
     std::optional<ContestTable> q4;          // the turnaround table
     std::optional<Jam> q4_jam;        // turnaround_jam: whether this dragon can follow the S-curve
+    std::optional<ContactProof> q4_proof;  // with `prove`: what Q4's check for a contact in its window proved
     std::optional<MaxSpeed> q5;              // the largest head speed
 };
 

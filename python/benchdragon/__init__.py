@@ -604,18 +604,19 @@ def max_speed(scenario: Optional[Scenario] = None, *, limit: float = 2.0, from_:
 def solve(scenario: Optional[Scenario] = None, out: Union[None, str, os.PathLike] = None, *,
           only: Optional[Sequence[Union[int, str]]] = None, lo: Optional[float] = None, hi: Optional[float] = None,
           grid: float = 0.0025, limit: float = 2.0, from_: Moment = None, to: Moment = None,
-          workers: int = 0) -> SolveResult:
+          workers: int = 0, prove: bool = False) -> SolveResult:
     """The contest's five questions (``dragon solve``): the result is summary.json's content. With
     `out`, result1/2/4.xlsx and summary.json are written there too, all new or all as they were.
     `only` picks questions (``[1, 4]`` or ``["q1", "q4"]``); `lo`, `hi`, `grid` are Q3's range
     and scan, `limit` Q5's, `from_`/`to` the window of Q4's table and Q5's search; `workers` the
-    threads it runs on (0: one per core)."""
+    threads it runs on (0: one per core). `prove` proves every answer as ``dragon solve --prove``
+    does (each question's ``proof``, and Q4's check for a contact in ``q4["proof"]``)."""
     workers = _workers(workers)
     questions = []
     for q in only or []:
         questions.append(int(q[1:]) if isinstance(q, str) and q[:1] in "qQ" else int(q))
     text = _core._solve(_values(scenario), None if out is None else os.fspath(out), questions, lo, hi, float(grid),
-                        float(limit), from_, to, workers)
+                        float(limit), from_, to, workers, prove)
     return SolveResult(json.loads(text))
 
 

@@ -108,9 +108,10 @@ void bind_answers(py::module_& m) {
     m.def("_solve",
           [](const py::dict& scenario, const py::object& out, const std::vector<int>& only, const py::object& lo,
              const py::object& hi, double grid, double limit, const py::object& from, const py::object& to,
-             int workers) {
+             int workers, const py::object& prove) {
               const Scenario s = scenario_from(scenario);
               ContestOptions o;
+              o.prove = switch_from(prove, Key::prove);
               if (!only.empty()) {
                   o.questions.clear();
                   for (int q : only) {
@@ -139,7 +140,7 @@ void bind_answers(py::module_& m) {
               }, workers_from(workers));
           },
           py::arg("scenario"), py::arg("out"), py::arg("only"), py::arg("lo"), py::arg("hi"), py::arg("grid"),
-          py::arg("limit"), py::arg("from_"), py::arg("to"), py::arg("workers"));
+          py::arg("limit"), py::arg("from_"), py::arg("to"), py::arg("workers"), py::arg("prove") = false);
 }
 
 }  // namespace dragon::python

@@ -288,6 +288,7 @@ Json contest_summary(const ContestAnswers& a, const ContestOptions& options) {
         q4["length"] = a.q4_design->length;
         q4["followable"] = !a.q4_jam;
         q4["design_jam"] = jam_json(a.q4_jam);
+        if (a.q4_proof) q4["proof"] = proof_json(*a.q4_proof);  // with `prove` only: the table's own keys otherwise
     }
     if (a.q5) summary["q5"] = max_speed_answer(*a.q5, options.speed_limit);
     return summary;

@@ -20,25 +20,6 @@ namespace dragon::cli {
 
 namespace {
 
-// What the search proved, in words: one line.
-std::string proof_line(const MaxSpeed& m) {
-    if (!m.proof) return "not proved: the maximum is the coarse scan's and its refinement's (--prove bounds every "
-                         "handle's speed over every stretch of the window)\n";
-    const MaxSpeedProof& p = *m.proof;
-    if (!p.proved)
-        return fmt::format("not proved: {} of the window's stretches ({} m of head travel) could not be bounded; "
-                           "the largest speed is at most {} m/s\n", count_of(p.unproved, "stretch", "stretches"),
-                           format_amount(p.unproved_travel), format_amount(p.max_head_speed_hi));
-    const std::string motion =
-        p.motion.unproved_steps == 0
-            ? std::string("; the valid motion proved over the window")
-            : fmt::format("; the valid motion proved over the window but for {} ({} m of head travel) on their rates",
-                          count_of(p.motion.unproved_steps, "step", "steps"), format_amount(p.motion.unproved_travel));
-    return fmt::format("proved: the largest head speed lies in {} m/s (every handle's speed bounded "
-                       "over {}, {} split){}\n", proved_interval(p.max_head_speed_lo, p.max_head_speed_hi, 12),
-                       count_of(p.stretches, "stretch", "stretches"), p.subdivisions, motion);
-}
-
 struct MaxSpeedFlags {
     ScenarioFlags scenario;
     double limit = 2.0;
@@ -102,7 +83,7 @@ void register_max_speed(CLI::App& app, Registry& reg) {
                    s.head_speed, m.scan_travel, count_of(m.candidates, "local maximum", "local maxima"),
                    count_of(m.evaluations, "chain"));
         fmt::print("{}", window_cuts(m.window, "the search"));
-        fmt::print("{}", proof_line(m));
+        fmt::print("{}", speed_proof_words(m));
         return 0;
     };
 }

@@ -37,41 +37,6 @@ struct MinPitchOptions {
     bool quiet = false;
 };
 
-// "[lo, hi], [lo, hi] and [lo, hi]", m to ten decimals, rounded as `r` says (proved_interval).
-std::string range_list(const std::vector<PitchInterval>& v, Rounding r) {
-    std::string out;
-    for (size_t k = 0; k < v.size(); ++k)
-        out += (k == 0 ? "" : k + 1 == v.size() ? " and " : ", ") + proved_interval(v[k].lo, v[k].hi, 10, r);
-    return out;
-}
-
-// What the search proved, in words.
-std::string proof_line(const MinPitch& m) {
-    if (!m.proof) return "not proved between the pitches run (--prove proves every pitch of the range)\n";
-    const PitchProof& p = *m.proof;
-    std::vector<std::string> parts;
-    if (!p.proved.empty()) {
-        std::string feasible = "every pitch in " + range_list(p.proved, Rounding::inward) +
-                               fmt::format(" m reaches the boundary with no contact ({} cells of head radius and pitch "
-                                           "enclosed", p.cells);
-        if (std::isfinite(p.least_gap)) feasible += fmt::format(", least separation proved {:.3g} m", p.least_gap);
-        parts.push_back(feasible + ")");
-    }
-    if (!p.proved_colliding.empty())
-        parts.push_back("every pitch in " + range_list(p.proved_colliding, Rounding::inward) + " m meets a contact before it");
-    std::string out = "proved: ";
-    for (size_t k = 0; k < parts.size(); ++k) out += (k == 0 ? "" : "; ") + parts[k];
-    if (parts.empty()) out += "nothing";
-    std::vector<PitchInterval> unproved = p.unproved;
-    unproved.insert(unproved.end(), p.unproved_colliding.begin(), p.unproved_colliding.end());
-    std::sort(unproved.begin(), unproved.end(), [](const PitchInterval& a, const PitchInterval& b) { return a.lo < b.lo; });
-    if (!unproved.empty()) out += "; not proved: " + range_list(unproved, Rounding::outward) + " m (rests on the runs at the pitches probed)";
-    if (!std::isnan(p.least_lo))
-        out += fmt::format("\nproved: the least feasible pitch of the range lies in {} m",
-                           proved_interval(p.least_lo, p.least_hi, 10));
-    return out + "\n";
-}
-
 }  // namespace
 
 void register_min_pitch(CLI::App& app, Registry& reg) {
@@ -131,7 +96,7 @@ void register_min_pitch(CLI::App& app, Registry& reg) {
             fmt::print("at pitch {} m (the largest of the scan where this happens) the dragon cannot follow the spiral "
                        "to radius {} m at all: {}\n", m.jam->pitch, s.path.turn_radius, jam_sentence(m.jam->jam));
         fmt::print("search: {}\n", min_pitch_guarantee(m));
-        fmt::print("{}", proof_line(m));
+        fmt::print("{}", pitch_proof_words(m));
         return 0;
     };
 }

@@ -44,6 +44,7 @@ struct SolveOptions {
     WindowFlags window;
     std::string tables;  // latex, markdown or csv: the paper's tables as files beside the workbooks
     std::string lang = "en";
+    bool prove = false;
     bool quiet = false;
 };
 
@@ -81,6 +82,18 @@ std::string table_notes(const ContestTable& t) {
     return out;
 }
 
+// Lines printed each indented by two spaces, under their answer.
+void print_indented(const std::string& lines) {
+    std::string out;
+    for (size_t at = 0; at < lines.size();) {
+        const size_t end = lines.find('\n', at);
+        const size_t stop = end == std::string::npos ? lines.size() : end + 1;
+        out += "  " + lines.substr(at, stop - at);
+        at = stop;
+    }
+    fmt::print("{}", out);
+}
+
 }  // namespace
 
 void register_solve(CLI::App& app, Registry& reg) {
@@ -105,6 +118,9 @@ void register_solve(CLI::App& app, Registry& reg) {
                     "(.tex: booktabs, siunitx), markdown (.md, for pandoc) or csv");
     sub->add_option("--lang", opt->lang, "Language of the tables' headers and captions: en (default) or zh (the "
                                          "workbooks' words: 龙头x (m), 第1节龙身 (m/s))");
+    sub->add_flag("--prove", opt->prove,
+                  "Prove every answer as the single commands' --prove do: Q2's first contact and Q4's check step by "
+                  "step, every pitch of Q3's range, Q5's largest speed bounded over the window (slower)");
     add_quiet_flag(sub, opt->quiet);
     reg.runners["solve"] = [opt](ToolRun& run) {
         Executor& ex = run.executor;
@@ -136,6 +152,8 @@ void register_solve(CLI::App& app, Registry& reg) {
         refuse_unless(opt->grid != kDefaultPitchGrid, Question::q3, "--grid");
         refuse_unless(opt->limit != 2.0, Question::q5, "--limit");
         refuse_unless(opt->window.given() && !contest.asks(Question::q4), Question::q5, "--from/--to");
+        if (opt->prove && contest.questions == std::vector<Question>{Question::q1})
+            throw InputError("--prove is not used: no question of --only q1 searches for anything to prove (Q2-Q5 do)");
         Scenario s = opt->scenario.resolve(values_read_by(contest),
                                            fmt::format("no question of --only {} reads it", fmt::join(opt->only, ",")),
                                            &outputs);
@@ -144,6 +162,7 @@ void register_solve(CLI::App& app, Registry& reg) {
         contest.pitch_grid = opt->grid;
         contest.speed_limit = opt->limit;
         contest.turn_window = opt->window.resolve(kTurnaroundWindow);
+        contest.prove = opt->prove;
 
         // Every target checked, and its temporary file made, before any work; the workbooks of
         // Q1 and Q4 written while the other questions are answered; the set put in place together.
@@ -171,10 +190,12 @@ void register_solve(CLI::App& app, Registry& reg) {
             } else if (const std::optional<Contact>& c = q2->contact) {
                 fmt::print("\nQ2: benches {} and {} touch at t = {} s (head radius {:.6f} m)\n", c->bench_a,
                            c->bench_b, format_resolved(c->time, c->tolerance), c->head_radius);
+                if (opt->prove) fmt::print("  {}", proof_words(c->proof, &*c));
                 print_single_frame("", c->frame);
             } else {
                 fmt::print("\nQ2: no collision as far as the dragon can follow the spiral (t = {} s){}\n",
                            format_time(q2->window.to), q2->jam ? ": " + jam_sentence(*q2->jam) : "");
+                if (opt->prove) fmt::print("  {}", proof_words(q2->proof, nullptr));
             }
         }
 
@@ -198,6 +219,7 @@ void register_solve(CLI::App& app, Registry& reg) {
                 fmt::print("  at pitch {} m (the largest of the scan where this happens) the dragon cannot follow the "
                            "spiral to radius {} m at all: {}\n", m.jam->pitch, s.path.turn_radius,
                            jam_sentence(m.jam->jam));
+            if (opt->prove) print_indented(pitch_proof_words(m));
         }
 
         // Q4: the S-curve and the table around the turn.
@@ -211,6 +233,9 @@ void register_solve(CLI::App& app, Registry& reg) {
                                           table_notes(*q4)),
                               pick(q4->frames, 50.0 / s.head_speed == std::round(50.0 / s.head_speed)
                                                    ? 50.0 / s.head_speed : 50.0));
+            if (a.q4_proof)
+                fmt::print("  the window checked for a contact: {}",
+                           proof_words(*a.q4_proof, q4->past_contact ? &*q4->past_contact : nullptr));
         }
 
         // Q5: the speed limit.
@@ -225,6 +250,7 @@ void register_solve(CLI::App& app, Registry& reg) {
             else
                 fmt::print("\nQ5: largest head speed {:.6f} m/s (speed ratio {:.6f} at handle {}, t = {:.6f} s)\n",
                            v.max_head_speed, v.ratio, v.handle, v.time);
+            if (opt->prove && !v.unbounded && !v.jam) fmt::print("  {}", speed_proof_words(v));
         }
         require_stdout_written();  // the tables all printed, or no file changes
         files.finish(a, json_text(contest_summary(a, contest), 2) + "\n");

@@ -1,9 +1,12 @@
 #include "wording.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include <fmt/format.h>
+
+#include "report.hpp"
 
 namespace dragon::cli {
 
@@ -58,5 +61,60 @@ std::string proof_words(const ContactProof& p, const Contact* c) {
     return out + "\n";
 }
 
+namespace {
+
+// "[lo, hi], [lo, hi] and [lo, hi]", m to ten decimals, rounded as `r` says (proved_interval).
+std::string range_list(const std::vector<PitchInterval>& v, Rounding r) {
+    std::string out;
+    for (size_t k = 0; k < v.size(); ++k)
+        out += (k == 0 ? "" : k + 1 == v.size() ? " and " : ", ") + proved_interval(v[k].lo, v[k].hi, 10, r);
+    return out;
+}
+
+}  // namespace
+
+std::string pitch_proof_words(const MinPitch& m) {
+    if (!m.proof) return "not proved between the pitches run (--prove proves every pitch of the range)\n";
+    const PitchProof& p = *m.proof;
+    std::vector<std::string> parts;
+    if (!p.proved.empty()) {
+        std::string feasible = "every pitch in " + range_list(p.proved, Rounding::inward) +
+                               fmt::format(" m reaches the boundary with no contact ({} cells of head radius and pitch "
+                                           "enclosed", p.cells);
+        if (std::isfinite(p.least_gap)) feasible += fmt::format(", least separation proved {:.3g} m", p.least_gap);
+        parts.push_back(feasible + ")");
+    }
+    if (!p.proved_colliding.empty())
+        parts.push_back("every pitch in " + range_list(p.proved_colliding, Rounding::inward) + " m meets a contact before it");
+    std::string out = "proved: ";
+    for (size_t k = 0; k < parts.size(); ++k) out += (k == 0 ? "" : "; ") + parts[k];
+    if (parts.empty()) out += "nothing";
+    std::vector<PitchInterval> unproved = p.unproved;
+    unproved.insert(unproved.end(), p.unproved_colliding.begin(), p.unproved_colliding.end());
+    std::sort(unproved.begin(), unproved.end(), [](const PitchInterval& a, const PitchInterval& b) { return a.lo < b.lo; });
+    if (!unproved.empty()) out += "; not proved: " + range_list(unproved, Rounding::outward) + " m (rests on the runs at the pitches probed)";
+    if (!std::isnan(p.least_lo))
+        out += fmt::format("\nproved: the least feasible pitch of the range lies in {} m",
+                           proved_interval(p.least_lo, p.least_hi, 10));
+    return out + "\n";
+}
+
+std::string speed_proof_words(const MaxSpeed& m) {
+    if (!m.proof) return "not proved: the maximum is the coarse scan's and its refinement's (--prove bounds every "
+                         "handle's speed over every stretch of the window)\n";
+    const MaxSpeedProof& p = *m.proof;
+    if (!p.proved)
+        return fmt::format("not proved: {} of the window's stretches ({} m of head travel) could not be bounded; "
+                           "the largest speed is at most {} m/s\n", count_of(p.unproved, "stretch", "stretches"),
+                           format_amount(p.unproved_travel), format_amount(p.max_head_speed_hi));
+    const std::string motion =
+        p.motion.unproved_steps == 0
+            ? std::string("; the valid motion proved over the window")
+            : fmt::format("; the valid motion proved over the window but for {} ({} m of head travel) on their rates",
+                          count_of(p.motion.unproved_steps, "step", "steps"), format_amount(p.motion.unproved_travel));
+    return fmt::format("proved: the largest head speed lies in {} m/s (every handle's speed bounded "
+                       "over {}, {} split){}\n", proved_interval(p.max_head_speed_lo, p.max_head_speed_hi, 12),
+                       count_of(p.stretches, "stretch", "stretches"), p.subdivisions, motion);
+}
 
 }  // namespace dragon::cli

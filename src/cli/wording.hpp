@@ -5,6 +5,7 @@
 
 #include "dragon/analyses.hpp"
 #include "dragon/answers.hpp"
+#include "dragon/turnaround.hpp"
 
 namespace dragon::cli {
 
@@ -21,5 +22,11 @@ std::string proved_interval(double lo, double hi, int decimals, Rounding r = Rou
 
 // What a first-contact search proved, in words: one line (`c`: its contact, or null).
 std::string proof_words(const ContactProof& p, const Contact* c);
+
+// What the minimum-pitch search proved, in words: a line, two with the least feasible pitch enclosed.
+std::string pitch_proof_words(const MinPitch& m);
+
+// What the largest-head-speed search proved, in words: one line.
+std::string speed_proof_words(const MaxSpeed& m);
 
 }  // namespace dragon::cli

@@ -108,12 +108,17 @@ ContestAnswers solve_contest(const Scenario& scenario, const ContestOptions& opt
                         MinPitchOptions o;
                         o.grid = options.pitch_grid;
                         o.executor = inside;
+                        o.prove = options.prove;
                         out.q3 = min_pitch(coil, out.q3_range->lo, out.q3_range->hi, o);
                     }
                     break;
                 case q1_q2:
-                    if (options.asks(Question::q1) || options.asks(Question::q2))
-                        out.q2 = first_contact_of_motion(*coil_sim, inside);
+                    if (options.asks(Question::q1) || options.asks(Question::q2)) {
+                        ContactSearchOptions o;
+                        o.executor = inside;
+                        o.prove_steps = options.prove;
+                        out.q2 = collide(*coil_sim, default_window(PathKind::spiral), o);  // first_contact_of_motion's
+                    }
                     if (options.asks(Question::q1)) {
                         out.q1 = table_over(*coil_sim, options.q1_window, inside);
                         mark_past_contact(*out.q1, out.q2->contact);
@@ -128,14 +133,19 @@ ContestAnswers solve_contest(const Scenario& scenario, const ContestOptions& opt
                         out.q4 = table_over(*turn_sim, options.turn_window, inside);
                         ContactSearchOptions o;
                         o.executor = inside;
+                        o.prove_steps = options.prove;
+                        if (options.prove) o.proof = &out.q4_proof.emplace();
                         mark_past_contact(*out.q4, first_contact_travel(*turn_sim, out.q4->window.from_travel,
                                                                         out.q4->window.to_travel, o));
                         if (options.on_q4_table) options.on_q4_table(out.q4->frames);
                     }
                     break;
                 case q5:
-                    if (options.asks(Question::q5))
-                        out.q5 = max_head_speed(turn, options.speed_limit, options.turn_window, inside);
+                    if (options.asks(Question::q5)) {
+                        MaxSpeedOptions o;
+                        o.prove = options.prove;
+                        out.q5 = max_head_speed(turn, options.speed_limit, options.turn_window, inside, o);
+                    }
                     break;
                 case count: break;
             }

@@ -90,7 +90,7 @@ constexpr std::array kKeys = {
     KeyInfo{Key::compression_level, "compression_level", "compression level", "", "a workbook's zlib level, 0 to 9"},
     KeyInfo{Key::scenario, "scenario", "scenario file", "", "a scenario .toml file (values given beside it win)"},
     KeyInfo{Key::workers, "workers", "workers", "", "how many computations run at once (default: one per core)"},
-    KeyInfo{Key::prove, "prove", "prove", "", "the answer proved, not only searched: the first contact's steps and the valid motion (collide, turnaround), the smallest clearance (turnaround), every feasible pitch (min-pitch), the largest head speed (max-speed)"},
+    KeyInfo{Key::prove, "prove", "prove", "", "the answer proved, not only searched: the first contact's steps and the valid motion (collide, turnaround), the smallest clearance (turnaround), every feasible pitch (min-pitch), the largest head speed (max-speed), each of these (solve)"},
     KeyInfo{Key::clearance, "clearance", "clearance", "", "the turnaround check's first contact and clearance (on unless switched off)"},
 };
 

@@ -1,6 +1,7 @@
 // One dragon, one answer, end to end: the commands' geometric answers do not depend on the head's
 // speed, two commands asked the same question agree, and solve answers every scenario the
 // single commands accept, saying where the valid motion cut a question short.
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -161,4 +162,45 @@ TEST(CliOneAnswer, TheProvedLargestSpeedEnclosesTheSampledOne) {
     const auto text = run_dragon("max-speed --prove");
     EXPECT_TRUE(contains(text.out, "proved: the largest head speed lies in [")) << text.out;
     EXPECT_TRUE(contains(run_dragon("max-speed").out, "not proved: the maximum is the coarse scan's")) << text.out;
+}
+
+// solve --prove proves each answer it prints as the single command's --prove does, in the same
+// words under each question; without it solve prints no proof; with only Q1 (a table, no
+// search) --prove is refused before anything is written.
+TEST(CliOneAnswer, SolveProvesEachAnswerAsItsOwnCommandDoes) {
+    const fs::path dir = dragon_test::scratch_dir();
+    const auto line_of = [](const std::string& text, const std::string& start) {
+        const size_t at = text.find(start);
+        return at == std::string::npos ? std::string() : text.substr(at, text.find('\n', at) - at);
+    };
+    const auto proved = run_dragon("solve --prove --only q2,q4,q5 -q -o " + (dir / "a").string());
+    ASSERT_EQ(proved.code, 0) << proved.err;
+    const std::string q2 = line_of(run_dragon("collide --prove").out, "proved: the first contact lies in");
+    ASSERT_FALSE(q2.empty());
+    EXPECT_TRUE(contains(proved.out, "\n  " + q2 + "\n")) << proved.out;
+    const std::string q5 = line_of(run_dragon("max-speed --prove").out, "proved: the largest head speed lies in");
+    ASSERT_FALSE(q5.empty());
+    EXPECT_TRUE(contains(proved.out, "\n  " + q5 + "\n")) << proved.out;
+    EXPECT_TRUE(contains(proved.out, "\n  the window checked for a contact: proved: no contact over head travel [-100, 100] m"))
+        << proved.out;
+
+    const std::string range = "--lo 0.44 --hi 0.46 --grid 0.01";
+    const auto q3 = run_dragon("solve --prove --only q3 " + range + " -q -o " + (dir / "b").string());
+    ASSERT_EQ(q3.code, 0) << q3.err;
+    const std::string own = run_dragon("min-pitch --prove " + range).out;
+    for (const char* start : {"proved: every pitch in", "proved: the least feasible pitch of the range lies in"}) {
+        const std::string line = line_of(own, start);
+        ASSERT_FALSE(line.empty()) << own;
+        EXPECT_TRUE(contains(q3.out, "\n  " + line + "\n")) << q3.out;
+    }
+
+    const auto plain = run_dragon("solve --only q2,q3,q5 -q -o " + (dir / "c").string());
+    ASSERT_EQ(plain.code, 0) << plain.err;
+    EXPECT_FALSE(contains(plain.out, "proved")) << plain.out;
+
+    const auto refused = run_dragon("solve --prove --only q1 -o " + (dir / "d").string());
+    EXPECT_EQ(refused.code, 2);
+    EXPECT_TRUE(contains(refused.err, "--prove is not used")) << refused.err;
+    EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+    EXPECT_FALSE(fs::exists(dir / "d"));
 }

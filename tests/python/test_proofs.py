@@ -137,3 +137,21 @@ def test_turnaround_proof_is_the_tools(dragon_json):
     with pytest.raises(bd.InputError) as e:
         bd.turnaround(prove=True, clearance=False, progress=False)
     assert e.value.field == "prove"
+
+
+def test_solve_proves_what_the_single_commands_prove(dragon, dragon_json, tmp_path):
+    # dragon solve --prove writes the same summary as solve(prove=True), and each proof is the one
+    # its own command proves (Q4's check is turnaround's first-contact proof over the same window).
+    import json
+
+    dragon("solve", "--prove", "--only", "q2,q4,q5", "--out", str(tmp_path), "--quiet")
+    written = json.loads((tmp_path / "summary.json").read_text())
+    mine = bd.solve(only=[2, 4, 5], prove=True).to_dict()
+    assert mine == written
+    collide = dragon_json("collide", "--prove")
+    assert mine["q2"]["proof"] == collide["proof"] and mine["q2"]["enclosure"] == collide["enclosure"]
+    assert mine["q5"]["proof"] == dragon_json("max-speed", "--prove")["proof"]
+    turn = dragon_json("turnaround", "--prove")["proof"]
+    turn.pop("clearance")  # the turnaround's own: its least clearance, which solve does not look for
+    assert mine["q4"]["proof"] == turn
+    assert "proof" not in bd.solve(only=[4]).to_dict()["q4"]
