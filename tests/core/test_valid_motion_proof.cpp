@@ -253,3 +253,33 @@ TEST(ValidMotionProof, ProvedStepsAreJamFreeInside) {
     }
     EXPECT_GT(checked, 20);
 }
+
+// A link whose calm certificate outlasts its turning's was checked with the turning's margin
+// over the calm certificate's step: the turning outgrew that margin at every step length, and
+// the walk crept on by the checks' rounding allowance until it ran out of evaluations (found by
+// tests/fuzz/fuzz_contact on this dragon, starting 4.55 m into the turn). With or without the
+// proof, the walk now takes the calm certificate's steps and checks them as calm ones.
+TEST(ValidMotionProof, ALinkLeavingCalmPathDoesNotStallTheWalk) {
+    Scenario s;
+    s.path.kind = PathKind::turnaround;
+    s.bench.bench_count = 17;
+    s.bench.head_length = 3.096199355321398;
+    s.bench.body_length = 2.4890524508262222;
+    s.bench.width = 0.26554956211271774;
+    s.bench.hole_offset = 0.21086981793608681;
+    s.path.turn_radius = 2.8472625817459578;
+    s.path.turn_pitch = 1.7170286151561698;
+    s.path.arc_ratio = 1.3754580207288734;
+    const PathBuild b = make_path(s);
+    const double from = b.start_arc + 4.5531204147191175, to = b.start_arc + 9.5531204147191175;
+    for (const bool prove : {false, true}) {
+        const Walked w = walk(*b.path, s.bench, from, 1.0, to, prove ? proving() : jam::WalkOptions{});
+        EXPECT_LT(w.stats.evaluations, 2000) << prove;
+        EXPECT_LT(w.stats.retreats, 100) << prove;
+        ASSERT_FALSE(w.steps.empty());
+        EXPECT_EQ(w.steps.back().to, to) << prove;
+        // Every step the walk took, the chain moves continuously: no handle moves farther than
+        // twice the head's travel between its ends (a handle that jumped to another root would).
+        for (const auto& st : w.steps) EXPECT_LE(largest_move(*b.path, s.bench, st.from, st.to), 2.0 * (st.to - st.from) + 1e-9);
+    }
+}
