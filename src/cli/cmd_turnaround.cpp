@@ -87,14 +87,22 @@ void print_text(const TurnaroundStudy& st, const std::optional<RunClearance>& cl
     fmt::print("{}", window_cuts(w, "the check"));
     fmt::print("{}", proof_words(clear->proof, clear->first_contact ? &*clear->first_contact : nullptr));
     if (const std::optional<ClearanceProof>& p = clear->clearance_proof) {
+        // The steps' enclosures assume the valid motion: where its own proof left steps to their
+        // rates (near the end of the valid motion), the bound rests on those too.
+        const JamSearchStats& m = clear->proof.motion;
+        const std::string given =
+            clear->proof.motion_checked && m.unproved_steps > 0
+                ? fmt::format("; over the valid motion's {} m of head travel left to the rate check, given that motion",
+                              format_amount(m.unproved_travel))
+                : std::string();
         // The clearance found is a moment's own, so the least lies between the bound and it.
         if (p->proved && clear->bench_a == 0)  // no pair within the scan's cutoff: a bound, no moment
             fmt::print("proved: no two benches come closer than {:.9f} m anywhere in the window ({} enclosing every "
-                       "bench)\n", std::floor(p->lower * 1e9) / 1e9, count_of(p->steps, "step", "steps"));
+                       "bench{})\n", std::floor(p->lower * 1e9) / 1e9, count_of(p->steps, "step", "steps"), given);
         else if (p->proved)
             fmt::print("proved: the smallest clearance lies in {} m (no two benches come closer than its lower end "
-                       "anywhere in the window: {} enclosing every bench)\n",
-                       proved_interval(p->lower, clear->distance, 9), count_of(p->steps, "step", "steps"));
+                       "anywhere in the window: {} enclosing every bench{})\n",
+                       proved_interval(p->lower, clear->distance, 9), count_of(p->steps, "step", "steps"), given);
         else
             fmt::print("not proved: that no two benches come closer than {:.9f} m (a step could not be enclosed that "
                        "closely); the smallest clearance rests on the scan and its refinement\n", p->lower);

@@ -57,6 +57,12 @@ constexpr double kStretchTravel = 10.0;  // m
 // this fraction (dimensionless) of the travel left to the contact (or below tol::travel): there
 // the pair's gap is within the proof's slack (contact::kProofSlack) of zero.
 constexpr double kFinalStep = 1e-3;
+// m of head travel: a step neither the handles' motion nor their speed bounds can enclose
+// (not_monotone) is taken again shorter down to this, then accepted on its rate bound: the
+// speed bounds tighten as the step shrinks (on the turnaround's tight arcs, at 3:1, steps of a
+// few centimetres are enclosed where the search's were not), but a link that turns by more
+// than the bounds allow at any length would halve for ever.
+constexpr double kLeastEnclosedStep = 1e-4;
 
 double head_radius(const Frame& f) { return norm(f.handles.front().pos); }
 
@@ -173,7 +179,10 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
             ++steps;
             // The proof first (a step it fails is taken again shorter, its bounds not needed).
             const contact::StepProof p = prove(f);
-            if (p.verdict == contact::StepVerdict::too_close && next - x > travel_tol && overlap_of(f, ws) == Overlap::no) {
+            const bool shorter_may = p.verdict == contact::StepVerdict::too_close ||
+                                     (rules.prove && p.verdict == contact::StepVerdict::not_monotone &&
+                                      next - x > kLeastEnclosedStep);
+            if (shorter_may && next - x > travel_tol && overlap_of(f, ws) == Overlap::no) {
                 // Not proved, and no contact at its end: the same start, half the step.
                 ++proof.subdivisions;
                 proof_cap = 0.5 * (next - x);
@@ -197,6 +206,9 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
                 count_step(proof, p, x, next);
                 // A step as long as the last one the enclosures proved: try a little longer next.
                 if (p.verdict == contact::StepVerdict::proved && next - x >= proof_cap) proof_cap *= 1.5;
+                // One no length down to kLeastEnclosedStep could enclose rests on its rate bound:
+                // the next is as long as the rates allow, not crept along at that length.
+                if (p.verdict == contact::StepVerdict::not_monotone) proof_cap = INFINITY;
                 memory.swap(seen);
                 if (on_step) on_step(sim.time_of(x), sim.time_of(next));
                 x = next;

@@ -306,3 +306,36 @@ TEST(Q2Proof, TheValidMotionTheStepsAssumeIsProvedToo) {
     first_contact_travel(sim, -100.0, 100.0, o);
     EXPECT_FALSE(unproved.motion_checked);
 }
+
+// At the ratio 3:1 the turnaround's tight arc leaves steps that neither the handles' motion nor
+// their speed bounds enclose at the length the rates choose; shorter ones they do (the bounds
+// tighten), so the search takes them shorter, and every step up to the end of the valid motion
+// is proved (StepProof's tests check what such steps claim against samples inside them).
+TEST(Q2Proof, StepsTheSpeedBoundsEncloseOnlyWhenShortAreTakenShorter) {
+    Scenario sc;
+    sc.path.kind = PathKind::turnaround;
+    sc.path.arc_ratio = 3.0;
+    const Simulation sim(sc);
+    const CollideAnswer motion = first_contact_of_motion(sim);  // the window cut to the valid motion
+    ASSERT_TRUE(motion.jam.has_value());
+    ContactProof proof;
+    ContactSearchOptions o;
+    o.prove_steps = true;
+    o.proof = &proof;
+    const double from = 5.0, to = motion.window.to_travel;  // the S-curve's arcs, up to the jam
+    EXPECT_FALSE(first_contact_travel(sim, from, to, o).has_value());
+    EXPECT_EQ(proof.unproved_steps, 0);
+    EXPECT_GT(proof.proved_steps, 0);
+    EXPECT_EQ(proof.proved_to, to);
+    EXPECT_GT(proof.subdivisions, 0);
+    // The same range at the length the rates choose, with no step taken shorter for its enclosure,
+    // is what the search met before (the proofs asked of each step as it comes): some fail.
+    contact::SweptWorkspace ws;
+    const Simulation unit = sim.at_speed(1.0);
+    int not_enclosed = 0;
+    for (double x = from; x + 0.25 < to; x += 0.25)
+        if (contact::prove_step(sim.path(), sc.bench, unit.frame(x), unit.frame(x + 0.25), ws).verdict ==
+            contact::StepVerdict::not_monotone)
+            ++not_enclosed;
+    EXPECT_GT(not_enclosed, 0);
+}
