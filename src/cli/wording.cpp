@@ -63,11 +63,13 @@ std::string proof_words(const ContactProof& p, const Contact* c) {
 
 namespace {
 
-// "[lo, hi], [lo, hi] and [lo, hi]", m to ten decimals, rounded as `r` says (proved_interval).
+// "[lo, hi], [lo, hi] and [lo, hi]", m to ten decimals, rounded as `r` says (proved_interval); a
+// single pitch (the search's answer, proved on its own) as itself, to all 17 digits.
 std::string range_list(const std::vector<PitchInterval>& v, Rounding r) {
     std::string out;
     for (size_t k = 0; k < v.size(); ++k)
-        out += (k == 0 ? "" : k + 1 == v.size() ? " and " : ", ") + proved_interval(v[k].lo, v[k].hi, 10, r);
+        out += (k == 0 ? "" : k + 1 == v.size() ? " and " : ", ") +
+               (v[k].lo == v[k].hi ? fmt::format("{:.17g}", v[k].lo) : proved_interval(v[k].lo, v[k].hi, 10, r));
     return out;
 }
 

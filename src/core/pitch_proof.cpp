@@ -40,6 +40,9 @@ constexpr double kTailSteps = 8.0;
 constexpr int kWitnessSamples = 48;
 // m: the golden section on the deepest overlap stops at this bracket of head radius.
 constexpr double kWitnessRadius = 1e-7;
+// m: a colliding range is halved down to this, the search's own resolution of the cut (a witness
+// costs one run and a few dozen chain solves, so the colliding side reaches the cut cheaply).
+constexpr double kCollidingFinest = tol::pitch;
 // m: a radius step below this is not tried (far below any cell's use; stops a range that
 // cannot be proved from stepping without end).
 constexpr double kFinestRadiusStep = 1e-12;
@@ -250,7 +253,7 @@ void prove_colliding(const Scenario& s, double p_lo, double p_hi, PitchProof& ou
             continue;
         }
         ++out.subdivisions;
-        if (hi - lo <= kPitchProofFinest) {
+        if (hi - lo <= kCollidingFinest) {
             out.unproved_colliding.push_back({lo, hi, false});
             continue;
         }
@@ -278,6 +281,7 @@ PitchProof prove_pitches(const Scenario& s, const std::vector<PitchInterval>& in
     std::vector<std::pair<double, double>> ranges;
     for (const PitchInterval& iv : intervals) {
         if (!iv.feasible) continue;
+        ranges.emplace_back(iv.lo, iv.lo);  // its least pitch alone, the search's answer
         for (int k = 0; k < kFirstRanges; ++k)
             ranges.emplace_back(k == 0 ? iv.lo : iv.lo + (iv.hi - iv.lo) * k / kFirstRanges,
                                 k + 1 == kFirstRanges ? iv.hi : iv.lo + (iv.hi - iv.lo) * (k + 1) / kFirstRanges);

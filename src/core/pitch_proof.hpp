@@ -28,8 +28,10 @@
 
 namespace dragon {
 
-// m: a range of pitches narrower than this that its cells cannot prove is left unproved (the
-// pitches next to a change of feasibility, where a pair's closest approach falls to zero).
+// m: a feasible range of pitches narrower than this that its cells cannot prove is left
+// unproved (the pitches next to a change of feasibility, where a pair's closest approach falls
+// to zero). A colliding range goes on down to tol::pitch, and each feasible interval's least
+// pitch, the search's answer, is marched on its own as well.
 inline constexpr double kPitchProofFinest = 1e-7;
 
 // Proves the intervals of `intervals` (min_pitch's) each as it says, feasible or colliding, each
