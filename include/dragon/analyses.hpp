@@ -175,6 +175,8 @@ CollideAnswer collide(const Simulation& sim, const RunWindow& window, const Cont
 // the one event every command reports as the first contact: collide and turnaround by default,
 // the contest's Q2, a picture of the collision, a film's caption.
 CollideAnswer first_contact_of_motion(const Simulation& sim, Executor* executor = nullptr);
+// The same searched as `options` say (the contest's Q2 with its proof: ContestOptions::prove).
+CollideAnswer first_contact_of_motion(const Simulation& sim, const ContactSearchOptions& options);
 // For what a table, picture or film shows over [t_from, t_to] (s): the first contact over the
 // path's default window widened to take that range in. Inside the default window it is the
 // motion's first contact; a range reaching outside it gets the earliest contact of the two.

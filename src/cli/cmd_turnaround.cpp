@@ -98,7 +98,7 @@ void print_text(const TurnaroundStudy& st, const std::optional<RunClearance>& cl
         // The clearance found is a moment's own, so the least lies between the bound and it.
         if (p->proved && clear->bench_a == 0)  // no pair within the scan's cutoff: a bound, no moment
             fmt::print("proved: no two benches come closer than {:.9f} m anywhere in the window ({} enclosing every "
-                       "bench{})\n", std::floor(p->lower * 1e9) / 1e9, count_of(p->steps, "step", "steps"), given);
+                       "bench{})\n", rounded_to(p->lower, 9, false), count_of(p->steps, "step", "steps"), given);
         else if (p->proved)
             fmt::print("proved: the smallest clearance lies in {} m (no two benches come closer than its lower end "
                        "anywhere in the window: {} enclosing every bench{})\n",

@@ -14,21 +14,19 @@ std::string count_of(long long n, const std::string& one, const std::string& man
     return fmt::format("{} {}", n, n == 1 ? one : many.empty() ? one + "s" : many);
 }
 
-std::string proved_interval(double lo, double hi, int decimals, Rounding r) {
+double rounded_to(double x, int decimals, bool up) {
     // Rounded to the decimals, then stepped by one unit of the last decimal wherever the rounding
     // went the wrong way (judged on the printed value read back as a double: right to within an
     // ulp, far inside the proofs' own slack, contact::kProofSlack = 1e-12 m).
     const double unit = std::pow(10.0, -decimals);
-    double a = std::stod(fmt::format("{:.{}f}", lo, decimals));
-    double b = std::stod(fmt::format("{:.{}f}", hi, decimals));
-    if (r == Rounding::outward) {
-        if (a > lo) a -= unit;
-        if (b < hi) b += unit;
-    } else {
-        if (a < lo) a += unit;
-        if (b > hi) b -= unit;
-        if (a > b) return fmt::format("[{:.17g}, {:.17g}]", lo, hi);
-    }
+    const double r = std::stod(fmt::format("{:.{}f}", x, decimals));
+    return up ? (r < x ? r + unit : r) : (r > x ? r - unit : r);
+}
+
+std::string proved_interval(double lo, double hi, int decimals, Rounding r) {
+    const bool outward = r == Rounding::outward;
+    const double a = rounded_to(lo, decimals, !outward), b = rounded_to(hi, decimals, outward);
+    if (a > b) return fmt::format("[{:.17g}, {:.17g}]", lo, hi);  // inward, narrower than the decimals
     return fmt::format("[{:.{}f}, {:.{}f}]", a, decimals, b, decimals);
 }
 

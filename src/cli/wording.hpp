@@ -13,6 +13,10 @@ namespace dragon::cli {
 // plural that is not the noun plus "s" ("local maxima").
 std::string count_of(long long n, const std::string& one, const std::string& many = "");
 
+// x rounded to `decimals` decimals up (not below x) or down (not above it): a proved bound
+// printed so that it stays proved.
+double rounded_to(double x, int decimals, bool up);
+
 // An interval [lo, hi] as "[lo, hi]" with `decimals` decimals, rounded so that what it says
 // stays proved: outwards (lo down, hi up) for an enclosure of an unknown value, or for what a
 // proof left open; inwards for a range all of whose values a proof established, so that the

@@ -51,6 +51,10 @@ CollideAnswer first_contact_of_motion(const Simulation& sim, Executor* executor)
     return collide(sim, default_window(sim.scenario().path.kind), executor);
 }
 
+CollideAnswer first_contact_of_motion(const Simulation& sim, const ContactSearchOptions& options) {
+    return collide(sim, default_window(sim.scenario().path.kind), options);
+}
+
 CollideAnswer first_contact_covering(const Simulation& sim, double t_from, double t_to, Executor* executor) {
     RunWindow w = default_window(sim.scenario().path.kind);
     const double v = sim.scenario().head_speed;

@@ -117,7 +117,7 @@ ContestAnswers solve_contest(const Scenario& scenario, const ContestOptions& opt
                         ContactSearchOptions o;
                         o.executor = inside;
                         o.prove_steps = options.prove;
-                        out.q2 = collide(*coil_sim, default_window(PathKind::spiral), o);  // first_contact_of_motion's
+                        out.q2 = first_contact_of_motion(*coil_sim, o);
                     }
                     if (options.asks(Question::q1)) {
                         out.q1 = table_over(*coil_sim, options.q1_window, inside);

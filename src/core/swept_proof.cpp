@@ -173,7 +173,8 @@ void enclose_on_spiral(const BenchSpec& spec, const Frame& fa, const Frame& fb, 
 // Whether any two non-adjacent benches' enclosures (ws.benches: `frames` sets of nb, made
 // from the frames fa and fb) may meet, pair by pair: proved apart by chain_gap() with
 // `turning`, or along one of the boards' edge normals in fa and fb (turned by each one's head
-// angle when `turned`), at every frame's enclosures.
+// angle when `turned`), at every frame's enclosures; each farther apart than `apart_by`.
+// (`apart` proves a pair only apart, so it goes with apart_by = 0: kNotSeparately otherwise.)
 template <class Turning, class Apart>
 StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Frame& fb, size_t frames, bool turned,
                               const Turning& turning, const Apart& apart, SweptWorkspace& ws, double apart_by = 0.0) {
