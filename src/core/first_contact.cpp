@@ -174,6 +174,9 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
         }
         if (std::isnan(x_hi)) {
             const double next = std::min({x + a.safe_step, x + retry_cap, x + proof_cap, x_to});
+            // Whether the enclosures' cap chose this step (not next - x >= proof_cap: the sum's
+            // rounding can make that false for the step the cap set, and the cap then never grows).
+            const bool cap_chose = proof_cap <= std::min({a.safe_step, retry_cap, x_to - x});
             if (next <= x) break;
             watched.frame_into(next, f);
             ++steps;
@@ -205,7 +208,7 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
                 }
                 count_step(proof, p, x, next);
                 // A step as long as the last one the enclosures proved: try a little longer next.
-                if (p.verdict == contact::StepVerdict::proved && next - x >= proof_cap) proof_cap *= 1.5;
+                if (p.verdict == contact::StepVerdict::proved && cap_chose) proof_cap *= 1.5;
                 // One no length down to kLeastEnclosedStep could enclose rests on its rate bound:
                 // the next is as long as the rates allow, not crept along at that length.
                 if (p.verdict == contact::StepVerdict::not_monotone) proof_cap = INFINITY;
