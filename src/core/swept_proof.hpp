@@ -68,7 +68,8 @@ struct StepProof {
 // Scratch reused between proofs (one per search worker).
 struct SweptWorkspace {
     struct Swept {
-        std::array<Vec2, 16> v;   // the enclosure's hull points
+        std::array<Vec2, 16> v;   // the enclosure's hull points: the first `count`
+        size_t count = 16;
         double radius = 0.0;      // m: the hull is dilated by this
         double x0, x1, y0, y1;    // its bounding box, dilated, m
     };
@@ -86,6 +87,11 @@ struct SweptWorkspace {
     std::vector<HandleSpan> spans;
     std::vector<Vec2> directions;  // the spiral's unit directions at a bench's handles' angles
     std::vector<double> arc0, arc1, dilation;
+    std::vector<double> accel;  // each handle's bound on |d^2 P / dx^2| over the step (second-order enclosures)
+    std::vector<double> hull;   // each link's hull turning over the step, rad
+    std::vector<double> own;    // each handle's own arc's turning over the step, rad
+    std::vector<double> speed;  // each handle's bound on its speed per unit of head speed over the step
+    std::vector<double> corner_accel, corner_speed;  // each bench's bounds over its corners: |c''|, |c'|
     std::vector<int> order;
     std::vector<int> active;
     std::vector<std::optional<BenchReach>> reach;  // each bench's offsets from the spiral (cells only)
@@ -93,12 +99,17 @@ struct SweptWorkspace {
     std::vector<speed::HandleArc> arcs;
 };
 
+// Which enclosures prove a step that every handle moves forward over (swept_proof.cpp, item 3):
+// the first order (long steps), the second order (short steps near a contact), or either.
+// Tests choose one to check each on its own.
+enum class Enclosures { either, first_order, second_order };
+
 // Proves (or fails to prove) that no two non-adjacent benches of the chain touch at any head
 // travel between the frames f0 and f1 (f0 earlier, both of the same chain on `path`, the head
 // moving forward from one to the other within the valid motion); with `apart_by` (m), that none
 // comes within apart_by of another (a lower bound on the least clearance over the step).
 StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, const Frame& f1, SweptWorkspace& ws,
-                     double apart_by = 0.0);
+                     double apart_by = 0.0, Enclosures which = Enclosures::either);
 
 // A value of the plain spiral's parameters at which benches are enclosed: the head's angle T
 // (rad) and the spiral's b (pitch / 2 pi, m/rad). A handle at polar offset D from the head lies
