@@ -54,9 +54,10 @@ Iv widened(double v0, double v1, double turn, double lo, double hi) {
     return {std::max(lo, std::min(v0, v1) - 0.5 * turn), std::min(hi, std::max(v0, v1) + 0.5 * turn)};
 }
 
-// Relative and absolute (1/m) widening of each bound: the interval arithmetic's rounding, and
-// the frames' own (handle places to ~1e-14 m, so angles to ~1e-14 rad), are far below both; the
-// absolute one costs h^2 / 8 * 1e-12 m of dilation, below kProofSlack for any step under 10 m.
+// Relative and absolute (1/m) widening of each bound: the interval arithmetic's rounding (a few
+// ulps of each of a few dozen operations a link) is far below the relative one, and the frames'
+// own (handle places to ~1e-14 m, so angles to ~1e-14 rad, which matter most where a bound is
+// near zero, as on a circle) far below the absolute one.
 constexpr double kAccelRelativeSlack = 1e-9;
 constexpr double kAccelAbsoluteSlack = 1e-12;
 

@@ -31,7 +31,8 @@ namespace dragon {
 // m: a feasible range of pitches narrower than this that its cells cannot prove is left
 // unproved (the pitches next to a change of feasibility, where a pair's closest approach falls
 // to zero). A colliding range goes on down to tol::pitch, and each feasible interval's least
-// pitch, the search's answer, is marched on its own as well.
+// pitch, the search's answer, is marched on its own as well (a range of one pitch, whose cells
+// are steps of that dragon's motion in, proved by swept_proof's prove_step).
 inline constexpr double kPitchProofFinest = 1e-7;
 
 // Proves the intervals of `intervals` (min_pitch's) each as it says, feasible or colliding, each

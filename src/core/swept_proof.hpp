@@ -17,6 +17,11 @@
 //    convex hull of its 16 such points, dilated by the largest radius.
 // 4. Two such enclosures apart along any axis (by more than kProofSlack) prove the two benches
 //    apart for the whole step.
+// 5. Those enclosures are first order in the step. Second order: every corner lies, at each
+//    moment, within h^2 / 8 max|c''| of the point of its chord the moment gives (handle_accel.hpp
+//    bounds c'' in head travel), so along axes turning at a constant rate from one end's to the
+//    other's, two benches are at least their lesser end gap apart less what that allows
+//    (methods.md 6.1, Propositions 7-8). Tried first; the first order where it fails.
 #pragma once
 
 #include <array>
