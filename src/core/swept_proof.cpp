@@ -190,7 +190,7 @@ struct Rotating {
 // benches along n(x) is the least over their corners of such differences: at least the lesser
 // of the two end gaps, less each bench's h^2 / 8 max|q''|. The axes: each board's two edge
 // directions at each end (the same edge at both), and the two ends' exact separation axes.
-// Stops at the first axis whose bound exceeds `enough`.
+// Stops at the first axis whose bound exceeds `enough` (m: a sharper one is not needed).
 double rotating_pair_gap(const Frame& f0, const Frame& f1, size_t a, size_t b, double h, const SweptWorkspace& ws,
                          double enough) {
     const size_t nb = std::min(f0.benches.size(), f1.benches.size());
@@ -243,7 +243,7 @@ double rotating_pair_gap(const Frame& f0, const Frame& f1, size_t a, size_t b, d
 // (`apart` proves a pair only apart, so it goes with apart_by = 0: kNotSeparately otherwise.)
 // With `rotating` (the second-order enclosures: two frames, the step's ends, `rotating->h` m of
 // head travel apart) each axis is a pair, one at each end, turning at a constant rate between
-// them: rotating_gap().
+// them: rotating_pair_gap().
 template <class Turning, class Apart>
 StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Frame& fb, size_t frames, bool turned,
                               const Turning& turning, const Apart& apart, SweptWorkspace& ws, double apart_by = 0.0,
@@ -300,7 +300,7 @@ StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Fram
             const double radii = o.radius + s.radius;
             double proved = b >= a + 2 ? chain_gap(turning, spec, fa, a, b) : -INFINITY;
             if (!(proved > required) && rotating) {
-                proved = std::max(proved, rotating_pair_gap(fa, fb, a, b, rotating->h, ws, radii + margin));
+                proved = std::max(proved, rotating_pair_gap(fa, fb, a, b, rotating->h, ws, margin));
             } else if (!(proved > required)) {
                 // The boards' edge normals in both frames (in the turned frame there). The
                 // normals first: the long sides face each other in most near pairs, and the
@@ -356,10 +356,11 @@ StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Fram
 // Each bench's enclosures at the step's two ends (ws.benches: nb at the start, nb at the end):
 // its four corners there, dilated by h^2 / 8 times the bound on the corner's second derivative in
 // head travel (ws.accel: each handle's; a corner c = cF F + cR R + j perp(F - R) has
-// |c''| <= hypot(cF, j) |F''| + hypot(cR, j) |R''|). Every corner then lies, at each moment of the
-// step, within that radius of the point a fraction of the way between its two end places that
-// the moment is of the step; so the gap of two benches projected on a fixed axis is at least the
-// lesser of their two end gaps less the two radii (separate_enclosures over two frames).
+// |c''| <= hypot(cF, j) |F''| + hypot(cR, j) |R''|, and |c'| the same with the speeds). Every
+// corner then lies, at each moment of the step, within that radius of the point a fraction of
+// the way between its two end places that the moment is of the step: the bench within the
+// bounding box of both ends' corners grown by it (the broad phase), and rotating_pair_gap bounds
+// each pair near enough to look at.
 void enclose_second_order(const BenchSpec& spec, const Frame& f0, const Frame& f1, double h, SweptWorkspace& ws) {
     const size_t nb = std::min(f0.benches.size(), f1.benches.size());
     ws.benches.resize(2 * nb);
@@ -368,17 +369,14 @@ void enclose_second_order(const BenchSpec& spec, const Frame& f0, const Frame& f
     for (size_t k = 0; k < nb; ++k) {
         const double d = spec.link_length(static_cast<int>(k) + 1);
         const Rect& r0 = f0.benches[k];
-        double worst = 0.0;
+        double worst = 0.0, fastest = 0.0;  // over the corners: |c''| and |c'|
         for (const double along : {-1.0, 1.0}) {
             const double cF = 0.5 + along * r0.half_length / d, cR = 0.5 - along * r0.half_length / d;
             const double j = r0.half_width / d;
-            worst = std::max(worst, std::sqrt(cF * cF + j * j) * ws.accel[k] + std::sqrt(cR * cR + j * j) * ws.accel[k + 1]);
-        }
-        double fastest = 0.0;
-        for (const double along : {-1.0, 1.0}) {
-            const double cF = 0.5 + along * r0.half_length / d, cR = 0.5 - along * r0.half_length / d;
-            const double j = r0.half_width / d;
-            fastest = std::max(fastest, std::sqrt(cF * cF + j * j) * ws.speed[k] + std::sqrt(cR * cR + j * j) * ws.speed[k + 1]);
+            // (cF I + j perp) scales every vector by hypot(cF, j); sqrt is exact to rounding.
+            const double front = std::sqrt(cF * cF + j * j), rear = std::sqrt(cR * cR + j * j);
+            worst = std::max(worst, front * ws.accel[k] + rear * ws.accel[k + 1]);
+            fastest = std::max(fastest, front * ws.speed[k] + rear * ws.speed[k + 1]);
         }
         ws.corner_accel[k] = worst;
         ws.corner_speed[k] = fastest;
