@@ -130,9 +130,9 @@ struct ContactSearchOptions {
     // rejects the steps it makes too long.
     double rate_safety = tol::rate_safety;
     // Prove every accepted step by enclosures (core/swept_proof.hpp; `dragon collide --prove`).
-    // Off by default: on the contest's Q2 it takes about 4 times the evaluations (and many more
-    // near a grazing pass), beyond the speed targets; without it each step rests on the rate
-    // bounds checked at its end (ContactProof::method() "rate").
+    // Off by default: on the contest's Q2 it takes about twice the evaluations and 3 times the
+    // CPU, beyond the speed targets; without it each step rests on the rate bounds checked at
+    // its end (ContactProof::method() "rate").
     bool prove_steps = false;
     // Check each step's rate bounds at its end and retry it shorter when they broke (the
     // default). false only for tests: the rate assumption alone, to show what it misses.
