@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "gentle_link.hpp"
+#include "path_part.hpp"
 #include "dragon/geometry.hpp"
 #include "dragon/portable_math.hpp"
 
@@ -27,19 +28,10 @@ Iv operator*(double s, Iv a) { return s >= 0.0 ? Iv{s * a.lo, s * a.hi} : Iv{s *
 Iv operator/(Iv a, Iv b) { return a * Iv{1.0 / b.hi, 1.0 / b.lo}; }
 double magnitude(Iv a) { return std::max(std::abs(a.lo), std::abs(a.hi)); }
 
-// The signed curvature's range between places a (behind) and b: on each piece of the path it is
-// monotone (constant on an arc, monotone in theta on a spiral, of one sign), so its range is
-// that of its values at the ends of each piece's part.
-Iv curvature_range(const Path& path, const Place& a, const Place& b) {
-    Iv k{INFINITY, -INFINITY};
-    for (int piece = a.piece; piece <= b.piece; ++piece) {
-        const auto [begin, end] = path.piece_span(piece);
-        for (const double u : {piece == a.piece ? a.u : begin, piece == b.piece ? b.u : end}) {
-            const double c = path.curvature({piece, u});
-            k = {std::min(k.lo, c), std::max(k.hi, c)};
-        }
-    }
-    return k;
+// The signed curvature's range between places a (behind) and b.
+Iv curvature_between(const Path& path, const Place& a, const Place& b) {
+    const auto [lo, hi] = curvature_range(path, a, b);
+    return {lo, hi};
 }
 
 // A lower bound on cos(t) and an upper bound on sin(t) for 0 <= t < pi/2, without a call to
@@ -76,7 +68,7 @@ bool handle_accel_bounds(const Path& path, const BenchSpec& spec, const Frame& f
     const double h = std::abs(f1.head_arc - f0.head_arc);
     const auto widen = [](double bound) { return bound * (1.0 + kAccelRelativeSlack) + kAccelAbsoluteSlack; };
     // Handle k's curvature over its arc, and its speed ratio's bound over the step.
-    Iv kappa_front = curvature_range(path, f0.handles[0].place, f1.handles[0].place);
+    Iv kappa_front = curvature_between(path, f0.handles[0].place, f1.handles[0].place);
     double v_bound = 1.0;  // the head: v_0 = 1 throughout
     double a_bound = 0.0;  // and v_0' = 0
     accel[0] = widen(magnitude(kappa_front));
@@ -89,7 +81,7 @@ bool handle_accel_bounds(const Path& path, const BenchSpec& spec, const Frame& f
         const double tau = hull_turning[k];
         if (!(tau < gentle::kMaxLinkTurning)) return false;
         const double d = spec.link_length(static_cast<int>(k) + 1);
-        const Iv kappa_rear = curvature_range(path, R0.place, R1.place);
+        const Iv kappa_rear = curvature_between(path, R0.place, R1.place);
         // The ends' sines and cosines of the angles from the link to each tangent.
         const Vec2 u0 = (F0.pos - R0.pos).normalized(), u1 = (F1.pos - R1.pos).normalized();
         // How far each angle can turn over the step (sine and cosine move by no more), per unit

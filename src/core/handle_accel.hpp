@@ -19,7 +19,8 @@
 //
 // The angles over the step lie between their end values widened by what they can turn: phi_F
 // changes at kappa_F - w and phi_R at rho kappa_R - w per unit of sigma, with |w| bounded from
-// the link's hull turning tau (|phi| <= tau, rho <= 1 / cos(tau)). Curvatures come from each
+// the link's hull turning tau (|phi| <= tau, rho <= 1 / cos(tau)), then once more from the
+// intervals of w and rho that gives. Curvatures come from each
 // handle's arc over the step (|kappa| monotone on each piece of the path, methods.md 10.1).
 //
 // Assumes what prove_step's first part proves: every handle moves forward over the step (its arc

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "gentle_link.hpp"
+#include "path_part.hpp"
 #include "dragon/portable_math.hpp"
 
 namespace dragon::jam {
@@ -74,21 +75,10 @@ double health_at(const Located& p, const Vec2& q, double d) {
     return std::max(d - r, 0.5 * d * dot(w, p.tangent) / r);
 }
 
-// The parameter range of `piece` between places a (behind) and b.
-std::pair<double, double> part_of(const Path& path, int piece, const Place& a, const Place& b) {
-    const auto [begin, end] = path.piece_span(piece);
-    return {piece == a.piece ? a.u : begin, piece == b.piece ? b.u : end};
-}
-
-// The largest |curvature| between places a (behind) and b: on each piece it is monotone (constant
-// on an arc, monotone in theta on a spiral), so it is found at the ends of each piece's part.
+// The largest |curvature| between places a (behind) and b (0 when b is behind a).
 double largest_curvature(const Path& path, const Place& a, const Place& b) {
-    double k = 0.0;
-    for (int piece = a.piece; piece <= b.piece; ++piece) {
-        const auto [u0, u1] = part_of(path, piece, a, b);
-        k = std::max({k, std::abs(path.curvature({piece, u0})), std::abs(path.curvature({piece, u1}))});
-    }
-    return k;
+    const auto [lo, hi] = curvature_range(path, a, b);
+    return lo > hi ? 0.0 : std::max(std::abs(lo), std::abs(hi));
 }
 
 struct Sample {

@@ -451,6 +451,8 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
     // 1. Every handle moves forward, and every link's hull over the step turns by less than
     // pi/2 (the induction of swept_proof.hpp, from the head, whose travel is forward).
     ws.dilation.resize(nh);
+    ws.hull.resize(nh - 1);
+    ws.own.resize(nh);
     for (size_t i = 0; i < nh; ++i) {
         const Place& p0 = f0.handles[i].place;
         const Place& p1 = f1.handles[i].place;
@@ -458,14 +460,12 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
         if (i + 1 < nh) {
             // The link from handle i to handle i + 1 lies, over the step, between handle i + 1's
             // place at the start and handle i's at the end.
-            ws.hull.resize(nh - 1);
             ws.hull[i] = turning(i + 1, i);
             if (!gentle::hull_turns_gently(path, p1, f0.handles[i + 1].place, ws.hull[i]))
                 return prove_by_speed_bounds(path, spec, f0, f1, ws, apart_by);
         }
         // 2. The handle's arc over the step, within `dilation` of its chord (the fixed frame's
         // enclosures only), and how far the path turns along it.
-        ws.own.resize(nh);
         ws.own[i] = turned ? std::abs(ws.arc0[i] - ws.arc1[i]) : path.turning(p0, p1);
         if (!turned) {
             const double length = std::abs(path.arc(p1) - path.arc(p0));
