@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "gentle_link.hpp"
+#include "interval.hpp"
 #include "path_part.hpp"
 #include "dragon/geometry.hpp"
 #include "dragon/portable_math.hpp"
@@ -12,21 +13,6 @@
 namespace dragon::contact {
 
 namespace {
-
-// A closed interval of reals, evaluated in round-to-nearest: what it loses to rounding (a few
-// ulps of each bound) the final bound's widening covers (kAccelRelativeSlack).
-struct Iv {
-    double lo, hi;
-};
-Iv operator-(Iv a, Iv b) { return {a.lo - b.hi, a.hi - b.lo}; }
-Iv operator*(Iv a, Iv b) {
-    const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-    return {std::min({p[0], p[1], p[2], p[3]}), std::max({p[0], p[1], p[2], p[3]})};
-}
-Iv operator*(double s, Iv a) { return s >= 0.0 ? Iv{s * a.lo, s * a.hi} : Iv{s * a.hi, s * a.lo}; }
-// b strictly positive.
-Iv operator/(Iv a, Iv b) { return a * Iv{1.0 / b.hi, 1.0 / b.lo}; }
-double magnitude(Iv a) { return std::max(std::abs(a.lo), std::abs(a.hi)); }
 
 // The signed curvature's range between places a (behind) and b.
 Iv curvature_between(const Path& path, const Place& a, const Place& b) {

@@ -12,6 +12,7 @@
 #include "golden_section.hpp"
 #include "swept_proof.hpp"
 #include "dragon/chain.hpp"
+#include "dragon/collision.hpp"
 #include "dragon/constants.hpp"
 #include "dragon/path.hpp"
 #include "dragon/portable_math.hpp"
@@ -39,6 +40,13 @@ constexpr double kTailSteps = 8.0;
 // Head radii between the first contact and the boundary at which a witness of a collision is
 // looked for (the deepest overlap of the contact's pair).
 constexpr int kWitnessSamples = 48;
+// m: a witness whose pair still overlaps at a narrower range's middle pitch is looked for again
+// this far either side of its radius (a grazing overlap's deepest place moves little with the
+// pitch).
+constexpr double kRefineRadius = 5e-3;
+// Head radii from the boundary out to the start at which the whole chain is looked at for a
+// witness before a run is made.
+constexpr int kScanRadii = 12;
 // m: the golden section on the deepest overlap stops at this bracket of head radius.
 constexpr double kWitnessRadius = 1e-7;
 // m: a colliding range is halved down to this, the search's own resolution of the cut (a witness
@@ -81,7 +89,10 @@ struct Range {
 // Marches the range [p_lo, p_hi] of pitches from its start in to `boundary` (the turning
 // space's radius), halving what its cells cannot prove; adds what it proved to `out`.
 void march(const BenchSpec& spec, double start_turn, double boundary, double p_lo, double p_hi, PitchProof& out) {
-    Frame fa, fb;
+    // The chains at the cell's four corners: its outer radius's (kept from the cell before, whose
+    // inner radius it was) and its inner radius's, each at the range's two pitches.
+    Frame outer_lo, outer_hi, inner_lo, inner_hi;
+    double outer_r = NAN;  // m: the head radius of outer_lo and outer_hi (NAN: none yet)
     std::vector<double> theta_a, theta_b;
     contact::SweptWorkspace ws;
     std::vector<Range> todo{{p_lo, p_hi, Spiral(p_hi).b() * kTwoPi * start_turn}};
@@ -91,8 +102,7 @@ void march(const BenchSpec& spec, double start_turn, double boundary, double p_l
         ++out.pitch_ranges;
         // b as the spirals of the range's two ends have it (Spiral::b(): pitch / 2 pi).
         const double b_lo = Spiral(range.p_lo).b(), b_hi = Spiral(range.p_hi).b();
-        const std::optional<Spiral> one_pitch =
-            range.p_lo == range.p_hi ? std::optional<Spiral>(std::in_place, range.p_lo) : std::nullopt;
+        outer_r = NAN;  // another range's pitches
         double r = range.from;  // m: every cell from the start in to here is proved
         double step = kFirstRadiusStep * r;
         bool done = true;
@@ -114,20 +124,32 @@ void march(const BenchSpec& spec, double start_turn, double boundary, double p_l
                     break;
                 }
                 watched = contact::spiral_cell_benches(spec, theta_a, theta_b, b_lo, b_hi, ws);
+                outer_r = NAN;  // the benches held may have changed
             }
-            front_at(spec, r, range.p_hi, watched, fa);
-            front_at(spec, r_lo, range.p_lo, watched, fb);
-            const std::array<contact::SpiralCorner, 4> corners{{{r_lo / b_lo, b_lo}, {r_lo / b_hi, b_hi},
-                                                                 {r / b_lo, b_lo}, {r / b_hi, b_hi}}};
-            // A range of one pitch is that dragon's motion in from r to r_lo: a step of the
-            // first-contact proof, whose second-order enclosures reach a grazing pass in far
-            // fewer cells (their looseness falls with the cell's square).
-            const contact::StepProof p = one_pitch ? contact::prove_step(*one_pitch, spec, fa, fb, ws)
-                                                   : contact::prove_spiral_cell(spec, fa, fb, corners, ws);
+            if (!(outer_r == r)) {
+                front_at(spec, r, range.p_lo, watched, outer_lo);
+                front_at(spec, r, range.p_hi, watched, outer_hi);
+                outer_r = r;
+            }
+            front_at(spec, r_lo, range.p_lo, watched, inner_lo);
+            front_at(spec, r_lo, range.p_hi, watched, inner_hi);
+            // The second order in the head's radius first (its looseness falls with the cell's
+            // square: it reaches a grazing pass in far fewer cells), then the first order (long
+            // cells between benches far apart).
+            contact::StepProof p = contact::prove_spiral_cell_second_order(
+                spec, {inner_lo, inner_hi, outer_lo, outer_hi, r_lo, r, b_lo, b_hi}, ws);
+            if (p.verdict != contact::StepVerdict::proved) {
+                const std::array<contact::SpiralCorner, 4> corners{{{r_lo / b_lo, b_lo}, {r_lo / b_hi, b_hi},
+                                                                     {r / b_lo, b_lo}, {r / b_hi, b_hi}}};
+                p = contact::prove_spiral_cell(spec, outer_hi, inner_lo, corners, ws);
+            }
             if (p.verdict == contact::StepVerdict::proved) {
                 ++out.cells;
                 out.least_gap = std::min(out.least_gap, p.least_gap);
                 r = r_lo;
+                std::swap(outer_lo, inner_lo);
+                std::swap(outer_hi, inner_hi);
+                outer_r = r;
                 step *= kStepGrowth;
                 continue;
             }
@@ -152,68 +174,112 @@ void march(const BenchSpec& spec, double start_turn, double boundary, double p_l
     }
 }
 
-// A collision proved for every pitch of [p_lo, p_hi] (pitch_proof.hpp's second part): at one head
-// radius r the same corner of one bench lies inside another for every pitch, deeper than the two
-// benches can move as the pitch does. The witness is taken from the run at the range's middle
-// pitch: its first contact's pair, at the radius (between the contact and the boundary) where
-// that pair's deepest corner is deepest.
-bool collides_throughout(const Scenario& s, double p_lo, double p_hi, Frame& f, std::vector<double>& theta_a,
-                         std::vector<double>& theta_b) {
-    const BenchSpec& spec = s.bench;
-    const double p_mid = 0.5 * (p_lo + p_hi);
-    const BoundaryRun run = run_to_boundary(s, p_mid);
-    if (!run.contact) return false;  // a jam (or no contact at all): nothing to take a witness from
-    const int a = run.contact->bench_a, b = run.contact->bench_b;
-    const size_t ka = static_cast<size_t>(a - 1), kb = static_cast<size_t>(b - 1);
-    const Spiral mid(p_mid);
-    // The corner of one bench inside the other, and how deep (its distance to the other's
-    // boundary), at head radius r for the middle pitch.
-    struct Witness {
-        double r = 0.0, depth = -INFINITY;
-        size_t inner = 0, outer = 0;  // the bench whose corner it is, and the bench it is inside (0-based)
-        double along = 0.0, across = 0.0;  // which corner: +-1 each
-    };
-    const auto deepest_at = [&](double r) {
-        solve_chain_front(mid, spec, mid.arc({0, r / mid.b()}), 1.0, b + 1, f);
-        Witness w;
-        w.r = r;
-        for (const auto& [inner, outer] : {std::pair{ka, kb}, std::pair{kb, ka}}) {
-            const Rect& in = f.benches[inner];
-            const Rect& out = f.benches[outer];
-            for (const double along : {-1.0, 1.0})
-                for (const double across : {-1.0, 1.0}) {
-                    const Vec2 c = in.centre + along * in.half_length * in.axis + across * in.half_width * perp(in.axis);
-                    const Vec2 d = c - out.centre;
-                    const double depth = std::min(out.half_length - std::abs(dot(d, out.axis)),
-                                                  out.half_width - std::abs(dot(d, perp(out.axis))));
-                    if (depth > w.depth) w = {r, depth, inner, outer, along, across};
-                }
-        }
-        return w;
-    };
-    const double r_contact = run.contact->head_radius, boundary = s.path.turn_radius;
-    const double spacing = (r_contact - boundary) / kWitnessSamples;
-    Witness best = deepest_at(r_contact);
+// A corner of one bench inside another at head radius r: the witness of a collision.
+struct Witness {
+    double r = 0.0, depth = -INFINITY;  // m: the head radius; how deep the corner lies inside
+    size_t inner = 0, outer = 0;        // the bench whose corner it is, and the bench it is inside (0-based)
+    double along = 0.0, across = 0.0;   // which corner: +-1 each
+    bool from_run = false;              // its pair is a run's first contact's
+};
+
+// The corner of benches a and b (0-based) deepest inside the other in the chain `f` (solved with
+// the head at radius r): its distance to the other's boundary (negative when outside).
+Witness deepest_corner(const Frame& f, double r, size_t a, size_t b) {
+    Witness w;
+    w.r = r;
+    for (const auto& [inner, outer] : {std::pair{a, b}, std::pair{b, a}}) {
+        const Rect& in = f.benches[inner];
+        const Rect& out = f.benches[outer];
+        for (const double along : {-1.0, 1.0})
+            for (const double across : {-1.0, 1.0}) {
+                const Vec2 c = in.centre + along * in.half_length * in.axis + across * in.half_width * perp(in.axis);
+                const Vec2 d = c - out.centre;
+                const double depth = std::min(out.half_length - std::abs(dot(d, out.axis)),
+                                              out.half_width - std::abs(dot(d, perp(out.axis))));
+                if (depth > w.depth) w = {r, depth, inner, outer, along, across};
+            }
+    }
+    return w;
+}
+
+// The deepest corner of the pair (a, b) at head radius r for the spiral `mid`.
+Witness pair_at(const BenchSpec& spec, const Spiral& mid, double r, size_t a, size_t b, Frame& f) {
+    solve_chain_front(mid, spec, mid.arc({0, r / mid.b()}), 1.0, static_cast<int>(std::max(a, b)) + 2, f);
+    return deepest_corner(f, r, a, b);
+}
+
+// The deepest overlap of the pair (a, b) for the spiral `mid` between head radii lo and hi
+// (samples, then a golden section around the deepest: a grazing overlap lasts a few millimetres
+// of radius, between samples).
+Witness deepest_between(const BenchSpec& spec, const Spiral& mid, double lo, double hi, size_t a, size_t b, Frame& f) {
+    const double spacing = (hi - lo) / kWitnessSamples;
+    Witness best = pair_at(spec, mid, hi, a, b, f);
     for (int k = 1; k <= kWitnessSamples; ++k) {
-        const Witness w = deepest_at(r_contact - spacing * k);
+        const Witness w = pair_at(spec, mid, hi - spacing * k, a, b, f);
         if (w.depth > best.depth) best = w;
     }
-    // The deepest sample's neighbourhood by golden section (a grazing overlap lasts a few
-    // millimetres of radius, between samples).
     if (spacing > 0.0) {
-        const double lo = std::max(boundary, best.r - spacing), hi = std::min(r_contact, best.r + spacing);
-        const double r_peak = golden_min([&](double r) { return -deepest_at(r).depth; }, lo, hi, kWitnessRadius).first;
-        if (const Witness w = deepest_at(r_peak); w.depth > best.depth) best = w;
+        const double g_lo = std::max(lo, best.r - spacing), g_hi = std::min(hi, best.r + spacing);
+        const double r_peak =
+            golden_min([&](double r) { return -pair_at(spec, mid, r, a, b, f).depth; }, g_lo, g_hi, kWitnessRadius).first;
+        if (const Witness w = pair_at(spec, mid, r_peak, a, b, f); w.depth > best.depth) best = w;
     }
-    if (!(best.depth > 0.0)) return false;
+    return best;
+}
+
+// A witness for the pitch p without a run: the pairs overlapping most (by their separation) in
+// the whole chain at a few head radii from the boundary out to the start, the deepest of their
+// corners refined by deepest_between. Deep collisions last long: most pitches of a colliding
+// range show one at these radii; a grazing one is left to witness_from_run.
+std::optional<Witness> witness_from_scan(const Scenario& s, double p, Frame& f) {
+    const Spiral mid(p);
+    const double boundary = s.path.turn_radius, start = mid.b() * kTwoPi * s.path.start_turn;
+    std::optional<Witness> best;
+    for (int k = 0; k < kScanRadii; ++k) {
+        const double r = boundary + (start - boundary) * k / kScanRadii;
+        solve_chain_front(mid, s.bench, mid.arc({0, r / mid.b()}), 1.0, s.bench.handle_count(), f);
+        const Clearance c = clearance(f);
+        if (!(c.distance < 0.0)) continue;
+        const Witness w = deepest_corner(f, r, static_cast<size_t>(c.bench_a - 1), static_cast<size_t>(c.bench_b - 1));
+        if (!best || w.depth > best->depth) best = w;
+    }
+    if (!best) return std::nullopt;
+    const double spacing = (start - boundary) / kScanRadii;
+    const Witness w = deepest_between(s.bench, mid, std::max(boundary, best->r - spacing), std::min(start, best->r + spacing),
+                                      std::min(best->inner, best->outer), std::max(best->inner, best->outer), f);
+    return w.depth > best->depth ? w : *best;
+}
+
+// A witness for the pitch p from its run: its first contact's pair, at the radius (between the
+// contact and the boundary) where that pair's deepest corner is deepest.
+std::optional<Witness> witness_from_run(const Scenario& s, double p, Frame& f) {
+    const BoundaryRun run = run_to_boundary(s, p);
+    if (!run.contact) return std::nullopt;  // a jam (or no contact at all): nothing to take a witness from
+    const size_t a = static_cast<size_t>(run.contact->bench_a - 1), b = static_cast<size_t>(run.contact->bench_b - 1);
+    Witness w = deepest_between(s.bench, Spiral(p), s.path.turn_radius, run.contact->head_radius, a, b, f);
+    w.from_run = true;
+    return w;
+}
+
+// Whether the witness's pair and radius prove a collision for every pitch of [p_lo, p_hi]
+// (pitch_proof.hpp's second part): at its radius r the pair's deepest corner at the range's
+// middle pitch lies inside the other bench deeper than the two benches can move as the pitch
+// does. Fills `found` with that corner at the middle pitch.
+bool witness_holds(const Scenario& s, double p_lo, double p_hi, const Witness& w, Witness& found, Frame& f,
+                   std::vector<double>& theta_a, std::vector<double>& theta_b) {
+    const BenchSpec& spec = s.bench;
+    const double p_mid = 0.5 * (p_lo + p_hi);
+    const Spiral mid(p_mid);
+    const double r = w.r;
+    if (!(r >= s.path.turn_radius)) return false;
+    found = pair_at(spec, mid, r, std::min(w.inner, w.outer), std::max(w.inner, w.outer), f);
+    if (!(found.depth > 0.0)) return false;
     // Every pitch of the range at that radius: each handle's polar offset D between its values at
     // the range's two ends (Proposition P2, the cell [r, start] x [b_lo, b_hi], its bounds checked
     // at (r, b_lo): this also proves the motion valid all the way down to r for every pitch).
-    const double r = best.r;
     const double b_lo = Spiral(p_lo).b(), b_hi = Spiral(p_hi).b(), b_mid = mid.b();
     if (!angles_at(spec, r, p_hi, theta_a) || !angles_at(spec, r, p_lo, theta_b) || !bounds_hold(theta_b, b_lo, b_hi))
         return false;
-    solve_chain_front(mid, spec, mid.arc({0, r / b_mid}), 1.0, b + 1, f);  // the witness's chain again
     // How far handle i can be from its place at the middle pitch, in the frame turned with the
     // head (where the chain's shape is compared at each pitch: overlapping is the same turned):
     // P = (r + b D)(cos D, sin D) moves by D |b - b_mid| as b does and by at most
@@ -235,38 +301,67 @@ bool collides_throughout(const Scenario& s, double p_lo, double p_hi, Frame& f, 
     };
     double outer_moved = 0.0;  // the outer bench moves no point farther than its farthest corner
     for (const double along : {-1.0, 1.0})
-        for (const double across : {-1.0, 1.0}) outer_moved = std::max(outer_moved, corner_moved(best.outer, along, across));
-    // The depth again from this chain (the same solve as the scan's, bit for bit).
-    const Rect& in = f.benches[best.inner];
-    const Rect& out = f.benches[best.outer];
-    const Vec2 c = in.centre + best.along * in.half_length * in.axis + best.across * in.half_width * perp(in.axis);
-    const Vec2 d = c - out.centre;
-    const double depth = std::min(out.half_length - std::abs(dot(d, out.axis)), out.half_width - std::abs(dot(d, perp(out.axis))));
-    return depth > corner_moved(best.inner, best.along, best.across) + outer_moved + contact::kProofSlack;
+        for (const double across : {-1.0, 1.0}) outer_moved = std::max(outer_moved, corner_moved(found.outer, along, across));
+    return found.depth > corner_moved(found.inner, found.along, found.across) + outer_moved + contact::kProofSlack;
 }
 
 // Proves the range [p_lo, p_hi] of an infeasible interval colliding, halving what one witness
-// cannot cover; adds what it proved to `out`.
+// cannot cover; adds what it proved to `out`. Each range tries, in order of cost, its parent's
+// witness (its pair and radius, at the range's own middle pitch), one from a scan of its middle
+// pitch's chain, and one from its middle pitch's run.
 void prove_colliding(const Scenario& s, double p_lo, double p_hi, PitchProof& out) {
     Frame f;
     std::vector<double> theta_a, theta_b;
-    std::vector<std::pair<double, double>> todo{{p_lo, p_hi}};
+    struct Todo {
+        double lo, hi;
+        std::optional<Witness> hint;  // the parent's deepest overlap
+    };
+    std::vector<Todo> todo{{p_lo, p_hi, std::nullopt}};
     while (!todo.empty()) {
-        const auto [lo, hi] = todo.back();
+        const Todo range = todo.back();
         todo.pop_back();
         ++out.pitch_ranges;
-        if (collides_throughout(s, lo, hi, f, theta_a, theta_b)) {
-            out.proved_colliding.push_back({lo, hi, false});
+        const double mid = 0.5 * (range.lo + range.hi);
+        std::optional<Witness> seen;  // the deepest overlap seen at this range's middle pitch
+        const auto holds = [&](const std::optional<Witness>& w) {
+            if (!w) return false;
+            Witness found;
+            if (witness_holds(s, range.lo, range.hi, *w, found, f, theta_a, theta_b)) return true;
+            found.from_run = w->from_run;
+            if (found.depth > 0.0 && (!seen || found.depth > seen->depth)) seen = found;
+            return false;
+        };
+        // Where the parent's pair still overlaps here, that pair again at the radius where it
+        // overlaps most now (a grazing overlap's deepest place moves with the pitch).
+        const auto refined = [&]() -> std::optional<Witness> {
+            if (!seen) return std::nullopt;
+            Witness w = deepest_between(s.bench, Spiral(mid), std::max(s.path.turn_radius, seen->r - kRefineRadius),
+                                        seen->r + kRefineRadius, std::min(seen->inner, seen->outer),
+                                        std::max(seen->inner, seen->outer), f);
+            w.from_run = seen->from_run;
+            return w;
+        };
+        // A run, the dearest, unless the deepest overlap seen is already a run's first contact's
+        // pair (which a run here would find again: the ranges next to the cut).
+        const auto from_run = [&]() -> std::optional<Witness> {
+            if (seen && seen->from_run) return std::nullopt;
+            return witness_from_run(s, mid, f);
+        };
+        const auto from_scan = [&]() -> std::optional<Witness> {
+            if (seen && seen->from_run) return std::nullopt;
+            return witness_from_scan(s, mid, f);
+        };
+        if (holds(range.hint) || holds(refined()) || holds(from_scan()) || holds(from_run())) {
+            out.proved_colliding.push_back({range.lo, range.hi, false});
             continue;
         }
         ++out.subdivisions;
-        if (hi - lo <= kCollidingFinest) {
-            out.unproved_colliding.push_back({lo, hi, false});
+        if (range.hi - range.lo <= kCollidingFinest) {
+            out.unproved_colliding.push_back({range.lo, range.hi, false});
             continue;
         }
-        const double mid = 0.5 * (lo + hi);
-        todo.push_back({mid, hi});
-        todo.push_back({lo, mid});
+        todo.push_back({mid, range.hi, seen});
+        todo.push_back({range.lo, mid, seen});
     }
 }
 

@@ -16,24 +16,29 @@
 // conditions at the corner where the spans are largest and the radii least hold everywhere).
 // Handle i lies at (r0 + b D_i) (cos D_i, sin D_i) in the frame turned with the head: linear in
 // (r0, b) for fixed D, so swept_proof's enclosures at the cell's four corners prove the whole
-// cell (prove_spiral_cell). Every pitch in [b_lo, b_hi] 2 pi starts no farther out than
-// r0 = 2 pi b_hi start_turn: cells from there in to the turning space's radius cover its run.
+// cell (prove_spiral_cell: first order in the cell's size). Tried first, the second order in
+// r0 (prove_spiral_cell_second_order): the benches enclosed over the range of b at each of the
+// two radii, and between them each corner within h^2 / 8 of its chord in that frame
+// (shape_rates.hpp bounds its second derivative in r0 there). Every pitch in [b_lo, b_hi] 2 pi
+// starts no farther out than r0 = 2 pi b_hi start_turn: cells from there in to the turning
+// space's radius cover its run.
 #pragma once
 
 #include <vector>
 
 #include "dragon/analyses.hpp"
+#include "dragon/constants.hpp"
 #include "dragon/executor.hpp"
 #include "dragon/scenario.hpp"
 
 namespace dragon {
 
-// m: a feasible range of pitches narrower than this that its cells cannot prove is left
+// m: a feasible range of pitches no wider than this that its cells cannot prove is left
 // unproved (the pitches next to a change of feasibility, where a pair's closest approach falls
-// to zero). A colliding range goes on down to tol::pitch, and each feasible interval's least
-// pitch, the search's answer, is marched on its own as well (a range of one pitch, whose cells
-// are steps of that dragon's motion in, proved by swept_proof's prove_step).
-inline constexpr double kPitchProofFinest = 1e-7;
+// to zero): the search's own resolution of the cut (tol::pitch), as for a colliding range. Each
+// feasible interval's least pitch, the search's answer, is marched on its own as well (a range
+// of one pitch, whose cells are steps of that dragon's motion in).
+inline constexpr double kPitchProofFinest = tol::pitch;
 
 // Proves the intervals of `intervals` (min_pitch's) each as it says, feasible or colliding, each
 // range of pitches on its own; the scenario's bench, start_turn and turn_radius are the runs'.
@@ -43,6 +48,10 @@ inline constexpr double kPitchProofFinest = 1e-7;
 // every handle's polar offset between its values at the range's ends; each handle then moves at
 // most D |b - b_mid| + sqrt(b^2 + (r + b D)^2) |D - D_mid|, and a corner as its two handles do).
 // Every pitch of the range then overlaps at r: it met its first contact before the boundary.
+// The witness (a pair and a radius) is looked for, cheapest first: the parent range's, that pair
+// again at the radius where it overlaps most at this range's middle pitch, the whole chain's
+// deepest overlaps at a few radii, and last the middle pitch's run (its first contact's pair);
+// which one is found decides only how many ranges are halved, never what is proved.
 PitchProof prove_pitches(const Scenario& s, const std::vector<PitchInterval>& intervals, Executor& ex);
 
 }  // namespace dragon

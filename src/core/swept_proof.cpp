@@ -2,6 +2,7 @@
 #include "swept_proof.hpp"
 #include "gentle_link.hpp"
 #include "handle_accel.hpp"
+#include "shape_rates.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -113,13 +114,14 @@ constexpr auto kNotSeparately = [](size_t, size_t) { return false; };
 // this one covers the rounding of the radii passed to it, a few ulps).
 constexpr double kOffsetSlack = 1e-9;
 
-// Every bench's enclosures on the spiral (ws.benches, one set of nb per corner): bench k's
-// handles at polar offsets D from the head between their values in fa and fb, its link's span
-// between its two values, the spiral's b and the head's angle T those of each corner.
+// Every bench's enclosures on the spiral (ws.benches, one set of nb per corner, from set
+// `first` on): bench k's handles at polar offsets D from the head between their values in fa and
+// fb, its link's span between its two values, the spiral's b and the head's angle T those of
+// each corner.
 void enclose_on_spiral(const BenchSpec& spec, const Frame& fa, const Frame& fb, std::span<const SpiralCorner> corners,
-                       SweptWorkspace& ws) {
+                       SweptWorkspace& ws, size_t first = 0) {
     const size_t nb = std::min(fa.benches.size(), fb.benches.size());
-    ws.benches.resize(corners.size() * nb);
+    ws.benches.resize((first + corners.size()) * nb);
     ws.directions.resize(6 * nb);
     for (size_t t = 0; t < corners.size(); ++t) {
         const double T = corners[t].T, b = corners[t].b;
@@ -138,7 +140,7 @@ void enclose_on_spiral(const BenchSpec& spec, const Frame& fa, const Frame& fb, 
             const Rect& r = fa.benches[k];
             const double link = spec.link_length(static_cast<int>(k) + 1);
             const double r_max = b * (T + d_hi + a_hi) + 2.0 * b;  // bounds |P''| on the box
-            SweptWorkspace::Swept& sw = ws.benches[t * nb + k];
+            SweptWorkspace::Swept& sw = ws.benches[(first + t) * nb + k];
             Vec2 Fs[4], Rs[4];  // the handles at the box's four corners (D, alpha)
             Vec2* const e = &ws.directions[6 * k];  // their directions, the same at every corner
             if (t == 0) {
@@ -175,34 +177,47 @@ void enclose_on_spiral(const BenchSpec& spec, const Frame& fa, const Frame& fb, 
     }
 }
 
-// The second-order enclosures' step: m of head travel.
+// The second-order enclosures: two ends `h` apart (m of head travel, or of head radius in a
+// cell), each with `per_end` sets of enclosures (ws.benches' sets [e per_end, (e + 1) per_end)
+// are end e's), and the chains whose boards give each end's axes, turned by -turn[e] (the head's
+// angle in a turned frame; 0 in the fixed one) into the enclosures' frame.
 struct Rotating {
     double h;
+    size_t per_end;
+    const Frame* axes[2];
+    double turn[2];
 };
 
-// A lower bound on the distance of benches a and b (0-based) at every moment of a step h m of
-// head travel long, from their corners at its two ends (ws.benches' two frames) and their
-// bounds (ws.corner_accel, ws.corner_speed: over the step each corner's |c''| and |c'| in head
-// travel). For unit axes n0 (at the start) and n1 (at the end) let n(x) turn from n0 to n1 at
-// the constant rate psi' = psi / h; with o a fixed point, q(x) = (c(x) - o) . n(x) has
+// A lower bound on the distance of benches a and b (0-based) at every moment of a step from
+// their enclosures at its two ends (`rot`; each set a bench's places at that end for one value
+// of what else varies, within the set's hull dilated by its radius) and their bounds
+// (ws.corner_accel, ws.corner_speed: over the step each corner's |c''| and |c'|). For unit axes
+// n0 (at the start) and n1 (at the end) let n(x) turn from n0 to n1 at the constant rate
+// psi' = psi / h; with o a fixed point, q(x) = (c(x) - o) . n(x) has
 // q'' = c'' . n + 2 c' . n' + (c - o) . n'', so |q''| <= |c''| + 2 |c'| |psi'| + |c - o| psi'^2,
 // and q lies within h^2 / 8 of that of the chord between its end values. The gap of the two
-// benches along n(x) is the least over their corners of such differences: at least the lesser
-// of the two end gaps, less each bench's h^2 / 8 max|q''|. The axes: each board's two edge
-// directions at each end (the same edge at both), and the two ends' exact separation axes.
-// Stops at the first axis whose bound exceeds `enough` (m: a sharper one is not needed).
-double rotating_pair_gap(const Frame& f0, const Frame& f1, size_t a, size_t b, double h, const SweptWorkspace& ws,
-                         double enough) {
-    const size_t nb = std::min(f0.benches.size(), f1.benches.size());
-    const SweptWorkspace::Swept* ends[2][2] = {{&ws.benches[a], &ws.benches[b]}, {&ws.benches[nb + a], &ws.benches[nb + b]}};
-    const Vec2 o = 0.5 * (f0.benches[a].centre + f0.benches[b].centre);
+// benches along n(x) is the least over their corners of such differences: at least the least of
+// the end gaps (each set's, less its radii), less each bench's h^2 / 8 max|q''|. The axes: each
+// board's two edge directions at each end (the same edge at both), and the two ends' exact
+// separation axes. Stops at the first axis whose bound exceeds `enough` (m: a sharper one is not
+// needed).
+double rotating_pair_gap(const Rotating& rot, size_t nb, size_t a, size_t b, const SweptWorkspace& ws, double enough) {
+    const double h = rot.h;
+    const size_t sets = 2 * rot.per_end;
+    const auto set = [&](size_t t, size_t k) -> const SweptWorkspace::Swept& { return ws.benches[t * nb + k]; };
+    // o: the middle of the two benches' first enclosures.
+    Vec2 o = Vec2::Zero();
+    for (const size_t k : {a, b})
+        for (size_t q = 0; q < set(0, k).count; ++q) o += set(0, k).v[q];
+    o /= static_cast<double>(set(0, a).count + set(0, b).count);
     // Each bench's corners' greatest distance from o over the step.
     double reach[2];
     for (size_t m = 0; m < 2; ++m) {
+        const size_t k = m == 0 ? a : b;
         double far = 0.0;
-        for (size_t t = 0; t < 2; ++t)
-            for (size_t q = 0; q < ends[t][m]->count; ++q) far = std::max(far, norm(ends[t][m]->v[q] - o));
-        reach[m] = far + 0.5 * h * ws.corner_speed[m == 0 ? a : b];
+        for (size_t t = 0; t < sets; ++t)
+            for (size_t q = 0; q < set(t, k).count; ++q) far = std::max(far, norm(set(t, k).v[q] - o) + set(t, k).radius);
+        reach[m] = far + 0.5 * h * ws.corner_speed[k];
     }
     double best = -INFINITY;
     const auto try_axes = [&](const Vec2& n0, Vec2 n1) {
@@ -210,13 +225,14 @@ double rotating_pair_gap(const Frame& f0, const Frame& f1, size_t a, size_t b, d
         // The angle between them (below pi/2) is at most its tangent.
         const double rate = std::abs(cross(n0, n1)) / dot(n0, n1) / h;
         double above = INFINITY, below = INFINITY;
-        for (size_t t = 0; t < 2; ++t) {
-            const Vec2& n = t == 0 ? n0 : n1;
+        for (size_t t = 0; t < sets; ++t) {
+            const Vec2& n = t < rot.per_end ? n0 : n1;
             double alo, ahi, blo, bhi;
-            project(*ends[t][0], n, alo, ahi);
-            project(*ends[t][1], n, blo, bhi);
-            above = std::min(above, blo - ahi);
-            below = std::min(below, alo - bhi);
+            project(set(t, a), n, alo, ahi);
+            project(set(t, b), n, blo, bhi);
+            const double radii = set(t, a).radius + set(t, b).radius;
+            above = std::min(above, blo - ahi - radii);
+            below = std::min(below, alo - bhi - radii);
         }
         double loss = 0.0;
         for (size_t m = 0; m < 2; ++m) {
@@ -225,14 +241,24 @@ double rotating_pair_gap(const Frame& f0, const Frame& f1, size_t a, size_t b, d
         }
         best = std::max(best, std::max(above, below) - loss);
     };
+    // A vector of end e's chain turned into the enclosures' frame.
+    Vec2 turn[2];
+    for (size_t e = 0; e < 2; ++e) turn[e] = rot.turn[e] == 0.0 ? Vec2{1.0, 0.0} : Vec2{math::cos(rot.turn[e]), math::sin(rot.turn[e])};
+    const auto turned = [&](const Vec2& v, size_t e) {
+        const double c = turn[e].x(), sn = turn[e].y();
+        return Vec2{c * v.x() + sn * v.y(), -sn * v.x() + c * v.y()};
+    };
+    const Frame& f0 = *rot.axes[0];
+    const Frame& f1 = *rot.axes[1];
     const Rect* boards[4] = {&f0.benches[a], &f0.benches[b], &f1.benches[a], &f1.benches[b]};
     for (size_t m = 0; m < 2 && best <= enough; ++m) {
-        try_axes(perp(boards[m]->axis), perp(boards[2 + m]->axis));
+        try_axes(turned(perp(boards[m]->axis), 0), turned(perp(boards[2 + m]->axis), 1));
         if (best > enough) break;
-        try_axes(boards[m]->axis, boards[2 + m]->axis);
+        try_axes(turned(boards[m]->axis, 0), turned(boards[2 + m]->axis, 1));
     }
     if (best <= enough)
-        try_axes(separation(f0.benches[a], f0.benches[b]).axis, separation(f1.benches[a], f1.benches[b]).axis);
+        try_axes(turned(separation(f0.benches[a], f0.benches[b]).axis, 0),
+                 turned(separation(f1.benches[a], f1.benches[b]).axis, 1));
     return best;
 }
 
@@ -241,9 +267,9 @@ double rotating_pair_gap(const Frame& f0, const Frame& f1, size_t a, size_t b, d
 // `turning`, or along one of the boards' edge normals in fa and fb (turned by each one's head
 // angle when `turned`), at every frame's enclosures; each farther apart than `apart_by`.
 // (`apart` proves a pair only apart, so it goes with apart_by = 0: kNotSeparately otherwise.)
-// With `rotating` (the second-order enclosures: two frames, the step's ends, `rotating->h` m of
-// head travel apart) each axis is a pair, one at each end, turning at a constant rate between
-// them: rotating_pair_gap().
+// With `rotating` (the second-order enclosures: `frames` sets, half at each of the step's two
+// ends) each axis is a pair, one at each end, turning at a constant rate between them:
+// rotating_pair_gap().
 template <class Turning, class Apart>
 StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Frame& fb, size_t frames, bool turned,
                               const Turning& turning, const Apart& apart, SweptWorkspace& ws, double apart_by = 0.0,
@@ -300,7 +326,7 @@ StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Fram
             const double radii = o.radius + s.radius;
             double proved = b >= a + 2 ? chain_gap(turning, spec, fa, a, b) : -INFINITY;
             if (!(proved > required) && rotating) {
-                proved = std::max(proved, rotating_pair_gap(fa, fb, a, b, rotating->h, ws, margin));
+                proved = std::max(proved, rotating_pair_gap(*rotating, nb, a, b, ws, margin));
             } else if (!(proved > required)) {
                 // The boards' edge normals in both frames (in the turned frame there). The
                 // normals first: the long sides face each other in most near pairs, and the
@@ -353,26 +379,19 @@ StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Fram
     return out;
 }
 
-// Each bench's enclosures at the step's two ends (ws.benches: nb at the start, nb at the end):
-// its four corners there, dilated by h^2 / 8 times the bound on the corner's second derivative in
-// head travel (ws.accel: each handle's; a corner c = cF F + cR R + j perp(F - R) has
-// |c''| <= hypot(cF, j) |F''| + hypot(cR, j) |R''|, and |c'| the same with the speeds). Every
-// corner then lies, at each moment of the step, within that radius of the point a fraction of
-// the way between its two end places that the moment is of the step: the bench within the
-// bounding box of both ends' corners grown by it (the broad phase), and rotating_pair_gap bounds
-// each pair near enough to look at.
-void enclose_second_order(const BenchSpec& spec, const Frame& f0, const Frame& f1, double h, SweptWorkspace& ws) {
-    const size_t nb = std::min(f0.benches.size(), f1.benches.size());
-    ws.benches.resize(2 * nb);
+// Each bench's bounds over its corners from its handles' (ws.accel, ws.speed): a corner
+// c = cF F + cR R + j perp(F - R) has |c''| <= hypot(cF, j) |F''| + hypot(cR, j) |R''|, and |c'|
+// the same with the speeds (ws.corner_accel, ws.corner_speed).
+void corner_bounds(const BenchSpec& spec, const Frame& f, size_t nb, SweptWorkspace& ws) {
     ws.corner_accel.resize(nb);
     ws.corner_speed.resize(nb);
     for (size_t k = 0; k < nb; ++k) {
         const double d = spec.link_length(static_cast<int>(k) + 1);
-        const Rect& r0 = f0.benches[k];
+        const Rect& r = f.benches[k];
         double worst = 0.0, fastest = 0.0;  // over the corners: |c''| and |c'|
         for (const double along : {-1.0, 1.0}) {
-            const double cF = 0.5 + along * r0.half_length / d, cR = 0.5 - along * r0.half_length / d;
-            const double j = r0.half_width / d;
+            const double cF = 0.5 + along * r.half_length / d, cR = 0.5 - along * r.half_length / d;
+            const double j = r.half_width / d;
             // (cF I + j perp) scales every vector by hypot(cF, j); sqrt is exact to rounding.
             const double front = std::sqrt(cF * cF + j * j), rear = std::sqrt(cR * cR + j * j);
             worst = std::max(worst, front * ws.accel[k] + rear * ws.accel[k + 1]);
@@ -380,7 +399,30 @@ void enclose_second_order(const BenchSpec& spec, const Frame& f0, const Frame& f
         }
         ws.corner_accel[k] = worst;
         ws.corner_speed[k] = fastest;
-        const double radius = 0.125 * h * h * worst;
+    }
+}
+
+// Grows each bench's enclosures' boxes (`sets` sets of nb) by h^2 / 8 times its corners' bound on
+// |c''|: every corner lies, at each moment of the step, within that of the point a fraction of
+// the way between its two end places that the moment is of the step, so the bench within the
+// box of both ends' enclosures grown by it (the broad phase; rotating_pair_gap bounds each pair
+// near enough to look at).
+void grow_boxes(size_t sets, size_t nb, double h, SweptWorkspace& ws) {
+    for (size_t t = 0; t < sets; ++t)
+        for (size_t k = 0; k < nb; ++k) {
+            SweptWorkspace::Swept& sw = ws.benches[t * nb + k];
+            const double by = 0.125 * h * h * ws.corner_accel[k];
+            sw.x0 -= by, sw.x1 += by, sw.y0 -= by, sw.y1 += by;
+        }
+}
+
+// Each bench's enclosures at the step's two ends (ws.benches: nb at the start, nb at the end):
+// its four corners there, exactly (ws.accel, ws.speed: each handle's bounds in head travel).
+void enclose_second_order(const BenchSpec& spec, const Frame& f0, const Frame& f1, double h, SweptWorkspace& ws) {
+    const size_t nb = std::min(f0.benches.size(), f1.benches.size());
+    ws.benches.resize(2 * nb);
+    corner_bounds(spec, f0, nb, ws);
+    for (size_t k = 0; k < nb; ++k)
         for (size_t t = 0; t < 2; ++t) {
             const Rect& r = (t == 0 ? f0 : f1).benches[k];
             SweptWorkspace::Swept& sw = ws.benches[t * nb + k];
@@ -389,10 +431,10 @@ void enclose_second_order(const BenchSpec& spec, const Frame& f0, const Frame& f
                 for (const double across : {-1.0, 1.0})
                     sw.v[q++] = r.centre + along * r.half_length * r.axis + across * r.half_width * perp(r.axis);
             sw.count = 4;
-            sw.radius = radius;
+            sw.radius = 0.0;
             set_box(sw);
         }
-    }
+    grow_boxes(2, nb, h, ws);
 }
 
 // A step where a handle may stop or back up, or a link turn by a quarter turn or more (the
@@ -508,7 +550,7 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
         if (!handle_accel_bounds(path, spec, f0, f1, ws.hull, ws.own, ws.accel, ws.speed)) return std::nullopt;
         const double h = std::abs(f1.head_arc - f0.head_arc);
         enclose_second_order(spec, f0, f1, h, ws);
-        const Rotating rotating{h};
+        const Rotating rotating{h, 1, {&f0, &f1}, {0.0, 0.0}};
         return separate_enclosures(spec, f0, f1, 2, false, turning, kNotSeparately, ws, apart_by, &rotating);
     };
     // The second order first: tried first on every step of the contest's Q2 it is as fast as
@@ -591,14 +633,15 @@ size_t spiral_cell_benches(const BenchSpec& spec, const std::vector<double>& the
     return watched;
 }
 
-StepProof prove_spiral_cell(const BenchSpec& spec, const Frame& fa, const Frame& fb, std::span<const SpiralCorner> corners,
-                            SweptWorkspace& ws) {
-    enclose_on_spiral(spec, fa, fb, corners, ws);
+namespace {
+
+// A cell's pairs apart (separate_enclosures on ws.benches' `sets` sets): fa and fb are the chains
+// with the least and the largest polar offsets, T_min and b_lo the least head angle and b.
+StepProof separate_cell(const BenchSpec& spec, const Frame& fa, const Frame& fb, double T_min, double b_lo, size_t sets,
+                        SweptWorkspace& ws, const Rotating* rotating = nullptr) {
     // The turning from handle `rear` to handle `front` anywhere in the cell: the polar span
     // between them, at most its value in fb (every link's span is largest there), plus the
     // change of atan(theta) over it, at most the span over 1 + theta^2 at the front's least theta.
-    double T_min = INFINITY, b_lo = INFINITY;
-    for (const SpiralCorner& c : corners) T_min = std::min(T_min, c.T), b_lo = std::min(b_lo, c.b);
     const double fa0 = fa.handles[0].place.u;
     const auto turning = [&](size_t rear, size_t front) {
         const double span = fb.handles[rear].place.u - fb.handles[front].place.u;
@@ -610,7 +653,44 @@ StepProof prove_spiral_cell(const BenchSpec& spec, const Frame& fa, const Frame&
         return offsets_apart(fa.handles[j].place.u - fa.handles[i + 1].place.u,
                              fb.handles[j + 1].place.u - fb.handles[i].place.u, ws.reach[i], ws.reach[j], pitch_lo);
     };
-    return separate_enclosures(spec, fa, fb, corners.size(), true, turning, apart, ws);
+    return separate_enclosures(spec, fa, fb, sets, true, turning, apart, ws, 0.0, rotating);
+}
+
+}  // namespace
+
+StepProof prove_spiral_cell(const BenchSpec& spec, const Frame& fa, const Frame& fb, std::span<const SpiralCorner> corners,
+                            SweptWorkspace& ws) {
+    enclose_on_spiral(spec, fa, fb, corners, ws);
+    double T_min = INFINITY, b_lo = INFINITY;
+    for (const SpiralCorner& c : corners) T_min = std::min(T_min, c.T), b_lo = std::min(b_lo, c.b);
+    return separate_cell(spec, fa, fb, T_min, b_lo, corners.size(), ws);
+}
+
+StepProof prove_spiral_cell_second_order(const BenchSpec& spec, const SpiralCell& cell, SweptWorkspace& ws) {
+    const Frame& least = cell.outer_hi;  // the least polar offsets: the largest head radius and b
+    const Frame& most = cell.inner_lo;   // the largest: the least of both
+    if (!shape_rate_bounds(least, most, cell.b_lo, cell.b_hi, ws.speed, ws.accel))
+        return {StepVerdict::not_monotone, -INFINITY, 0, 0};
+    const size_t nb = std::min({cell.inner_lo.benches.size(), cell.inner_hi.benches.size(), cell.outer_lo.benches.size(),
+                                cell.outer_hi.benches.size()});
+    corner_bounds(spec, least, nb, ws);
+    // Each end's enclosures over the range of b at its head radius (one set when the range is
+    // one pitch): for fixed offsets a handle's place (r0 + b D)(cos D, sin D) is linear in b, so
+    // a pair's gap along a fixed axis is concave in b, least at one of b's two ends.
+    const size_t per_end = cell.b_lo == cell.b_hi ? 1 : 2;
+    for (size_t e = 0; e < 2; ++e) {
+        const Frame& lo = e == 0 ? cell.inner_lo : cell.outer_lo;
+        const Frame& hi = e == 0 ? cell.inner_hi : cell.outer_hi;
+        const double r = e == 0 ? cell.r_lo : cell.r_hi;
+        const std::array<SpiralCorner, 2> corners{{{r / cell.b_hi, cell.b_hi}, {r / cell.b_lo, cell.b_lo}}};
+        enclose_on_spiral(spec, hi, lo, std::span(corners.data(), per_end), ws, e * per_end);
+    }
+    const double h = cell.r_hi - cell.r_lo;
+    grow_boxes(2 * per_end, nb, h, ws);
+    // The axes from the chains at b_hi, turned by their heads' angles into the head's frame.
+    const Rotating rotating{h, per_end, {&cell.inner_hi, &cell.outer_hi},
+                            {cell.inner_hi.handles[0].place.u, cell.outer_hi.handles[0].place.u}};
+    return separate_cell(spec, least, most, cell.r_lo / cell.b_hi, cell.b_lo, 2 * per_end, ws, &rotating);
 }
 
 }  // namespace dragon::contact

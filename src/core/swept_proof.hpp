@@ -144,4 +144,25 @@ size_t spiral_cell_benches(const BenchSpec& spec, const std::vector<double>& the
 StepProof prove_spiral_cell(const BenchSpec& spec, const Frame& fa, const Frame& fb, std::span<const SpiralCorner> corners,
                             SweptWorkspace& ws);
 
+// A cell of head radii [r_lo, r_hi] and b (pitch / 2 pi) in [b_lo, b_hi] on the plain spiral, by
+// the chains at its four corners (each holding the same leading benches: spiral_cell_benches,
+// called first for the cell, proves the rest apart). b_lo == b_hi is a range of one pitch: a
+// step of that dragon's motion.
+struct SpiralCell {
+    const Frame& inner_lo;  // at (r_lo, b_lo)
+    const Frame& inner_hi;  // at (r_lo, b_hi)
+    const Frame& outer_lo;  // at (r_hi, b_lo)
+    const Frame& outer_hi;  // at (r_hi, b_hi)
+    double r_lo, r_hi, b_lo, b_hi;
+};
+
+// prove_spiral_cell's proof at second order in the head's radius (docs/methods.md 8.1,
+// Proposition P6): at each of the two radii the benches are enclosed over the range of b as
+// there, and between them each corner lies within h^2 / 8 max|c''| of its chord in the frame
+// turned with the head (shape_rates.hpp bounds c'' there), so a pair is apart by its lesser end
+// gap along axes turning between the ends, less that (as in prove_step's second order). Its
+// looseness falls with the square of the radius step: right for the short steps near a grazing
+// pass, where the first order needs steps as short as the gap.
+StepProof prove_spiral_cell_second_order(const BenchSpec& spec, const SpiralCell& cell, SweptWorkspace& ws);
+
 }  // namespace dragon::contact
