@@ -283,7 +283,8 @@ struct MinPitchOptions {
     WorkProgress progress;         // hears of the first scan's runs, one call per run
     Executor* executor = nullptr;  // runs the pitches in parallel; null: the calling thread alone
     // Prove every pitch of the range feasible or colliding as its interval says (MinPitch::proof;
-    // dragon min-pitch --prove), not only the pitches run. Opt-in: it costs many times the search.
+    // dragon min-pitch --prove), not only the pitches run. Opt-in: it costs about as much again
+    // as the search (the contest: 126 ms against 61 ms on one thread).
     bool prove = false;
 };
 // The answer and any error are the same whatever the executor and its size (the pitches run

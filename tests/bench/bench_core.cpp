@@ -80,3 +80,12 @@ static void BM_Q3MinPitch(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(min_pitch(Scenario{}, 0.35, 0.55));
 }
 BENCHMARK(BM_Q3MinPitch)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// The same search with every pitch of the range proved (MinPitchOptions::prove), on the calling
+// thread alone as above.
+static void BM_Q3MinPitchProved(benchmark::State& state) {
+    MinPitchOptions o;
+    o.prove = true;
+    for (auto _ : state) benchmark::DoNotOptimize(min_pitch(Scenario{}, 0.35, 0.55, o));
+}
+BENCHMARK(BM_Q3MinPitchProved)->Unit(benchmark::kMillisecond)->Iterations(1);

@@ -278,6 +278,52 @@ TEST(PitchProof, ProvesTheContestsFeasibleIntervalUpToTheCut) {
     EXPECT_EQ(p.least_hi, m.pitch);
 }
 
+// Other dragons (random board widths, lengths and hole offsets): every proved interval agrees
+// with runs at pitches the search never ran, spread geometrically from each cut (where the proofs
+// are tightest) and at random inside.
+TEST(PitchProof, OtherDragonsProvedIntervalsAgreeWithRuns) {
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    ThreadPool pool(2);
+    int checked = 0;
+    for (int dragon = 0; dragon < 3; ++dragon) {
+        Scenario s;
+        s.bench.width = 0.22 + 0.12 * unit(rng);
+        s.bench.body_length = 1.9 + 0.5 * unit(rng);
+        s.bench.head_length = s.bench.body_length + 0.8 + 0.8 * unit(rng);
+        s.bench.hole_offset = 0.2 + 0.1 * unit(rng);
+        MinPitchOptions o = coarse_grid();
+        o.executor = &pool;
+        o.prove = true;
+        const MinPitch m = min_pitch(s, 0.35, 0.6, o);
+        ASSERT_TRUE(m.proof.has_value());
+        const PitchProof& p = *m.proof;
+        const auto collides_at = [&](double pitch) {
+            const BoundaryRun run = run_to_boundary(s, pitch);
+            return run.contact.has_value() || run.jam.has_value();
+        };
+        const auto check = [&](const std::vector<PitchInterval>& v, bool colliding) {
+            for (const PitchInterval& iv : v) {
+                std::vector<double> pitches{iv.lo, iv.hi};
+                for (double d = 1e-9; d < iv.hi - iv.lo; d *= 7.3) pitches.insert(pitches.end(), {iv.lo + d, iv.hi - d});
+                for (int k = 0; k < 4; ++k) pitches.push_back(iv.lo + (iv.hi - iv.lo) * unit(rng));
+                for (const double pitch : pitches) {
+                    EXPECT_EQ(collides_at(pitch), colliding)
+                        << "dragon " << dragon << " width " << s.bench.width << " pitch " << pitch << " in ["
+                        << iv.lo << ", " << iv.hi << "] proved " << (colliding ? "colliding" : "feasible");
+                    ++checked;
+                }
+            }
+        };
+        check(p.proved, false);
+        check(p.proved_colliding, true);
+        // The proofs reach their cuts: all but a few times the search's resolution is proved.
+        EXPECT_LT(total_width(p.unproved) + total_width(p.unproved_colliding), 10 * tol::pitch) << "dragon " << dragon;
+        EXPECT_FALSE(p.proved.empty() || p.proved_colliding.empty()) << "dragon " << dragon;
+    }
+    EXPECT_GT(checked, 100);
+}
+
 // A range claimed colliding that holds feasible pitches (the contest's cut inside it): no pitch
 // at or above the cut is proved colliding, and the pitches well below it are.
 TEST(PitchProof, NeverProvesFeasiblePitchesColliding) {
