@@ -47,7 +47,8 @@ struct ContestOptions {
     Executor* executor = nullptr;  // null: the calling thread alone
     // Every search proves its answer (dragon solve --prove): Q2's first contact and Q4's check
     // step by step (ContactSearchOptions::prove_steps), Q3's every pitch (MinPitchOptions::prove),
-    // Q5's largest speed (MaxSpeedOptions::prove). Opt-in: it costs many times the searches.
+    // Q5's largest speed (MaxSpeedOptions::prove). Opt-in: it about doubles the time of the
+    // searches (docs/performance.md).
     bool prove = false;
 
     bool asks(Question q) const;  // whether `questions` holds q

@@ -179,14 +179,24 @@ void enclose_on_spiral(const BenchSpec& spec, const Frame& fa, const Frame& fb, 
 
 // The second-order enclosures: two ends `h` apart (m of head travel, or of head radius in a
 // cell), each with `per_end` sets of enclosures (ws.benches' sets [e per_end, (e + 1) per_end)
-// are end e's), and the chains whose boards give each end's axes, turned by -turn[e] (the head's
-// angle in a turned frame; 0 in the fixed one) into the enclosures' frame.
+// are end e's), and the chains whose boards give each end's axes, turned into the enclosures'
+// frame by -angle, turn[e] = (cos, sin) of that angle (the head's in a turned frame; (1, 0) in
+// the fixed one).
 struct Rotating {
     double h;
     size_t per_end;
     const Frame* axes[2];
-    double turn[2];
+    Vec2 turn[2];
 };
+
+// (cos, sin) of an angle: how a frame turned by it is undone.
+Vec2 turn_of(double angle) { return {math::cos(angle), math::sin(angle)}; }
+
+// v, a vector of the fixed frame, in the frame turned by the angle whose (cos, sin) is `turn`.
+Vec2 turned_by(const Vec2& v, const Vec2& turn) {
+    const double c = turn.x(), sn = turn.y();
+    return Vec2{c * v.x() + sn * v.y(), -sn * v.x() + c * v.y()};
+}
 
 // A lower bound on the distance of benches a and b (0-based) at every moment of a step from
 // their enclosures at its two ends (`rot`; each set a bench's places at that end for one value
@@ -242,12 +252,7 @@ double rotating_pair_gap(const Rotating& rot, size_t nb, size_t a, size_t b, con
         best = std::max(best, std::max(above, below) - loss);
     };
     // A vector of end e's chain turned into the enclosures' frame.
-    Vec2 turn[2];
-    for (size_t e = 0; e < 2; ++e) turn[e] = rot.turn[e] == 0.0 ? Vec2{1.0, 0.0} : Vec2{math::cos(rot.turn[e]), math::sin(rot.turn[e])};
-    const auto turned = [&](const Vec2& v, size_t e) {
-        const double c = turn[e].x(), sn = turn[e].y();
-        return Vec2{c * v.x() + sn * v.y(), -sn * v.x() + c * v.y()};
-    };
+    const auto turned = [&](const Vec2& v, size_t e) { return turned_by(v, rot.turn[e]); };
     const Frame& f0 = *rot.axes[0];
     const Frame& f1 = *rot.axes[1];
     const Rect* boards[4] = {&f0.benches[a], &f0.benches[b], &f1.benches[a], &f1.benches[b]};
@@ -294,15 +299,9 @@ StepProof separate_enclosures(const BenchSpec& spec, const Frame& fa, const Fram
         ws.boxes[k] = {box.x0 - grow, box.x1 + grow, box.y0 - grow, box.y1 + grow, box.radius};
     }
     // The frames' axes into the turned one, each by its own head's -theta_0.
-    std::array<std::array<double, 2>, 2> turn{};
-    if (turned) {
-        const double head[2] = {fa.handles[0].place.u, fb.handles[0].place.u};
-        for (size_t e = 0; e < 2; ++e) turn[e] = {math::cos(head[e]), math::sin(head[e])};
-    }
-    const auto turn_back = [&](const Vec2& v, size_t e) {
-        const double c = turn[e][0], sn = turn[e][1];
-        return Vec2{c * v.x() + sn * v.y(), -sn * v.x() + c * v.y()};
-    };
+    Vec2 turn[2] = {Vec2{1.0, 0.0}, Vec2{1.0, 0.0}};
+    if (turned) turn[0] = turn_of(fa.handles[0].place.u), turn[1] = turn_of(fb.handles[0].place.u);
+    const auto turn_back = [&](const Vec2& v, size_t e) { return turned_by(v, turn[e]); };
     // Pairs whose boxes (grown by half the margin each) meet: sweep and prune along x. Every
     // other pair's boxes are more than `margin` apart in x or y, so are its benches.
     ws.order.resize(nb);
@@ -550,7 +549,7 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
         if (!handle_accel_bounds(path, spec, f0, f1, ws.hull, ws.own, ws.accel, ws.speed)) return std::nullopt;
         const double h = std::abs(f1.head_arc - f0.head_arc);
         enclose_second_order(spec, f0, f1, h, ws);
-        const Rotating rotating{h, 1, {&f0, &f1}, {0.0, 0.0}};
+        const Rotating rotating{h, 1, {&f0, &f1}, {Vec2{1.0, 0.0}, Vec2{1.0, 0.0}}};
         return separate_enclosures(spec, f0, f1, 2, false, turning, kNotSeparately, ws, apart_by, &rotating);
     };
     // The second order first: tried first on every step of the contest's Q2 it is as fast as
@@ -678,18 +677,34 @@ StepProof prove_spiral_cell_second_order(const BenchSpec& spec, const SpiralCell
     // one pitch): for fixed offsets a handle's place (r0 + b D)(cos D, sin D) is linear in b, so
     // a pair's gap along a fixed axis is concave in b, least at one of b's two ends.
     const size_t per_end = cell.b_lo == cell.b_hi ? 1 : 2;
+    const Vec2 turn[2] = {turn_of(cell.inner_hi.handles[0].place.u), turn_of(cell.outer_hi.handles[0].place.u)};
     for (size_t e = 0; e < 2; ++e) {
         const Frame& lo = e == 0 ? cell.inner_lo : cell.outer_lo;
         const Frame& hi = e == 0 ? cell.inner_hi : cell.outer_hi;
+        if (per_end == 1) {
+            // One pitch: each bench's four corners there, exactly, turned with the head.
+            ws.benches.resize((e + 1) * nb);
+            for (size_t k = 0; k < nb; ++k) {
+                const Rect& r = hi.benches[k];
+                SweptWorkspace::Swept& sw = ws.benches[e * nb + k];
+                size_t q = 0;
+                for (const double along : {-1.0, 1.0})
+                    for (const double across : {-1.0, 1.0})
+                        sw.v[q++] = turned_by(r.centre + along * r.half_length * r.axis + across * r.half_width * perp(r.axis), turn[e]);
+                sw.count = 4;
+                sw.radius = 0.0;
+                set_box(sw);
+            }
+            continue;
+        }
         const double r = e == 0 ? cell.r_lo : cell.r_hi;
         const std::array<SpiralCorner, 2> corners{{{r / cell.b_hi, cell.b_hi}, {r / cell.b_lo, cell.b_lo}}};
-        enclose_on_spiral(spec, hi, lo, std::span(corners.data(), per_end), ws, e * per_end);
+        enclose_on_spiral(spec, hi, lo, corners, ws, e * per_end);
     }
     const double h = cell.r_hi - cell.r_lo;
     grow_boxes(2 * per_end, nb, h, ws);
     // The axes from the chains at b_hi, turned by their heads' angles into the head's frame.
-    const Rotating rotating{h, per_end, {&cell.inner_hi, &cell.outer_hi},
-                            {cell.inner_hi.handles[0].place.u, cell.outer_hi.handles[0].place.u}};
+    const Rotating rotating{h, per_end, {&cell.inner_hi, &cell.outer_hi}, {turn[0], turn[1]}};
     return separate_cell(spec, least, most, cell.r_lo / cell.b_hi, cell.b_lo, 2 * per_end, ws, &rotating);
 }
 
