@@ -227,16 +227,19 @@ Witness deepest_between(const BenchSpec& spec, const Spiral& mid, double lo, dou
     return best;
 }
 
+// The head's radius at the start of the run at pitch p (m).
+double start_radius(const Scenario& s, double p) { return Spiral(p).b() * kTwoPi * s.path.start_turn; }
+
 // A witness for the pitch p without a run: the pairs overlapping most (by their separation) in
-// the whole chain at a few head radii from the boundary out to the start, the deepest of their
-// corners refined by deepest_between. Deep collisions last long: most pitches of a colliding
-// range show one at these radii; a grazing one is left to witness_from_run.
-std::optional<Witness> witness_from_scan(const Scenario& s, double p, Frame& f) {
+// the whole chain at a few head radii from the boundary out to `r_max` (at most p's start), the
+// deepest of their corners refined by deepest_between. Deep collisions last long: most pitches
+// of a colliding range show one at these radii; a grazing one is left to witness_from_run.
+std::optional<Witness> witness_from_scan(const Scenario& s, double p, double r_max, Frame& f) {
     const Spiral mid(p);
-    const double boundary = s.path.turn_radius, start = mid.b() * kTwoPi * s.path.start_turn;
+    const double boundary = s.path.turn_radius;
     std::optional<Witness> best;
     for (int k = 0; k < kScanRadii; ++k) {
-        const double r = boundary + (start - boundary) * k / kScanRadii;
+        const double r = boundary + (r_max - boundary) * k / kScanRadii;
         solve_chain_front(mid, s.bench, mid.arc({0, r / mid.b()}), 1.0, s.bench.handle_count(), f);
         const Clearance c = clearance(f);
         if (!(c.distance < 0.0)) continue;
@@ -244,34 +247,36 @@ std::optional<Witness> witness_from_scan(const Scenario& s, double p, Frame& f) 
         if (!best || w.depth > best->depth) best = w;
     }
     if (!best) return std::nullopt;
-    const double spacing = (start - boundary) / kScanRadii;
-    const Witness w = deepest_between(s.bench, mid, std::max(boundary, best->r - spacing), std::min(start, best->r + spacing),
+    const double spacing = (r_max - boundary) / kScanRadii;
+    const Witness w = deepest_between(s.bench, mid, std::max(boundary, best->r - spacing), std::min(r_max, best->r + spacing),
                                       std::min(best->inner, best->outer), std::max(best->inner, best->outer), f);
     return w.depth > best->depth ? w : *best;
 }
 
 // A witness for the pitch p from its run: its first contact's pair, at the radius (between the
-// contact and the boundary) where that pair's deepest corner is deepest.
-std::optional<Witness> witness_from_run(const Scenario& s, double p, Frame& f) {
+// contact, or r_max if nearer the boundary, and the boundary) where that pair's deepest corner
+// is deepest.
+std::optional<Witness> witness_from_run(const Scenario& s, double p, double r_max, Frame& f) {
     const BoundaryRun run = run_to_boundary(s, p);
     if (!run.contact) return std::nullopt;  // a jam (or no contact at all): nothing to take a witness from
     const size_t a = static_cast<size_t>(run.contact->bench_a - 1), b = static_cast<size_t>(run.contact->bench_b - 1);
-    Witness w = deepest_between(s.bench, Spiral(p), s.path.turn_radius, run.contact->head_radius, a, b, f);
+    Witness w = deepest_between(s.bench, Spiral(p), s.path.turn_radius, std::min(run.contact->head_radius, r_max), a, b, f);
     w.from_run = true;
     return w;
 }
 
 // Whether the witness's pair and radius prove a collision for every pitch of [p_lo, p_hi]
-// (pitch_proof.hpp's second part): at its radius r the pair's deepest corner at the range's
-// middle pitch lies inside the other bench deeper than the two benches can move as the pitch
-// does. Fills `found` with that corner at the middle pitch.
+// (pitch_proof.hpp's second part): at its radius r, on every pitch's run (between the boundary
+// and the start of p_lo's, the nearest in), the pair's deepest corner at the range's middle
+// pitch lies inside the other bench deeper than the two benches can move as the pitch does.
+// Fills `found` with that corner at the middle pitch.
 bool witness_holds(const Scenario& s, double p_lo, double p_hi, const Witness& w, Witness& found, Frame& f,
                    std::vector<double>& theta_a, std::vector<double>& theta_b) {
     const BenchSpec& spec = s.bench;
     const double p_mid = 0.5 * (p_lo + p_hi);
     const Spiral mid(p_mid);
     const double r = w.r;
-    if (!(r >= s.path.turn_radius)) return false;
+    if (!(r >= s.path.turn_radius) || !(r <= start_radius(s, p_lo))) return false;
     found = pair_at(spec, mid, r, std::min(w.inner, w.outer), std::max(w.inner, w.outer), f);
     if (!(found.depth > 0.0)) return false;
     // Every pitch of the range at that radius: each handle's polar offset D between its values at
@@ -322,6 +327,9 @@ void prove_colliding(const Scenario& s, double p_lo, double p_hi, PitchProof& ou
         todo.pop_back();
         ++out.pitch_ranges;
         const double mid = 0.5 * (range.lo + range.hi);
+        // m: a witness must lie on every pitch's run, so no farther out than the start of the
+        // range's least pitch's (whose head starts nearest in).
+        const double r_max = start_radius(s, range.lo);
         std::optional<Witness> seen;  // the deepest overlap seen at this range's middle pitch
         const auto holds = [&](const std::optional<Witness>& w) {
             if (!w) return false;
@@ -336,7 +344,7 @@ void prove_colliding(const Scenario& s, double p_lo, double p_hi, PitchProof& ou
         const auto refined = [&]() -> std::optional<Witness> {
             if (!seen) return std::nullopt;
             Witness w = deepest_between(s.bench, Spiral(mid), std::max(s.path.turn_radius, seen->r - kRefineRadius),
-                                        seen->r + kRefineRadius, std::min(seen->inner, seen->outer),
+                                        std::min(r_max, seen->r + kRefineRadius), std::min(seen->inner, seen->outer),
                                         std::max(seen->inner, seen->outer), f);
             w.from_run = seen->from_run;
             return w;
@@ -345,11 +353,11 @@ void prove_colliding(const Scenario& s, double p_lo, double p_hi, PitchProof& ou
         // pair (which a run here would find again: the ranges next to the cut).
         const auto from_run = [&]() -> std::optional<Witness> {
             if (seen && seen->from_run) return std::nullopt;
-            return witness_from_run(s, mid, f);
+            return witness_from_run(s, mid, r_max, f);
         };
         const auto from_scan = [&]() -> std::optional<Witness> {
             if (seen && seen->from_run) return std::nullopt;
-            return witness_from_scan(s, mid, f);
+            return witness_from_scan(s, mid, r_max, f);
         };
         if (holds(range.hint) || holds(refined()) || holds(from_scan()) || holds(from_run())) {
             out.proved_colliding.push_back({range.lo, range.hi, false});

@@ -43,10 +43,11 @@ inline constexpr double kPitchProofFinest = tol::pitch;
 // Proves the intervals of `intervals` (min_pitch's) each as it says, feasible or colliding, each
 // range of pitches on its own; the scenario's bench, start_turn and turn_radius are the runs'.
 // A colliding range is proved by a witness: at one head radius r at or outside the turning
-// space, a corner of one bench of the contact's pair lies inside the other at the range's middle
-// pitch deeper than both can move over the range (Proposition P2 at the fixed radius r bounds
-// every handle's polar offset between its values at the range's ends; each handle then moves at
-// most D |b - b_mid| + sqrt(b^2 + (r + b D)^2) |D - D_mid|, and a corner as its two handles do).
+// space and inside every pitch's start (so on every pitch's run), a corner of one bench of a
+// pair lies inside the other at the range's middle pitch deeper than both can move over the
+// range (Proposition P2 at the fixed radius r bounds every handle's polar offset between its
+// values at the range's ends; each handle then moves at most
+// D |b - b_mid| + sqrt(b^2 + (r + b D)^2) |D - D_mid|, and a corner as its two handles do).
 // Every pitch of the range then overlaps at r: it met its first contact before the boundary.
 // The witness (a pair and a radius) is looked for, cheapest first: the parent range's, that pair
 // again at the radius where it overlaps most at this range's middle pitch, the whole chain's
