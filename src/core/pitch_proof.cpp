@@ -255,9 +255,10 @@ std::optional<Witness> witness_from_scan(const Scenario& s, double p, double r_m
 
 // A witness for the pitch p from its run: its first contact's pair, at the radius (between the
 // contact, or r_max if nearer the boundary, and the boundary) where that pair's deepest corner
-// is deepest.
-std::optional<Witness> witness_from_run(const Scenario& s, double p, double r_max, Frame& f) {
+// is deepest; `clear` says whether the run met neither a contact nor a jam.
+std::optional<Witness> witness_from_run(const Scenario& s, double p, double r_max, Frame& f, bool& clear) {
     const BoundaryRun run = run_to_boundary(s, p);
+    clear = run.feasible();
     if (!run.contact) return std::nullopt;  // a jam (or no contact at all): nothing to take a witness from
     const size_t a = static_cast<size_t>(run.contact->bench_a - 1), b = static_cast<size_t>(run.contact->bench_b - 1);
     Witness w = deepest_between(s.bench, Spiral(p), s.path.turn_radius, std::min(run.contact->head_radius, r_max), a, b, f);
@@ -320,8 +321,9 @@ void prove_colliding(const Scenario& s, double p_lo, double p_hi, PitchProof& ou
     struct Todo {
         double lo, hi;
         std::optional<Witness> hint;  // the parent's deepest overlap
+        bool near_clear = false;      // the parent's middle pitch ran clear to the boundary
     };
-    std::vector<Todo> todo{{p_lo, p_hi, std::nullopt}};
+    std::vector<Todo> todo{{p_lo, p_hi, std::nullopt, false}};
     while (!todo.empty()) {
         const Todo range = todo.back();
         todo.pop_back();
@@ -331,6 +333,7 @@ void prove_colliding(const Scenario& s, double p_lo, double p_hi, PitchProof& ou
         // range's least pitch's (whose head starts nearest in).
         const double r_max = start_radius(s, range.lo);
         std::optional<Witness> seen;  // the deepest overlap seen at this range's middle pitch
+        bool clear = false;           // its run met no contact and no jam
         const auto holds = [&](const std::optional<Witness>& w) {
             if (!w) return false;
             Witness found;
@@ -353,10 +356,12 @@ void prove_colliding(const Scenario& s, double p_lo, double p_hi, PitchProof& ou
         // pair (which a run here would find again: the ranges next to the cut).
         const auto from_run = [&]() -> std::optional<Witness> {
             if (seen && seen->from_run) return std::nullopt;
-            return witness_from_run(s, mid, r_max, f);
+            return witness_from_run(s, mid, r_max, f, clear);
         };
+        // The scan, unless the parent's middle pitch ran clear (a range claimed colliding that
+        // holds feasible pitches: nothing overlaps near there, and the run decides).
         const auto from_scan = [&]() -> std::optional<Witness> {
-            if (seen && seen->from_run) return std::nullopt;
+            if ((seen && seen->from_run) || range.near_clear) return std::nullopt;
             return witness_from_scan(s, mid, r_max, f);
         };
         if (holds(range.hint) || holds(refined()) || holds(from_scan()) || holds(from_run())) {
@@ -368,8 +373,8 @@ void prove_colliding(const Scenario& s, double p_lo, double p_hi, PitchProof& ou
             out.unproved_colliding.push_back({range.lo, range.hi, false});
             continue;
         }
-        todo.push_back({mid, range.hi, seen});
-        todo.push_back({range.lo, mid, seen});
+        todo.push_back({mid, range.hi, seen, clear});
+        todo.push_back({range.lo, mid, seen, clear});
     }
 }
 

@@ -324,31 +324,34 @@ TEST(PitchProof, OtherDragonsProvedIntervalsAgreeWithRuns) {
     EXPECT_GT(checked, 100);
 }
 
-// A range claimed colliding that holds feasible pitches (the contest's cut inside it): no pitch
-// at or above the cut is proved colliding, and the pitches well below it are.
+// A range claimed colliding that holds feasible pitches (the contest's cut inside it, and half a
+// micrometre of feasible pitches above it, each halved down to tol::pitch with a run: the cost
+// grows with that width): no pitch at or above the cut is proved colliding, and the pitches well
+// below it are.
 TEST(PitchProof, NeverProvesFeasiblePitchesColliding) {
     const MinPitch m = min_pitch(Scenario{}, 0.44, 0.46, coarse_grid());
     const double cut = m.pitch;
     ASSERT_TRUE(std::isfinite(cut));
-    ASSERT_FALSE(collides(cut + 1e-6));
+    ASSERT_FALSE(collides(cut + 2.5e-7));
     ThreadPool pool(2);
-    const PitchProof p = prove_pitches(Scenario{}, {{0.448, cut + 2e-6, false}}, pool);
+    const PitchProof p = prove_pitches(Scenario{}, {{0.448, cut + 5e-7, false}}, pool);
     ASSERT_FALSE(p.proved_colliding.empty());
     for (const PitchInterval& iv : p.proved_colliding) EXPECT_LE(iv.hi, cut) << "proved a feasible pitch colliding";
     EXPECT_EQ(p.proved_colliding.front().lo, 0.448);
     EXPECT_GT(p.proved_colliding.back().hi, cut - 1e-5);
     EXPECT_FALSE(p.unproved_colliding.empty());
-    EXPECT_EQ(p.unproved_colliding.back().hi, cut + 2e-6);
+    EXPECT_EQ(p.unproved_colliding.back().hi, cut + 5e-7);
 }
 
 // A range claimed feasible that holds a collision window narrower than the grid (the pitches
-// just below the contest's cut, 3 micrometres of them, at its start): the proof leaves the
-// window unproved and proves no pitch that collides.
+// just below the contest's cut, a micrometre of them, at its start; each range there is halved
+// down to tol::pitch, so the cost grows with the width): the proof leaves the window unproved,
+// proves no pitch that collides, and proves the rest from within a few nanometres of the cut.
 TEST(PitchProof, NeverProvesAWindowOfCollisionInsideARangeClaimedFeasible) {
     const MinPitch m = min_pitch(Scenario{}, 0.44, 0.46, coarse_grid());
     const double cut = m.pitch;
     ASSERT_TRUE(std::isfinite(cut));
-    const double window_lo = cut - 3e-6;
+    const double window_lo = cut - 1e-6;
     ASSERT_TRUE(collides(window_lo));
     ASSERT_TRUE(collides(cut - 2e-9));
     ThreadPool pool(2);
@@ -360,5 +363,5 @@ TEST(PitchProof, NeverProvesAWindowOfCollisionInsideARangeClaimedFeasible) {
     EXPECT_GE(p.unproved.front().hi, cut - tol::pitch);
     // The rest of the range is proved.
     EXPECT_EQ(p.proved.back().hi, 0.452);
-    EXPECT_LT(p.proved.front().lo - cut, 1e-6);
+    EXPECT_LT(p.proved.front().lo - cut, 10 * tol::pitch);
 }
