@@ -415,24 +415,24 @@ void grow_boxes(size_t sets, size_t nb, double h, SweptWorkspace& ws) {
         }
 }
 
+// A board's enclosure at one moment: its four corners exactly (geometry.hpp's corners), turned
+// by the angle whose (cos, sin) is `turn` ((1, 0): the fixed frame).
+void exact_enclosure(const Rect& r, const Vec2& turn, SweptWorkspace::Swept& sw) {
+    const Corners c = corners(r);
+    for (size_t q = 0; q < 4; ++q) sw.v[q] = turned_by(c.p[q], turn);
+    sw.count = 4;
+    sw.radius = 0.0;
+    set_box(sw);
+}
+
 // Each bench's enclosures at the step's two ends (ws.benches: nb at the start, nb at the end):
 // its four corners there, exactly (ws.accel, ws.speed: each handle's bounds in head travel).
 void enclose_second_order(const BenchSpec& spec, const Frame& f0, const Frame& f1, double h, SweptWorkspace& ws) {
     const size_t nb = std::min(f0.benches.size(), f1.benches.size());
     ws.benches.resize(2 * nb);
     corner_bounds(spec, f0, nb, ws);
-    for (size_t k = 0; k < nb; ++k)
-        for (size_t t = 0; t < 2; ++t) {
-            const Rect& r = (t == 0 ? f0 : f1).benches[k];
-            SweptWorkspace::Swept& sw = ws.benches[t * nb + k];
-            size_t q = 0;
-            for (const double along : {-1.0, 1.0})
-                for (const double across : {-1.0, 1.0})
-                    sw.v[q++] = r.centre + along * r.half_length * r.axis + across * r.half_width * perp(r.axis);
-            sw.count = 4;
-            sw.radius = 0.0;
-            set_box(sw);
-        }
+    for (size_t t = 0; t < 2; ++t)
+        for (size_t k = 0; k < nb; ++k) exact_enclosure((t == 0 ? f0 : f1).benches[k], Vec2{1.0, 0.0}, ws.benches[t * nb + k]);
     grow_boxes(2, nb, h, ws);
 }
 
@@ -684,17 +684,7 @@ StepProof prove_spiral_cell_second_order(const BenchSpec& spec, const SpiralCell
         if (per_end == 1) {
             // One pitch: each bench's four corners there, exactly, turned with the head.
             ws.benches.resize((e + 1) * nb);
-            for (size_t k = 0; k < nb; ++k) {
-                const Rect& r = hi.benches[k];
-                SweptWorkspace::Swept& sw = ws.benches[e * nb + k];
-                size_t q = 0;
-                for (const double along : {-1.0, 1.0})
-                    for (const double across : {-1.0, 1.0})
-                        sw.v[q++] = turned_by(r.centre + along * r.half_length * r.axis + across * r.half_width * perp(r.axis), turn[e]);
-                sw.count = 4;
-                sw.radius = 0.0;
-                set_box(sw);
-            }
+            for (size_t k = 0; k < nb; ++k) exact_enclosure(hi.benches[k], turn[e], ws.benches[e * nb + k]);
             continue;
         }
         const double r = e == 0 ? cell.r_lo : cell.r_hi;
