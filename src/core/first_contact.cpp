@@ -63,6 +63,16 @@ constexpr double kFinalStep = 1e-3;
 // few centimetres are enclosed where the search's were not), but a link that turns by more
 // than the bounds allow at any length would halve for ever.
 constexpr double kLeastEnclosedStep = 1e-4;
+// How much longer than the last step the enclosures proved the next one tries (dimensionless).
+constexpr double kProofGrowth = 1.5;
+// A step past the rates' one is tried only when at least this many times as long (a failed
+// proof costs about as much as a proved one: reaching a little further does not pay).
+constexpr double kReachWorth = 2.0;
+// A proved step at least this many times as long as the rates' one shows reaching pays.
+constexpr double kReachPaid = 1.5;
+// After failing to prove steps past the rates' one, at most 2^this accepted steps are taken at
+// the rates' length before trying again (first_contact.cpp's search_stretch).
+constexpr int kMaxReachWaitLog2 = 4;
 
 double head_radius(const Frame& f) { return norm(f.handles.front().pos); }
 
@@ -151,12 +161,30 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
     memory.swap(seen);
     if (a.clear.distance <= 0.0) return x;
     std::swap(at, f);
+    // Which enclosures are tried first: the order that proved the last step.
+    bool first_order_first = false;
     const auto prove = [&](const Frame& end) {
-        return rules.prove ? prove_step(path, spec, at, end, ws.swept)
-                           : contact::StepProof{contact::StepVerdict::not_monotone, INFINITY, 0, 0};
+        if (!rules.prove) return contact::StepProof{contact::StepVerdict::not_monotone, INFINITY, 0, 0};
+        const contact::StepProof p = prove_step(path, spec, at, end, ws.swept, 0.0,
+                                                first_order_first ? contact::Enclosures::either_first_order_first
+                                                                  : contact::Enclosures::either);
+        if (p.verdict == contact::StepVerdict::proved) first_order_first = !p.second_order;
+        return p;
     };
     double retry_cap = INFINITY;  // m: after a broken curvature bound, retry shorter from x
     double proof_cap = INFINITY;  // m: the longest step the enclosures are expected to prove (halved when they fail)
+    // m: how far the enclosures are expected to reach past the rates' step (a proved step's
+    // length times kProofGrowth; 0 when the last step was not proved). A step the enclosures
+    // prove needs no rate bound, so where the benches are far apart it may be longer than the
+    // rates allow: on the turnaround's window, whose closest pair stays 0.28 m apart, the rates
+    // choose steps of about 0.15 m and the enclosures prove steps several times as long.
+    double proof_reach = 0.0;
+    // Where the rates' step is about all the enclosures prove (the contest's Q2 near its
+    // contact), reaching past it mostly fails: after each failure that falls back to the rates,
+    // reaching waits for twice as many accepted steps as after the last (up to kMaxReachWait),
+    // until a reach is proved.
+    int reach_misses = 0;  // failures in a row that fell back to the rates
+    int reach_wait = 0;    // accepted steps before reaching again
 
     while (x < x_to) {
         if (stop()) return std::nullopt;
@@ -173,15 +201,32 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
             if (touching(f, ws)) x_hi = probe;
         }
         if (std::isnan(x_hi)) {
-            const double next = std::min({x + a.safe_step, x + retry_cap, x + proof_cap, x_to});
+            const double rates_step = std::max(a.safe_step, rules.prove && reach_wait == 0 && proof_reach >= kReachPaid * a.safe_step ? proof_reach : 0.0);
+            const double next = std::min({x + rates_step, x + retry_cap, x + proof_cap, x_to});
             // Whether the enclosures' cap chose this step (not next - x >= proof_cap: the sum's
             // rounding can make that false for the step the cap set, and the cap then never grows).
-            const bool cap_chose = proof_cap <= std::min({a.safe_step, retry_cap, x_to - x});
+            const bool cap_chose = proof_cap <= std::min({rates_step, retry_cap, x_to - x});
+            // Whether the step goes past what the rates allow (it then stands on its proof alone):
+            // by the lengths compared, not next - x (whose rounding can exceed the rates' step).
+            const bool past_rates = std::min({rates_step, retry_cap, proof_cap, x_to - x}) > a.safe_step;
             if (next <= x) break;
             watched.frame_into(next, f);
             ++steps;
             // The proof first (a step it fails is taken again shorter, its bounds not needed).
             const contact::StepProof p = prove(f);
+            const bool proved = p.verdict == contact::StepVerdict::proved;
+            if (!proved && past_rates) {
+                // Longer than the rates allow and not proved: half as far (down to the rates'
+                // own step).
+                ++proof.subdivisions;
+                proof_reach = 0.5 * (next - x);
+                if (proof_reach < kReachPaid * a.safe_step) {
+                    proof_reach = 0.0;
+                    reach_wait = 2 << std::min(reach_misses, kMaxReachWaitLog2);
+                    ++reach_misses;
+                }
+                continue;
+            }
             const bool shorter_may = p.verdict == contact::StepVerdict::too_close ||
                                      (rules.prove && p.verdict == contact::StepVerdict::not_monotone &&
                                       next - x > kLeastEnclosedStep);
@@ -192,7 +237,8 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
                 continue;
             }
             const Approach b = approach(f, next, max_step, memory, seen, rules.check_ends, ws);
-            if (b.bound_broken && next - x > travel_tol) {
+            // A proved step stands on its proof: the rates' promises over it do not matter.
+            if (b.bound_broken && !proved && next - x > travel_tol) {
                 // The rates turned faster than the step assumed: back to x, with a larger
                 // curvature on record, and a shorter step.
                 retry_cap = 0.25 * (next - x);
@@ -208,7 +254,11 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
                 }
                 count_step(proof, p, x, next);
                 // A step as long as the last one the enclosures proved: try a little longer next.
-                if (p.verdict == contact::StepVerdict::proved && cap_chose) proof_cap *= 1.5;
+                if (proved && cap_chose) proof_cap *= kProofGrowth;
+                proof_reach = proved ? kReachWorth * (next - x) : 0.0;
+                // A reach that paid (well past the rates' step) ends the waiting.
+                if (proved && next - x >= kReachPaid * a.safe_step) reach_misses = 0;
+                if (reach_wait > 0) --reach_wait;
                 // One no length down to kLeastEnclosedStep could enclose rests on its rate bound:
                 // the next is as long as the rates allow, not crept along at that length.
                 if (p.verdict == contact::StepVerdict::not_monotone) proof_cap = INFINITY;

@@ -68,6 +68,7 @@ struct StepProof {
     // asked for when larger), when proved.
     double least_gap = INFINITY;
     int bench_a = 0, bench_b = 0;  // the pair that set least_gap (or first failed), 1..N
+    bool second_order = false;     // proved by the second-order enclosures (item 5 above)
 };
 
 // Scratch reused between proofs (one per search worker).
@@ -105,9 +106,11 @@ struct SweptWorkspace {
 };
 
 // Which enclosures prove a step that every handle moves forward over (swept_proof.cpp, item 3):
-// the first order (long steps), the second order (short steps near a contact), or either.
-// Tests choose one to check each on its own.
-enum class Enclosures { either, first_order, second_order };
+// the first order (long steps), the second order (short steps near a contact), or either, the
+// second order tried first or the first (the same verdict: a search tries first the one that
+// proved its last step, since a failed try costs about as much as a proof). Tests choose one to
+// check each on its own.
+enum class Enclosures { either, either_first_order_first, first_order, second_order };
 
 // Proves (or fails to prove) that no two non-adjacent benches of the chain touch at any head
 // travel between the frames f0 and f1 (f0 earlier, both of the same chain on `path`, the head

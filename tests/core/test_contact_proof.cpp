@@ -282,6 +282,38 @@ TEST(Q2Proof, TheRateAssumptionAloneMissesAGrazeTheProofDoesNot) {
     EXPECT_GT(c3->proof.subdivisions, 0);
 }
 
+// Where the benches stay far apart (the turnaround's window, closest 0.28 m) the enclosures prove
+// steps several times as long as the rates allow: the proved search takes far fewer steps than
+// the rates alone choose, and each of its steps, past the rates or not, is contact-free at dense
+// samples inside it.
+TEST(Q2Proof, StepsPastTheRatesStandOnTheirProof) {
+    Scenario sc;
+    sc.path.kind = PathKind::turnaround;
+    const Simulation sim(sc);
+    const Simulation unit = sim.at_speed(1.0);
+    int rate_steps = 0;
+    ContactSearchOptions rates;
+    rates.on_step = [&](double, double) { ++rate_steps; };
+    EXPECT_FALSE(first_contact_travel(sim, -100.0, 100.0, rates).has_value());
+    ContactProof proof;
+    ContactSearchOptions o = proved();
+    o.proof = &proof;
+    Frame f;
+    double covered = 0.0;
+    o.on_step = [&](double a, double b) {
+        covered += b - a;
+        for (int k = 1; k < 16; ++k) {
+            unit.frame_at_travel_into(a + (b - a) * k / 16.0, f);
+            ASSERT_GT(clearance(f).distance, 0.2) << a << " .. " << b;
+        }
+    };
+    EXPECT_FALSE(first_contact_travel(sim, -100.0, 100.0, o).has_value());
+    EXPECT_EQ(proof.unproved_steps, 0);
+    EXPECT_EQ(proof.proved_to, 100.0);
+    EXPECT_NEAR(covered, 200.0, 1e-9);
+    EXPECT_LT(2 * proof.proved_steps, rate_steps) << proof.proved_steps << " against " << rate_steps;
+}
+
 // Asked to prove its steps, the search also proves the valid motion they assume over its range:
 // on the turnaround, whose tight arcs the default walk leaves to its rates, every step of it.
 TEST(Q2Proof, TheValidMotionTheStepsAssumeIsProvedToo) {
