@@ -63,15 +63,18 @@ constexpr double kFinalStep = 1e-3;
 // few centimetres are enclosed where the search's were not), but a link that turns by more
 // than the bounds allow at any length would halve for ever.
 constexpr double kLeastEnclosedStep = 1e-4;
-// How much longer than the last step the enclosures proved the next one tries (dimensionless).
-constexpr double kProofGrowth = 1.5;
-// A step past the rates' one is tried only when at least this many times as long (a failed
-// proof costs about as much as a proved one: reaching a little further does not pay).
-constexpr double kReachWorth = 2.0;
-// A proved step at least this many times as long as the rates' one shows reaching pays.
+// How much the cap a failed proof set grows with each step proved at it (dimensionless). Where
+// the enclosures prove less than the rates' step (Q2's last 10 m) the cap holds the steps just
+// below what they prove: 1.5 failed every other step there; 1.1 takes as many steps with half
+// the failures (a sixth fewer instructions in the proved search at pitches 0.44 to 0.55 m).
+constexpr double kProofCapGrowth = 1.1;
+// Steps past the rates' one (search_stretch's proof_reach), all dimensionless: a reach tries
+// kReachGrowth times the last step proved; it is tried, and a proved one shows that reaching
+// pays, only when at least kReachPaid times the rates' step (a failed proof costs about as much
+// as a proved one: reaching a little further does not pay); after a reach that falls back to
+// the rates, 2, 4, ... up to 2^(kMaxReachWaitLog2 + 1) accepted steps wait before the next.
+constexpr double kReachGrowth = 2.0;
 constexpr double kReachPaid = 1.5;
-// After failing to prove steps past the rates' one, at most 2^this accepted steps are taken at
-// the rates' length before trying again (first_contact.cpp's search_stretch).
 constexpr int kMaxReachWaitLog2 = 4;
 
 double head_radius(const Frame& f) { return norm(f.handles.front().pos); }
@@ -174,15 +177,15 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
     double retry_cap = INFINITY;  // m: after a broken curvature bound, retry shorter from x
     double proof_cap = INFINITY;  // m: the longest step the enclosures are expected to prove (halved when they fail)
     // m: how far the enclosures are expected to reach past the rates' step (a proved step's
-    // length times kProofGrowth; 0 when the last step was not proved). A step the enclosures
+    // length times kReachGrowth; 0 when the last step was not proved). A step the enclosures
     // prove needs no rate bound, so where the benches are far apart it may be longer than the
     // rates allow: on the turnaround's window, whose closest pair stays 0.28 m apart, the rates
     // choose steps of about 0.15 m and the enclosures prove steps several times as long.
     double proof_reach = 0.0;
     // Where the rates' step is about all the enclosures prove (the contest's Q2 near its
     // contact), reaching past it mostly fails: after each failure that falls back to the rates,
-    // reaching waits for twice as many accepted steps as after the last (up to kMaxReachWait),
-    // until a reach is proved.
+    // reaching waits for twice as many accepted steps as after the last (up to
+    // 2^(kMaxReachWaitLog2 + 1)), until a reach pays.
     int reach_misses = 0;  // failures in a row that fell back to the rates
     int reach_wait = 0;    // accepted steps before reaching again
 
@@ -201,7 +204,8 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
             if (touching(f, ws)) x_hi = probe;
         }
         if (std::isnan(x_hi)) {
-            const double rates_step = std::max(a.safe_step, rules.prove && reach_wait == 0 && proof_reach >= kReachPaid * a.safe_step ? proof_reach : 0.0);
+            const bool reach = rules.prove && reach_wait == 0 && proof_reach >= kReachPaid * a.safe_step;
+            const double rates_step = std::max(a.safe_step, reach ? proof_reach : 0.0);
             const double next = std::min({x + rates_step, x + retry_cap, x + proof_cap, x_to});
             // Whether the enclosures' cap chose this step (not next - x >= proof_cap: the sum's
             // rounding can make that false for the step the cap set, and the cap then never grows).
@@ -254,8 +258,8 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
                 }
                 count_step(proof, p, x, next);
                 // A step as long as the last one the enclosures proved: try a little longer next.
-                if (proved && cap_chose) proof_cap *= kProofGrowth;
-                proof_reach = proved ? kReachWorth * (next - x) : 0.0;
+                if (proved && cap_chose) proof_cap *= kProofCapGrowth;
+                proof_reach = proved ? kReachGrowth * (next - x) : 0.0;
                 // A reach that paid (well past the rates' step) ends the waiting.
                 if (proved && next - x >= kReachPaid * a.safe_step) reach_misses = 0;
                 if (reach_wait > 0) --reach_wait;
