@@ -245,10 +245,11 @@ struct MaxSpeed {
 // Searches `window` of the turnaround run (the scenario's kind is taken as turnaround), in head
 // travel: everything but the times is the same at any head speed. Speeds are signed along the
 // path; the limit applies to their magnitude. Throws InputError for a limit that is not a finite
-// speed > 0, as cut_window does, and ("time range") for a window too long to scan. It runs on the
-// calling thread, and throws Cancelled when `executor` (if given) asks to stop.
+// speed > 0, as cut_window does, and ("time range") for a window too long to scan. Its scan (and,
+// with the proof, each stretch's bound) runs on `executor`'s workers, on the calling thread
+// without one; the answer is the same either way. Throws Cancelled when `executor` asks to stop.
 MaxSpeed max_head_speed(const Scenario& s, double limit, const RunWindow& window = kTurnaroundWindow,
-                        const Executor* executor = nullptr, const MaxSpeedOptions& options = {});
+                        Executor* executor = nullptr, const MaxSpeedOptions& options = {});
 
 // The largest handle speed (magnitude) over the head speed at one head arc position, and which handle.
 struct SpeedRatio {

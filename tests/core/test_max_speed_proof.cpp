@@ -9,6 +9,7 @@
 
 #include "core/speed_bound.hpp"
 #include "dragon/chain.hpp"
+#include "dragon/executor.hpp"
 #include "dragon/turnaround.hpp"
 
 using namespace dragon;
@@ -101,6 +102,32 @@ TEST(MaxSpeedProof, TheSearchWithoutTheProofFindsTheSameMaximum) {
     EXPECT_GE(proved.ratio, sampled.ratio);
     EXPECT_LE(sampled.ratio, proved.proof->ratio_hi);
     EXPECT_GE(sampled.ratio, proved.proof->ratio_lo - proved.proof->tolerance * proved.ratio);
+}
+
+// The scan and the stretches' bounds run on the executor's workers: the answer, its proof and
+// every count are the same, bit for bit, on one worker or several.
+TEST(MaxSpeedProof, TheAnswerIsTheSameOnAnyNumberOfWorkers) {
+    const Scenario sc = turnaround_scenario();
+    ThreadPool pool(3);
+    for (const bool prove : {false, true}) {
+        MaxSpeedOptions o;
+        o.prove = prove;
+        const MaxSpeed one = max_head_speed(sc, 2.0, kTurnaroundWindow, nullptr, o);
+        const MaxSpeed many = max_head_speed(sc, 2.0, kTurnaroundWindow, &pool, o);
+        EXPECT_EQ(one.ratio, many.ratio) << prove;
+        EXPECT_EQ(one.head_arc, many.head_arc) << prove;
+        EXPECT_EQ(one.tied, many.tied) << prove;
+        EXPECT_EQ(one.evaluations, many.evaluations) << prove;
+        EXPECT_EQ(one.candidates, many.candidates) << prove;
+        ASSERT_EQ(one.proof.has_value(), prove);
+        ASSERT_EQ(many.proof.has_value(), prove);
+        if (!prove) continue;
+        EXPECT_EQ(one.proof->ratio_lo, many.proof->ratio_lo);
+        EXPECT_EQ(one.proof->ratio_hi, many.proof->ratio_hi);
+        EXPECT_EQ(one.proof->stretches, many.proof->stretches);
+        EXPECT_EQ(one.proof->subdivisions, many.proof->subdivisions);
+        EXPECT_EQ(one.proof->narrowest, many.proof->narrowest);
+    }
 }
 
 TEST(MaxSpeedProof, EnclosesRandomScenariosMaxima) {
