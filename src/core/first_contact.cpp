@@ -12,7 +12,8 @@
 // over the step: an assumption, checked at the step's end (a broken bound sends the search back
 // with a shorter step), not a proof. With ContactSearchOptions::prove_steps each step is then
 // proved contact-free from the chain at its two ends (swept_proof.hpp), and one that is not is
-// taken again shorter: the rate bounds choose, the enclosures prove. Pairs within the broad
+// taken again shorter: the rate bounds choose, the enclosures prove (and where the benches stay
+// far apart a step may reach past the rates' one, standing on its proof alone). Pairs within the broad
 // phase's margin get their own rate bounds (and second-order ones near grazing passes, checked at
 // the next evaluation); pairs beyond it are bounded group by group (far_pairs_step); benches or
 // groups on different turns may instead take a bound from their radii about the centre, which
@@ -131,7 +132,8 @@ void count_step(ContactProof& proof, const contact::StepProof& p, double from, d
 // The rate bounds (approach()) choose each step's length, x to `next`; the step is accepted only
 // when prove_step() proves, from the chain at its two ends, that no two benches touch anywhere
 // in it. A step it cannot prove is taken again shorter (`proof_cap`): the rate bounds choose,
-// the enclosures prove. Where a link turns too far for the enclosures (not_monotone: near a
+// the enclosures prove. A proved step needs no rate bound, so after proved steps the next may
+// reach past the rates' step (`proof_reach`); one that is not proved falls back towards it. Where a link turns too far for the enclosures (not_monotone: near a
 // tight turnaround), the step rests on the rate bounds checked at its end, and is counted as
 // such. Near the contact the probe and the bisection locate it to tol::travel; the bracket they
 // used is not proved by them, so the range from the last proved step to just before the contact
