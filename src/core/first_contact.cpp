@@ -167,13 +167,11 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
     if (a.clear.distance <= 0.0) return x;
     std::swap(at, f);
     // Which enclosures are tried first: the order that proved the last step.
-    bool first_order_first = false;
+    contact::Enclosures order = contact::Enclosures::either;
     const auto prove = [&](const Frame& end) {
         if (!rules.prove) return contact::StepProof{contact::StepVerdict::not_monotone, INFINITY, 0, 0};
-        const contact::StepProof p = prove_step(path, spec, at, end, ws.swept, 0.0,
-                                                first_order_first ? contact::Enclosures::either_first_order_first
-                                                                  : contact::Enclosures::either);
-        if (p.verdict == contact::StepVerdict::proved) first_order_first = !p.second_order;
+        const contact::StepProof p = prove_step(path, spec, at, end, ws.swept, 0.0, order);
+        if (p.verdict == contact::StepVerdict::proved) order = contact::tried_first_after(p);
         return p;
     };
     double retry_cap = INFINITY;  // m: after a broken curvature bound, retry shorter from x
@@ -207,14 +205,14 @@ std::optional<double> search_stretch(const Simulation& sim, const Simulation& wa
         }
         if (std::isnan(x_hi)) {
             const bool reach = rules.prove && reach_wait == 0 && proof_reach >= kReachPaid * a.safe_step;
-            const double rates_step = std::max(a.safe_step, reach ? proof_reach : 0.0);
-            const double next = std::min({x + rates_step, x + retry_cap, x + proof_cap, x_to});
+            const double wanted = std::max(a.safe_step, reach ? proof_reach : 0.0);  // m: the rates' step, or the reach
+            const double next = std::min({x + wanted, x + retry_cap, x + proof_cap, x_to});
             // Whether the enclosures' cap chose this step (not next - x >= proof_cap: the sum's
             // rounding can make that false for the step the cap set, and the cap then never grows).
-            const bool cap_chose = proof_cap <= std::min({rates_step, retry_cap, x_to - x});
+            const bool cap_chose = proof_cap <= std::min({wanted, retry_cap, x_to - x});
             // Whether the step goes past what the rates allow (it then stands on its proof alone):
             // by the lengths compared, not next - x (whose rounding can exceed the rates' step).
-            const bool past_rates = std::min({rates_step, retry_cap, proof_cap, x_to - x}) > a.safe_step;
+            const bool past_rates = std::min({wanted, retry_cap, proof_cap, x_to - x}) > a.safe_step;
             if (next <= x) break;
             watched.frame_into(next, f);
             ++steps;

@@ -98,9 +98,8 @@ SpeedRatio speed_ratio_at(const Path& path, const BenchSpec& spec, double head_a
 
 MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow& window, Executor* executor,
                         const MaxSpeedOptions& options) {
-    const InlineExecutor stop(executor);
     InlineExecutor in_order(executor);
-    Executor& ex = executor_or(executor, in_order);
+    Executor& ex = executor_or(executor, in_order);  // the scan's workers, and whether to stop
     if (!std::isfinite(limit) || limit <= 0.0)
         throw InputError(Key::limit, error_value(limit), "it must be a finite speed > 0 m/s");
     Scenario s = scenario;
@@ -195,7 +194,7 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
             const bool down = k == steps || rho[i] >= rho[i + 1];
             if (refined[i] || !up || !down || rho[i] + reach < best_coarse) continue;
             refined[i] = true;
-            check_stop(stop);
+            check_stop(ex);
             ++out.candidates;
             const double a = s0 + std::max(0, k - 1) * ds, b = std::min(s1, s0 + std::min(steps, k + 1) * ds);
             const auto [at, r] = golden_max(probe, a, b);
@@ -238,7 +237,7 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
                 proof.unproved_travel += b - a;
                 return;
             }
-            if (proof.subdivisions % 256 == 0) check_stop(stop);
+            if (proof.subdivisions % 256 == 0) check_stop(ex);
             ++proof.subdivisions;
             const double m = 0.5 * (a + b);
             Frame mid;

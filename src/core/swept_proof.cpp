@@ -127,9 +127,6 @@ Vec2 turned_by(const Vec2& v, const Vec2& turn) {
 // angle, to rounding.
 Vec2 direction(const Frame& f, size_t i) { return f.handles[i].pos / norm(f.handles[i].pos); }
 
-// (cos, sin) of handle i's polar offset from the head, from their points.
-Vec2 offset_direction(const Frame& f, size_t i) { return turned_by(direction(f, i), direction(f, 0)); }
-
 // The product of two (cos, sin) pairs: that of the sum of their angles.
 Vec2 times(const Vec2& u, const Vec2& v) { return {u.x() * v.x() - u.y() * v.y(), u.x() * v.y() + u.y() * v.x()}; }
 
@@ -142,6 +139,7 @@ void enclose_on_spiral(const BenchSpec& spec, const Frame& fa, const Frame& fb, 
     const size_t nb = std::min(fa.benches.size(), fb.benches.size());
     ws.benches.resize((first + corners.size()) * nb);
     ws.directions.resize(6 * nb);
+    const Vec2 head_a = direction(fa, 0), head_b = direction(fb, 0);  // the heads' (cos, sin)
     for (size_t t = 0; t < corners.size(); ++t) {
         const double T = corners[t].T, b = corners[t].b;
         for (size_t k = 0; k < nb; ++k) {
@@ -166,9 +164,10 @@ void enclose_on_spiral(const BenchSpec& spec, const Frame& fa, const Frame& fb, 
                 // (cos, sin) of D and of D + alpha at the box's corners, from the handles' points
                 // (on the spiral each at its polar angle): no sine or cosine, whose argument
                 // reduction cost a tenth of Q2's proof.
-                const Vec2 D0 = offset_direction(fa, k), D1 = offset_direction(fb, k);
-                const Vec2 A0 = turned_by(direction(fa, k + 1), direction(fa, k));
-                const Vec2 A1 = turned_by(direction(fb, k + 1), direction(fb, k));
+                const Vec2 front_a = direction(fa, k), front_b = direction(fb, k);
+                const Vec2 D0 = turned_by(front_a, head_a), D1 = turned_by(front_b, head_b);
+                const Vec2 A0 = turned_by(direction(fa, k + 1), front_a);
+                const Vec2 A1 = turned_by(direction(fb, k + 1), front_b);
                 Vec2* w = e;
                 w[0] = d0 <= d1 ? D0 : D1;
                 w[1] = d0 <= d1 ? D1 : D0;

@@ -112,6 +112,11 @@ struct SweptWorkspace {
 // check each on its own.
 enum class Enclosures { either, either_first_order_first, first_order, second_order };
 
+// The enclosures a search tries first on the step after one `last` proved: the order that proved it.
+inline Enclosures tried_first_after(const StepProof& last) {
+    return last.second_order ? Enclosures::either : Enclosures::either_first_order_first;
+}
+
 // Proves (or fails to prove) that no two non-adjacent benches of the chain touch at any head
 // travel between the frames f0 and f1 (f0 earlier, both of the same chain on `path`, the head
 // moving forward from one to the other within the valid motion); with `apart_by` (m), that none

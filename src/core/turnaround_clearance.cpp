@@ -83,14 +83,13 @@ ClearanceProof prove_clearance(const Simulation& unit, double from, double to, d
     Frame f0, f1;
     unit.frame_at_travel_into(from, f0);
     double x = from, h = kFirstProofStep;
-    bool first_order_first = false;  // the enclosures that proved the last step are tried first
+    contact::Enclosures order = contact::Enclosures::either;  // the order that proved the last step first
     while (x < to) {
         check_stop(stop);
         const double y = std::min(to, x + h);
         unit.frame_at_travel_into(y, f1);
         const contact::StepProof p =
-            contact::prove_step(unit.path(), unit.scenario().bench, f0, f1, ws, lower,
-                                first_order_first ? contact::Enclosures::either_first_order_first : contact::Enclosures::either);
+            contact::prove_step(unit.path(), unit.scenario().bench, f0, f1, ws, lower, order);
         if (p.verdict != contact::StepVerdict::proved) {
             ++out.subdivisions;
             h = 0.5 * (y - x);
@@ -98,7 +97,7 @@ ClearanceProof prove_clearance(const Simulation& unit, double from, double to, d
             continue;
         }
         ++out.steps;
-        first_order_first = !p.second_order;
+        order = contact::tried_first_after(p);
         x = y;
         std::swap(f0, f1);
         h *= 1.5;
