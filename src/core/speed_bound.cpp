@@ -149,6 +149,29 @@ Reach reach_between(const Path& path, double lo, double hi, double s0, double s1
     return r;
 }
 
+// dimensionless: the longest link behind a handle, over the handle's least radius, for which
+// Lemma C holds: 2 asin(0.38) = 0.78 rad of polar angle, at most twice that of turning (theta +
+// atan(theta) grows at most twice as fast as theta), 1.559 rad, below pi/2. (The exact limit is
+// 2 sin(pi/8) = 0.765; the margin is far above the rounding of rho = b theta.)
+constexpr double kCalmChord = 0.76;
+
+// Lemma C: whether no handle behind handle j (its speed within v over the stretch, at head
+// speed 1) can move faster than it, anywhere in the stretch. Handle j moves forward all the
+// way (v above 0), so it stays at or behind its place at the stretch's end, c1's; if that lies
+// on a spiral coiling in, every handle behind j lies on it too, at least as far out as j, whose
+// least radius over the stretch is b theta there.
+bool calm_behind(const Path& path, const BenchSpec& spec, const ChainFacts& c1, size_t j, Iv v) {
+    if (!(v.lo > 0.0)) return false;
+    const Place& end = c1.place[j];
+    const double b = path.coil_in_b(end);
+    if (!(b > 0.0)) return false;
+    const double rho = b * end.u;  // m
+    if (j + 1 >= c1.place.size()) return true;  // the tail's rear handle: none behind
+    // m: the longest link behind handle j (the head's, from handle 0; a body's after it).
+    const double longest = std::max(spec.link_after(static_cast<int>(j)), spec.link_after(static_cast<int>(c1.place.size()) - 2));
+    return longest <= kCalmChord * rho;
+}
+
 }  // namespace
 
 StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainFacts& c0, const ChainFacts& c1,
@@ -181,6 +204,8 @@ StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainF
         front.from_start = front.from_end = moved;
     }
     if (arcs) arcs->push_back({front.lo, front.hi, front.turning});
+    // Without `arcs` (which wants every handle's), the bound stops at a calm tail (Lemma C).
+    if (!arcs && calm_behind(path, spec, c1, 0, v)) return out;
     for (size_t i = 0; i + 1 < n; ++i) {
         const double d = spec.link_after(static_cast<int>(i));
         const double ca0 = c0.cos_a[i], sa0 = c0.sin_a[i], cb0 = c0.cos_b[i], sb0 = c0.sin_b[i];
@@ -288,6 +313,7 @@ StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainF
             out.handle = static_cast<int>(i + 1);
         }
         v = speed_now;
+        if (!arcs && calm_behind(path, spec, c1, i + 1, v)) return out;
         rear.forward = forward;
         if (arcs) arcs->push_back({rear.lo, rear.hi, rear.turning});
         front = rear;

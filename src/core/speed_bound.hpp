@@ -26,6 +26,13 @@
 // 4. Each speed is Lipschitz (piecewise C1: its derivative jumps only where a handle crosses a
 //    join, and the curvature's enclosure takes both sides), so on [x0, x1], h = x1 - x0:
 //       max |v_i| <= (|v_i(x0) + v_i(x1)| + L_i h) / 2.
+// 5. A calm tail (Lemma C). Where a handle moves forward over the whole stretch and ends it on a
+//    spiral coiling in (Path::coil_in_b), every handle behind it stays on that spiral, at least
+//    as far out. Each link there turns by less than pi/2 (a chord d <= 0.76 rho at radius >= rho
+//    spans at most 2 asin(0.38) of polar angle, and the spiral turns by at most twice its polar
+//    angle), and its rear end, where the curvature is the smaller, makes the smaller angle with
+//    the link: beta <= alpha, so 0 < v_{i+1} = v_i cos alpha / cos beta <= v_i at every moment.
+//    No handle behind it then outruns its bound, and the bound stops there (without `arcs`).
 #pragma once
 
 #include <vector>

@@ -207,3 +207,69 @@ TEST(MaxSpeedProof, AStretchsBoundHoldsInsideIt) {
     }
     EXPECT_GE(bounded, 30);
 }
+
+// Lemma C (speed_bound.hpp, item 5): behind a handle that ends a stretch on a spiral coiling in,
+// at a radius rho of at least 1 / 0.76 times every link behind it, no handle moves faster than
+// its front neighbour. Checked on the exact speeds of whole chains, on the plain spiral and on
+// the turnaround's way in, at pitches down to where the spiral's inner turns are too tight.
+TEST(MaxSpeedProof, NoHandleOutrunsItsFrontBehindACalmHandle) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> pitch(0.3, 2.2), share(0.0, 1.0);
+    int checked = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        Scenario sc;
+        sc.path.pitch = pitch(rng);
+        if (trial % 2 == 1) sc = turnaround_scenario(1.2 + 1.8 * share(rng), 1.6 + 0.6 * share(rng));
+        const Simulation sim(sc);
+        const ValidRange range = sim.valid_range();
+        const double lo = std::max(range.from, -300.0), hi = std::min(range.to, 400.0);
+        const double t = lo + share(rng) * (hi - lo);
+        const Frame f = sim.frame(t);
+        const Path& path = sim.path();
+        for (size_t j = 0; j + 1 < f.handles.size(); ++j) {
+            const double b = path.coil_in_b(f.handles[j].place);
+            const double longest = std::max(sc.bench.link_after(static_cast<int>(j)), sc.bench.link_length(2));
+            if (!(b > 0.0 && f.handles[j].speed > 0.0 && longest <= 0.76 * b * f.handles[j].place.u)) continue;
+            for (size_t i = j; i + 1 < f.handles.size(); ++i) {
+                ASSERT_GT(f.handles[i + 1].speed, 0.0) << "handle " << i + 1 << ", trial " << trial;
+                ASSERT_LE(f.handles[i + 1].speed, f.handles[i].speed * (1.0 + 1e-12)) << "handle " << i + 1 << ", trial " << trial;
+            }
+            ++checked;
+            break;
+        }
+    }
+    EXPECT_GE(checked, 30);
+}
+
+// The bound stops at a calm tail when not asked for every handle's arc: no higher than the
+// whole chain's bound (the same links up to there), and still above every speed inside the
+// stretch (dense samples of every handle); before the turn, where the whole chain coils in,
+// it is the head's speed exactly.
+TEST(MaxSpeedProof, ACalmTailStopsTheBoundAndLosesNothing) {
+    const Scenario sc = turnaround_scenario();
+    const TurnaroundPath path(design_s_curve(sc));
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> where(-100.0, 99.5), width(0.02, 0.3);
+    Frame f0, f1;
+    speed::ChainFacts c0, c1;
+    std::vector<speed::HandleArc> arcs;
+    int before_turn = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const double a = where(rng), b = a + width(rng);
+        solve_chain(path, sc.bench, a, 1.0, f0);
+        solve_chain(path, sc.bench, b, 1.0, f1);
+        speed::gather(path, f0, c0);
+        speed::gather(path, f1, c1);
+        const speed::StretchBound calm = speed::bound_stretch(path, sc.bench, c0, c1);
+        const speed::StretchBound whole = speed::bound_stretch(path, sc.bench, c0, c1, &arcs);
+        if (whole.verdict != speed::BoundVerdict::bounded) continue;
+        ASSERT_EQ(calm.verdict, speed::BoundVerdict::bounded);
+        EXPECT_LE(calm.upper, whole.upper) << "on [" << a << ", " << b << "]";
+        EXPECT_LE(dense_max(path, sc.bench, a, b, (b - a) / 100.0), calm.upper) << "on [" << a << ", " << b << "]";
+        if (f1.handles[0].place.piece == 0) {
+            ++before_turn;
+            EXPECT_EQ(calm.upper, 1.0) << "on [" << a << ", " << b << "]";
+        }
+    }
+    EXPECT_GE(before_turn, 10);
+}
