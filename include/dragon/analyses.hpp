@@ -119,7 +119,8 @@ struct ContactSearchOptions {
     // bounds (without looking inside), in order; the search then runs on the calling thread.
     StepObserver on_step;
     Executor* executor = nullptr;  // null: the calling thread alone
-    // On the plain spiral, leave out of each stretch's search the benches proved unable to touch
+    // While the chain coils in along one spiral (the plain spiral; the turnaround before its
+    // turn), leave out of each stretch's search the benches proved unable to touch
     // anything over it (their turn of the spiral stays clear of the next); false watches every
     // bench, for checking that proof.
     bool skip_untouched_tail = true;

@@ -51,6 +51,8 @@ struct Located {
 
 // A path the head follows: pieces joined end to end, each with its own parameter u, measured
 // by arc position s (m) in the direction of travel.
+class Spiral;
+
 class Path {
 public:
     virtual ~Path() = default;
@@ -87,10 +89,11 @@ public:
     // The nearest place behind `from` (largest s' < s(from)) whose straight-line distance
     // from from.pos is exactly `chord`; nullopt when the path ends first.
     virtual std::optional<Located> behind(const Located& from, double chord) const = 0;
-    // b (m/rad) when p and every place behind it lie on the spiral r = b theta about the origin,
-    // travelled inward with u = theta (the plain spiral; the turnaround's coil-in piece): there
-    // the path's curvature keeps one sign and its magnitude falls going back. 0 elsewhere.
-    virtual double coil_in_b(Place) const { return 0.0; }
+    // The spiral r = b theta about the origin, travelled inward with u = theta, on which p and
+    // every place behind it lie (the plain spiral itself; the turnaround's coil-in piece), or
+    // null: there a chain behind p moves as on the plain spiral, and the path's curvature keeps
+    // one sign, its magnitude falling going back.
+    virtual const Spiral* coil_in_spiral(Place) const { return nullptr; }
 };
 
 // The Archimedean spiral r = b theta, b = pitch / 2pi, travelled inward (clockwise, theta
@@ -116,7 +119,7 @@ public:
     std::pair<double, double> piece_span(int) const override { return {INFINITY, 0.0}; }
     std::pair<double, double> curvature_span(int) const override { return {0.0, 2.0 / b_}; }
     std::optional<Located> behind(const Located& from, double chord) const override;
-    double coil_in_b(Place) const override { return b_; }
+    const Spiral* coil_in_spiral(Place) const override { return this; }
 
     // Curvature magnitude at theta, and the theta where it equals k (it falls as theta grows:
     // 2 / b at the centre, about 1 / (b theta) far out); 0 when k >= 2 / b.

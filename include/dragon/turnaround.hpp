@@ -78,7 +78,7 @@ public:
     std::pair<double, double> piece_span(int piece) const override { return piece_range(piece); }
     std::pair<double, double> curvature_span(int piece) const override;
     std::optional<Located> behind(const Located& from, double chord) const override;
-    double coil_in_b(Place p) const override { return p.piece == 0 ? coil_in_.b() : 0.0; }
+    const Spiral* coil_in_spiral(Place p) const override { return p.piece == 0 ? &coil_in_ : nullptr; }
 
 private:
     std::optional<Located> behind_on_arc(int piece, const Located& from, double chord) const;

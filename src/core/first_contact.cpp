@@ -348,6 +348,7 @@ public:
         });
         return angles_[k];
     }
+    double travel(size_t k) const { return edge_[k]; }  // m: edge k's head travel
 
 private:
     const Simulation& unit_;
@@ -356,11 +357,16 @@ private:
     std::vector<std::once_flag> made_;
 };
 
-// The benches a search over stretch k of `unit` (the motion at 1 m/s) must watch: on the plain
-// spiral only the leading ones that may touch (core/untouched_tail.hpp), elsewhere all of them.
+// The benches a search over stretch k of `unit` (the motion at 1 m/s) must watch: while the
+// whole chain coils in along one spiral (the plain spiral; the turnaround's way in, before the
+// head reaches the turn) only the leading ones that may touch (core/untouched_tail.hpp),
+// elsewhere all of them. The head's place at the stretch's end tells: every place behind it
+// lies on that spiral too.
 Simulation watched_over(const Simulation& unit, EdgeAngles& edges, size_t k, bool skip_untouched_tail, Frame& scratch) {
-    const auto* spiral = dynamic_cast<const Spiral*>(&unit.path());
-    if (!spiral || !skip_untouched_tail) return unit;
+    if (!skip_untouched_tail) return unit;
+    const Path& path = unit.path();
+    const Spiral* spiral = path.coil_in_spiral(path.at_arc(unit.head_arc(edges.travel(k + 1))).place);
+    if (!spiral) return unit;
     const ChainAngles& first = edges.at(k, scratch);
     const ChainAngles& last = edges.at(k + 1, scratch);
     return unit.leading(benches_that_may_touch(*spiral, unit.scenario().bench, first, last));

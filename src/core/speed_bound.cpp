@@ -163,9 +163,9 @@ constexpr double kCalmChord = 0.76;
 bool calm_behind(const Path& path, const BenchSpec& spec, const ChainFacts& c1, size_t j, Iv v) {
     if (!(v.lo > 0.0)) return false;
     const Place& end = c1.place[j];
-    const double b = path.coil_in_b(end);
-    if (!(b > 0.0)) return false;
-    const double rho = b * end.u;  // m
+    const Spiral* spiral = path.coil_in_spiral(end);
+    if (!spiral) return false;
+    const double rho = spiral->b() * end.u;  // m
     if (j + 1 >= c1.place.size()) return true;  // the tail's rear handle: none behind
     // m: the longest link behind handle j (the head's, from handle 0; a body's after it).
     const double longest = std::max(spec.link_after(static_cast<int>(j)), spec.link_after(static_cast<int>(c1.place.size()) - 2));

@@ -27,7 +27,7 @@
 //    join, and the curvature's enclosure takes both sides), so on [x0, x1], h = x1 - x0:
 //       max |v_i| <= (|v_i(x0) + v_i(x1)| + L_i h) / 2.
 // 5. A calm tail (Lemma C). Where a handle moves forward over the whole stretch and ends it on a
-//    spiral coiling in (Path::coil_in_b), every handle behind it stays on that spiral, at least
+//    spiral coiling in (Path::coil_in_spiral), every handle behind it stays on that spiral, at least
 //    as far out. Each link there turns by less than pi/2 (a chord d <= 0.76 rho at radius >= rho
 //    spans at most 2 asin(0.38) of polar angle, and the spiral turns by at most twice its polar
 //    angle), and its rear end, where the curvature is the smaller, makes the smaller angle with

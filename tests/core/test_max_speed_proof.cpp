@@ -227,9 +227,9 @@ TEST(MaxSpeedProof, NoHandleOutrunsItsFrontBehindACalmHandle) {
         const Frame f = sim.frame(t);
         const Path& path = sim.path();
         for (size_t j = 0; j + 1 < f.handles.size(); ++j) {
-            const double b = path.coil_in_b(f.handles[j].place);
+            const Spiral* spiral = path.coil_in_spiral(f.handles[j].place);
             const double longest = std::max(sc.bench.link_after(static_cast<int>(j)), sc.bench.link_length(2));
-            if (!(b > 0.0 && f.handles[j].speed > 0.0 && longest <= 0.76 * b * f.handles[j].place.u)) continue;
+            if (!(spiral && f.handles[j].speed > 0.0 && longest <= 0.76 * spiral->b() * f.handles[j].place.u)) continue;
             for (size_t i = j; i + 1 < f.handles.size(); ++i) {
                 ASSERT_GT(f.handles[i + 1].speed, 0.0) << "handle " << i + 1 << ", trial " << trial;
                 ASSERT_LE(f.handles[i + 1].speed, f.handles[i].speed * (1.0 + 1e-12)) << "handle " << i + 1 << ", trial " << trial;

@@ -413,3 +413,35 @@ TEST(UntouchedTail, LeadingBenchesAreTheWholeChainsFirstOnes) {
     EXPECT_EQ(lead.valid_end(), sim.valid_end());
     EXPECT_THROW(lead.frame(sim.valid_end() + 1.0), InputError);
 }
+
+// On the turnaround's way in, before the head reaches the turn, the whole chain coils in along
+// the coil-in spiral as on the plain spiral (Path::coil_in_spiral): the search leaves out the
+// tail there, and finds what watching every bench finds. At turn pitches below the contest's
+// minimum pitch the dragon touches on the way in; at 1.7 m it does not, nor later in the window.
+TEST(UntouchedTail, TheTurnaroundsWayInLeavesOutTheTail) {
+    Scenario turn;
+    turn.path.kind = PathKind::turnaround;
+    const Simulation tsim(turn);
+    const Spiral* coil = tsim.path().coil_in_spiral(tsim.frame(-20.0).handles[0].place);
+    ASSERT_NE(coil, nullptr);
+    EXPECT_LT(benches_that_may_touch(*coil, turn.bench, tsim.frame(-20.0), tsim.frame(-10.0)), 10);
+    EXPECT_EQ(tsim.path().coil_in_spiral(tsim.frame(5.0).handles[0].place), nullptr);  // the head in the turn
+    int contacts = 0;
+    for (const double pitch : {0.42, 0.44, 1.7}) {
+        Scenario s = turn;
+        s.path.turn_pitch = pitch;
+        const Simulation sim(s);
+        const double from = sim.valid_range().from_travel;
+        const double lo = std::max(from, -150.0), hi = std::min(sim.valid_range().to_travel, 100.0);
+        const auto quick = first_contact_travel(sim, lo, hi);
+        const auto every = first_contact_travel(sim, lo, hi, watch_every_bench());
+        ASSERT_EQ(quick.has_value(), every.has_value()) << "turn pitch " << pitch;
+        if (!quick) continue;
+        ++contacts;
+        EXPECT_EQ(quick->bench_a, every->bench_a) << "turn pitch " << pitch;
+        EXPECT_EQ(quick->bench_b, every->bench_b) << "turn pitch " << pitch;
+        EXPECT_NEAR(quick->travel, every->travel, 2.0 * std::max(quick->travel_tolerance, every->travel_tolerance));
+        EXPECT_LT(quick->travel, 0.0) << "turn pitch " << pitch;  // on the way in
+    }
+    EXPECT_EQ(contacts, 2);
+}
