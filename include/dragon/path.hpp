@@ -49,10 +49,10 @@ struct Located {
     ChordMemo memo{};             // what the chord solver learned placing it (empty but on a spiral)
 };
 
-// A path the head follows: pieces joined end to end, each with its own parameter u, measured
-// by arc position s (m) in the direction of travel.
 class Spiral;
 
+// A path the head follows: pieces joined end to end, each with its own parameter u, measured
+// by arc position s (m) in the direction of travel.
 class Path {
 public:
     virtual ~Path() = default;
