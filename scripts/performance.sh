@@ -76,6 +76,7 @@ answers without it are the same searches, whose steps rest on their rates checke
 | Q2 first contact (benchmark) | $(bm BM_Q2FirstContact ms) | $(bm BM_Q2FirstContactProved ms) | \`$bench --benchmark_filter=BM_Q2FirstContact\` |
 | The valid motion of the contest's spiral (benchmark) | $(bm BM_ValidRange ms) | $(bm BM_ValidRangeProved ms) | \`$bench --benchmark_filter=BM_ValidRange\` |
 | Q3 minimum pitch, one thread (benchmark) | $(bm BM_Q3MinPitch ms) | $(bm BM_Q3MinPitchProved ms) | \`$bench --benchmark_filter=BM_Q3MinPitch\` |
+| Q5 speed limit, one thread (benchmark) | $(bm BM_TurnaroundMaxSpeed ms) | $(bm BM_TurnaroundMaxSpeedProved ms) | \`$bench --benchmark_filter=BM_TurnaroundMaxSpeed\` |
 | \`dragon collide\` | $(wall $dragon collide) s | $(wall $dragon collide --prove) s | \`time $dragon collide [--prove]\` |
 | \`dragon turnaround\` | $(wall $dragon turnaround -q) s | $(wall $dragon turnaround -q --prove) s | \`time $dragon turnaround [--prove]\` |
 | \`dragon min-pitch\` | $(wall $dragon min-pitch) s | $(wall $dragon min-pitch --prove) s | \`time $dragon min-pitch [--prove]\` |

@@ -211,8 +211,8 @@ struct MaxSpeedProof {
 // How max_head_speed searches: the coarse scan's density, and whether to prove the maximum.
 struct MaxSpeedOptions {
     // Bound the maximum over the whole window (MaxSpeed::proof; dragon max-speed --prove). Opt-in
-    // as the first contact's proof is: it costs about twice the search on two cores (its bounds
-    // run on the executor's workers with the scan).
+    // as the first contact's proof is: it costs a few times the search's CPU (docs/performance.md;
+    // its bounds run on the executor's workers with the scan).
     bool prove = false;
     double samples_per_link = 32.0;  // coarse scan samples per shortest link length (tests make it coarse)
 };

@@ -594,7 +594,7 @@ def max_speed(scenario: Optional[Scenario] = None, *, limit: float = 2.0, from_:
     `workers`: threads the search runs on (0: one per core).
 
     ``prove=True`` (``dragon max-speed --prove``) bounds every handle's speed over every stretch
-    of the window: slower (about twice the search on two cores), and the result's ``enclosure`` holds
+    of the window: slower (about 1.4 times the search on two cores), and the result's ``enclosure`` holds
     the largest head speed (see :class:`MaxSpeedResult`). `prove` is True or False; anything
     else is an InputError naming it."""
     return MaxSpeedResult(json.loads(_core._max_speed(_values(scenario), float(limit), from_, to, _workers(workers),

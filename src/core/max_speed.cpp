@@ -9,6 +9,7 @@
 
 #include "golden_section.hpp"
 #include "make_path.hpp"
+#include "chain_front.hpp"
 #include "speed_bound.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/turnaround.hpp"
@@ -53,6 +54,34 @@ constexpr int kMaxSubdivisions = 200000;
 // Scan samples a worker takes at once (a chunk solves one chain more than its samples, for the
 // bound of its last stretch: 2 % more with the proof).
 constexpr int kScanChunk = 64;
+
+// Handles past the first calm one (speed_bound.hpp's calm_at, Lemma C at one moment: none behind
+// it moves faster) that the scan still solves, so that a stretch's bound finds the calm handle
+// of its end in the chain at its start too (over a scan step of 1/32 of a link it moves back by
+// one handle at most). A bound that does not (chains cut too short) fails, and the proof
+// solves that stretch's chains whole.
+constexpr int kCalmMargin = 4;
+
+// The scan's chain at head arc s in f: solved up to its first calm handle and kCalmMargin more
+// (the whole chain when it has none). `count`: the handles to try first (the last chain's cut),
+// and then this one's.
+void solve_to_calm(const Path& path, const BenchSpec& spec, double s, int& count, Frame& f) {
+    const int n = spec.handle_count();
+    for (;;) {
+        solve_chain_front(path, spec, s, 1.0, std::min(count, n), f);
+        const int held = static_cast<int>(f.handles.size());
+        int want = n;
+        for (int j = 0; j < held; ++j) {
+            const Handle& h = f.handles[static_cast<size_t>(j)];
+            if (h.speed > 0.0 && speed::calm_at(path, spec, h.place, static_cast<size_t>(j))) {
+                want = std::min(n, j + 1 + kCalmMargin);
+                break;
+            }
+        }
+        count = want;
+        if (want <= held) return;
+    }
+}
 
 // A stretch's bound as the branch and bound keeps it: the bound, or NaN where a shorter
 // stretch may be bounded.
@@ -158,8 +187,11 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
         speed::ChainFacts facts[2];
         // Its samples k0 .. k1 - 1 (the last chunk also k1 = steps); k1 itself for the bound.
         const int last = options.prove || k1 == steps ? k1 : k1 - 1;
+        // Each chain up to its calm tail (no handle behind moves faster: the ratio is the whole
+        // chain's), the first of the chunk whole.
+        int count = s.bench.handle_count();
         for (int k = k0; k <= last; ++k) {
-            solve_chain(path, s.bench, k == steps ? s1 : s0 + k * ds, 1.0, f);
+            solve_to_calm(path, s.bench, k == steps ? s1 : s0 + k * ds, count, f);
             ++chunk_evaluations[c];
             if (k < k1 || k == steps) rho[static_cast<size_t>(k)] = ratio_of(f).ratio;
             if (!options.prove) continue;

@@ -155,30 +155,36 @@ Reach reach_between(const Path& path, double lo, double hi, double s0, double s1
 // 2 sin(pi/8) = 0.765; the margin is far above the rounding of rho = b theta.)
 constexpr double kCalmChord = 0.76;
 
-// Lemma C: whether no handle behind handle j (its speed within v over the stretch, at head
-// speed 1) can move faster than it, anywhere in the stretch. Handle j moves forward all the
-// way (v above 0), so it stays at or behind its place at the stretch's end, c1's; if that lies
-// on a spiral coiling in, every handle behind j lies on it too, at least as far out as j, whose
-// least radius over the stretch is b theta there.
+// Lemma C over a stretch: whether no handle behind handle j (its speed within v over the
+// stretch, at head speed 1) can move faster than it, anywhere in the stretch. Handle j moves
+// forward all the way (v above 0), so it stays at or behind its place at the stretch's end, c1's,
+// where calm_at() judges the rest.
 bool calm_behind(const Path& path, const BenchSpec& spec, const ChainFacts& c1, size_t j, Iv v) {
-    if (!(v.lo > 0.0)) return false;
-    const Place& end = c1.place[j];
-    const Spiral* spiral = path.coil_in_spiral(end);
-    if (!spiral) return false;
-    const double rho = spiral->b() * end.u;  // m
-    if (j + 1 >= c1.place.size()) return true;  // the tail's rear handle: none behind
-    // m: the longest link behind handle j (the head's, from handle 0; a body's after it).
-    const double longest = std::max(spec.link_after(static_cast<int>(j)), spec.link_after(static_cast<int>(c1.place.size()) - 2));
-    return longest <= kCalmChord * rho;
+    return v.lo > 0.0 && calm_at(path, spec, c1.place[j], j);
 }
 
 }  // namespace
+
+bool calm_at(const Path& path, const BenchSpec& spec, const Place& place, size_t j) {
+    const Spiral* spiral = path.coil_in_spiral(place);
+    if (!spiral) return false;
+    const double rho = spiral->b() * place.u;  // m
+    const int n = spec.handle_count();
+    if (static_cast<int>(j) + 1 >= n) return true;  // the tail's rear handle: none behind
+    // m: the longest link behind handle j (the head's, from handle 0; a body's after it).
+    const double longest = std::max(spec.link_after(static_cast<int>(j)), spec.link_after(n - 2));
+    return longest <= kCalmChord * rho;
+}
 
 StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainFacts& c0, const ChainFacts& c1,
                            std::vector<HandleArc>* arcs) {
     StretchBound out;
     if (arcs) arcs->clear();
-    const size_t n = c0.place.size();
+    // The handles both chains hold: all of them, or (chains solved up to a calm handle, as Q5's
+    // scan solves them) as many as the shorter holds; a bound that finds no calm tail among
+    // them does not hold (fail below).
+    const size_t n = std::min(c0.place.size(), c1.place.size());
+    const bool whole = static_cast<int>(n) == spec.handle_count();
     const double h = c1.head_arc - c0.head_arc;
     const auto fail = [&out](size_t handle) {
         out.verdict = BoundVerdict::not_monotone;
@@ -318,6 +324,8 @@ StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainF
         if (arcs) arcs->push_back({rear.lo, rear.hi, rear.turning});
         front = rear;
     }
+    // Chains cut short of the whole: the handles behind them are bounded by nothing here.
+    if (!whole) return fail(n);
     return out;
 }
 

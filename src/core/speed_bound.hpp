@@ -96,7 +96,16 @@ struct HandleArc {
     Place lo, hi;
     double turning = 0.0;  // rad
 };
+// c0 and c1 may hold the leading handles alone (chains solved up to a calm handle, Q5's scan):
+// the bound then holds only if it stops at a calm tail among the handles both hold (Lemma C,
+// without `arcs`), and fails (not_monotone) otherwise.
 StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainFacts& c0, const ChainFacts& c1,
                            std::vector<HandleArc>* arcs = nullptr);
+
+// Lemma C's condition on handle j (0-based) of a chain of `spec` at `place`: the place on a
+// spiral coiling in (Path::coil_in_spiral) at a radius of at least 1 / 0.76 times every link
+// behind the handle. Over a stretch (with the handle moving forward all the way, ending it at
+// `place`), or at one moment (with its speed above 0), no handle behind it moves faster.
+bool calm_at(const Path& path, const BenchSpec& spec, const Place& place, size_t j);
 
 }  // namespace dragon::speed

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "core/chain_front.hpp"
 #include "core/speed_bound.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/executor.hpp"
@@ -269,7 +270,27 @@ TEST(MaxSpeedProof, ACalmTailStopsTheBoundAndLosesNothing) {
         if (f1.handles[0].place.piece == 0) {
             ++before_turn;
             EXPECT_EQ(calm.upper, 1.0) << "on [" << a << ", " << b << "]";
+            continue;
         }
+        // Chains cut short (as Q5's scan cuts them): cut after the calm handle, the same bound;
+        // cut before it, none (the handles behind are bounded by nothing).
+        size_t calm_handle = 0;
+        while (calm_handle < f1.handles.size() &&
+               !(f1.handles[calm_handle].speed > 0.0 && speed::calm_at(path, sc.bench, f1.handles[calm_handle].place, calm_handle)))
+            ++calm_handle;
+        ASSERT_LT(calm_handle, f1.handles.size()) << "on [" << a << ", " << b << "]";
+        speed::ChainFacts short0, short1;
+        const auto cut = [&](size_t handles) {
+            solve_chain_front(path, sc.bench, a, 1.0, static_cast<int>(handles), f0);
+            solve_chain_front(path, sc.bench, b, 1.0, static_cast<int>(handles), f1);
+            speed::gather(path, f0, short0);
+            speed::gather(path, f1, short1);
+            return speed::bound_stretch(path, sc.bench, short0, short1);
+        };
+        const speed::StretchBound after = cut(calm_handle + 2);
+        ASSERT_EQ(after.verdict, calm.verdict) << "on [" << a << ", " << b << "]";
+        EXPECT_EQ(after.upper, calm.upper) << "on [" << a << ", " << b << "]";
+        EXPECT_EQ(cut(calm_handle).verdict, speed::BoundVerdict::not_monotone) << "on [" << a << ", " << b << "]";
     }
     EXPECT_GE(before_turn, 10);
 }
