@@ -36,6 +36,12 @@ double dense_max(const Path& path, const BenchSpec& bench, double from, double t
     return best;
 }
 
+// The chain at head arc s in f (its first `handles`; 0: all of them) and its facts in c.
+void facts_at(const Path& path, const BenchSpec& bench, double s, Frame& f, speed::ChainFacts& c, int handles = 0) {
+    solve_chain_front(path, bench, s, 1.0, handles > 0 ? handles : bench.handle_count(), f);
+    speed::gather(path, f, c);
+}
+
 // The proof's claims checked against dense scans of the window it searched: 1 cm steps over
 // the whole window, 1e-4 m steps within 0.2 m of the maximum found, and, around every point
 // of the 1 cm scan within 1e-3 of the largest, 1e-4 m steps too (a second peak nearly as high).
@@ -196,10 +202,8 @@ TEST(MaxSpeedProof, AStretchsBoundHoldsInsideIt) {
     int bounded = 0;
     for (int trial = 0; trial < 60; ++trial) {
         const double a = where(rng), b = a + width(rng);
-        solve_chain(path, sc.bench, a, 1.0, f0);
-        solve_chain(path, sc.bench, b, 1.0, f1);
-        speed::gather(path, f0, c0);
-        speed::gather(path, f1, c1);
+        facts_at(path, sc.bench, a, f0, c0);
+        facts_at(path, sc.bench, b, f1, c1);
         const speed::StretchBound bound = speed::bound_stretch(path, sc.bench, c0, c1);
         if (bound.verdict != speed::BoundVerdict::bounded) continue;
         ++bounded;
@@ -257,10 +261,8 @@ TEST(MaxSpeedProof, ACalmTailStopsTheBoundAndLosesNothing) {
     int before_turn = 0;
     for (int trial = 0; trial < 40; ++trial) {
         const double a = where(rng), b = a + width(rng);
-        solve_chain(path, sc.bench, a, 1.0, f0);
-        solve_chain(path, sc.bench, b, 1.0, f1);
-        speed::gather(path, f0, c0);
-        speed::gather(path, f1, c1);
+        facts_at(path, sc.bench, a, f0, c0);
+        facts_at(path, sc.bench, b, f1, c1);
         const speed::StretchBound calm = speed::bound_stretch(path, sc.bench, c0, c1);
         const speed::StretchBound whole = speed::bound_stretch(path, sc.bench, c0, c1, &arcs);
         if (whole.verdict != speed::BoundVerdict::bounded) continue;
@@ -279,13 +281,10 @@ TEST(MaxSpeedProof, ACalmTailStopsTheBoundAndLosesNothing) {
                !(f1.handles[calm_handle].speed > 0.0 && speed::calm_at(path, sc.bench, f1.handles[calm_handle].place, calm_handle)))
             ++calm_handle;
         ASSERT_LT(calm_handle, f1.handles.size()) << "on [" << a << ", " << b << "]";
-        speed::ChainFacts short0, short1;
         const auto cut = [&](size_t handles) {
-            solve_chain_front(path, sc.bench, a, 1.0, static_cast<int>(handles), f0);
-            solve_chain_front(path, sc.bench, b, 1.0, static_cast<int>(handles), f1);
-            speed::gather(path, f0, short0);
-            speed::gather(path, f1, short1);
-            return speed::bound_stretch(path, sc.bench, short0, short1);
+            facts_at(path, sc.bench, a, f0, c0, static_cast<int>(handles));
+            facts_at(path, sc.bench, b, f1, c1, static_cast<int>(handles));
+            return speed::bound_stretch(path, sc.bench, c0, c1);
         };
         const speed::StretchBound after = cut(calm_handle + 2);
         ASSERT_EQ(after.verdict, calm.verdict) << "on [" << a << ", " << b << "]";
