@@ -41,12 +41,13 @@ std::string proof_words(const ContactProof& p, const Contact* c) {
                                  p.unproved_steps);
     std::string out =
         c ? fmt::format("proved: the first contact lies in t = [{:.15g}, {:.15g}] s (head travel [{:.15g}, {:.15g}] m): "
-                        "{} steps proved contact-free by enclosing every bench over each step",
+                        "{} steps proved contact-free by enclosing every bench that may touch over each step",
                         c->enclosure_time_lo, c->enclosure_time_hi, c->enclosure_lo, c->enclosure_hi, p.proved_steps)
           : fmt::format("proved: no contact over head travel [{:.15g}, {:.15g}] m: {} steps proved contact-free by "
-                        "enclosing every bench over each step",
+                        "enclosing every bench that may touch over each step",
                         p.proved_from, p.proved_to, p.proved_steps);
-    if (std::isfinite(p.least_gap)) out += fmt::format(", least separation proved {:.3g} m", p.least_gap);
+    if (std::isfinite(p.least_gap))
+        out += fmt::format(", least separation proved {:.3g} m between the benches enclosed", p.least_gap);
     if (p.motion_checked)
         out += p.motion.unproved_steps == 0
                    ? std::string("; the valid motion proved over it")
@@ -81,7 +82,8 @@ std::string pitch_proof_words(const MinPitch& m) {
         std::string feasible = "every pitch in " + range_list(p.proved, Rounding::inward) +
                                fmt::format(" m reaches the boundary with no contact ({} cells of head radius and pitch "
                                            "enclosed", p.cells);
-        if (std::isfinite(p.least_gap)) feasible += fmt::format(", least separation proved {:.3g} m", p.least_gap);
+        if (std::isfinite(p.least_gap))
+            feasible += fmt::format(", least separation proved {:.3g} m between the benches enclosed", p.least_gap);
         parts.push_back(feasible + ")");
     }
     if (!p.proved_colliding.empty())
