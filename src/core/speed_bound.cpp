@@ -180,11 +180,12 @@ StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainF
                            std::vector<HandleArc>* arcs) {
     StretchBound out;
     if (arcs) arcs->clear();
-    // The handles both chains hold: all of them, or (chains solved up to a calm handle, as Q5's
-    // scan solves them) as many as the shorter holds; a bound that finds no calm tail among
-    // them does not hold (fail below).
+    // The handles both chains hold: all of them, or as many as the shorter holds. Without
+    // `arcs` the bound is on every handle's speed, so chains cut short (as Q5's scan cuts them,
+    // up to a calm handle) must reach a calm tail (fail below); with `arcs` it is on the handles
+    // given (a contact search's leading benches: the tail behind them is apart by its own proof).
     const size_t n = std::min(c0.place.size(), c1.place.size());
-    const bool whole = static_cast<int>(n) == spec.handle_count();
+    const bool whole = arcs || static_cast<int>(n) == spec.handle_count();
     const double h = c1.head_arc - c0.head_arc;
     const auto fail = [&out](size_t handle) {
         out.verdict = BoundVerdict::not_monotone;

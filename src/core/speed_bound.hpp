@@ -96,9 +96,10 @@ struct HandleArc {
     Place lo, hi;
     double turning = 0.0;  // rad
 };
-// c0 and c1 may hold the leading handles alone (chains solved up to a calm handle, Q5's scan):
-// the bound then holds only if it stops at a calm tail among the handles both hold (Lemma C,
-// without `arcs`), and fails (not_monotone) otherwise.
+// c0 and c1 may hold the leading handles alone. Without `arcs` (chains solved up to a calm
+// handle, Q5's scan) the bound then holds only if it stops at a calm tail among the handles both
+// hold (Lemma C), and fails (not_monotone) otherwise; with `arcs` (a contact search's leading
+// benches) it bounds the handles given.
 StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainFacts& c0, const ChainFacts& c1,
                            std::vector<HandleArc>* arcs = nullptr);
 

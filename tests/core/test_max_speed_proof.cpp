@@ -290,6 +290,10 @@ TEST(MaxSpeedProof, ACalmTailStopsTheBoundAndLosesNothing) {
         ASSERT_EQ(after.verdict, calm.verdict) << "on [" << a << ", " << b << "]";
         EXPECT_EQ(after.upper, calm.upper) << "on [" << a << ", " << b << "]";
         EXPECT_EQ(cut(calm_handle).verdict, speed::BoundVerdict::not_monotone) << "on [" << a << ", " << b << "]";
+        // Asked for the arcs (a contact search's leading benches), the handles given are bounded.
+        EXPECT_EQ(speed::bound_stretch(path, sc.bench, c0, c1, &arcs).verdict, speed::BoundVerdict::bounded)
+            << "on [" << a << ", " << b << "]";
+        EXPECT_EQ(arcs.size(), calm_handle) << "on [" << a << ", " << b << "]";
     }
     EXPECT_GE(before_turn, 10);
 }
