@@ -26,11 +26,6 @@ constexpr double kArcTolerance = 1e-9;
 // Handle speeds this close (relative) count as equal: rounding in the chain is ~1e-15.
 constexpr double kTieTolerance = 1e-12;
 
-// Coarse scan step over the shortest link: with 32 samples per link length no handle moves more
-// than ~1/32 of a link (speed ratios stay near 1) between samples, so every bump of the ratio,
-// whose width is set by the time a handle needs to cross a link or a join, spans many samples.
-constexpr double kSamplesPerLink = 32.0;
-
 // The coarse scan's cost cap, in handle positions solved (samples times handles): ~20 s on one
 // core. The contest's run takes 9e5; a head speed of 100 m/s over the default -100..100 s
 // (20 km of path) 9e7. Past the cap the scan would run for minutes or exhaust memory.
@@ -70,14 +65,8 @@ void solve_to_calm(const Path& path, const BenchSpec& spec, double s, int& count
     for (;;) {
         solve_chain_front(path, spec, s, 1.0, std::min(count, n), f);
         const int held = static_cast<int>(f.handles.size());
-        int want = n;
-        for (int j = 0; j < held; ++j) {
-            const Handle& h = f.handles[static_cast<size_t>(j)];
-            if (h.speed > 0.0 && speed::calm_at(path, spec, h.place, static_cast<size_t>(j))) {
-                want = std::min(n, j + 1 + kCalmMargin);
-                break;
-            }
-        }
+        const int calm = static_cast<int>(speed::first_calm_handle(path, spec, f));
+        const int want = calm < held ? std::min(n, calm + 1 + kCalmMargin) : n;
         count = want;
         if (want <= held) return;
     }
@@ -163,6 +152,9 @@ MaxSpeed max_head_speed(const Scenario& scenario, double limit, const RunWindow&
     if (s.bench.bench_count > 1) shortest = std::min(shortest, s.bench.link_length(2));
     if (!(options.samples_per_link > 0.0) || !std::isfinite(options.samples_per_link))
         throw std::invalid_argument("max_head_speed: samples_per_link must be finite and > 0");
+    // The coarse scan's step, a fraction of the shortest link: at the default 32 samples per link
+    // no handle moves more than ~1/32 of a link between samples (speed ratios stay near 1), so
+    // every bump of the ratio, as wide as a handle's crossing of a link or a join, spans many.
     const double samples = std::ceil((s1 - s0) * options.samples_per_link / shortest);
     if (!(samples * s.bench.handle_count() <= kMaxHandlePositions))
         throw InputError(Key::time_range, fmt::format("{}..{} m of head travel", cut.from, cut.to),

@@ -176,6 +176,12 @@ bool calm_at(const Path& path, const BenchSpec& spec, const Place& place, size_t
     return longest <= kCalmChord * rho;
 }
 
+size_t first_calm_handle(const Path& path, const BenchSpec& spec, const Frame& f) {
+    for (size_t j = 0; j < f.handles.size(); ++j)
+        if (f.handles[j].speed > 0.0 && calm_at(path, spec, f.handles[j].place, j)) return j;
+    return f.handles.size();
+}
+
 StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainFacts& c0, const ChainFacts& c1,
                            std::vector<HandleArc>* arcs) {
     StretchBound out;

@@ -109,4 +109,8 @@ StretchBound bound_stretch(const Path& path, const BenchSpec& spec, const ChainF
 // `place`), or at one moment (with its speed above 0), no handle behind it moves faster.
 bool calm_at(const Path& path, const BenchSpec& spec, const Place& place, size_t j);
 
+// The first of f's handles that moves forward and is calm_at() its place: at that moment no
+// handle behind it moves faster. f.handles.size() when none is (f may hold a leading part).
+size_t first_calm_handle(const Path& path, const BenchSpec& spec, const Frame& f);
+
 }  // namespace dragon::speed

@@ -276,10 +276,7 @@ TEST(MaxSpeedProof, ACalmTailStopsTheBoundAndLosesNothing) {
         }
         // Chains cut short (as Q5's scan cuts them): cut after the calm handle, the same bound;
         // cut before it, none (the handles behind are bounded by nothing).
-        size_t calm_handle = 0;
-        while (calm_handle < f1.handles.size() &&
-               !(f1.handles[calm_handle].speed > 0.0 && speed::calm_at(path, sc.bench, f1.handles[calm_handle].place, calm_handle)))
-            ++calm_handle;
+        const size_t calm_handle = speed::first_calm_handle(path, sc.bench, f1);
         ASSERT_LT(calm_handle, f1.handles.size()) << "on [" << a << ", " << b << "]";
         const auto cut = [&](size_t handles) {
             facts_at(path, sc.bench, a, f0, c0, static_cast<int>(handles));
