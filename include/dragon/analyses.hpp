@@ -207,8 +207,9 @@ struct PitchJam {
 // with no two benches touching (by enclosures over cells of head radius and pitch), every pitch
 // in each `proved_colliding` range meets a contact before it (one bench's corner inside another
 // at one head radius for all of them). The `unproved` parts of the feasible intervals and the
-// `unproved_colliding` parts of the others (within 1e-7 m of a change of feasibility, or where a
-// link spans a quarter turn or more, or the runs end in a jam) rest on the runs.
+// `unproved_colliding` parts of the others (within a few times tol::pitch of a change of
+// feasibility, or where a link spans a quarter turn or more, or the runs end in a jam) rest on
+// the runs.
 struct PitchProof {
     std::vector<PitchInterval> proved;    // m: ranges of pitches proved feasible (feasible = true)
     std::vector<PitchInterval> unproved;  // m: parts of feasible intervals not proved

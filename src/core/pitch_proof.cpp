@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <utility>
 
 #include "chain_front.hpp"
 #include "golden_section.hpp"
@@ -49,9 +50,12 @@ constexpr double kRefineRadius = 5e-3;
 constexpr int kScanRadii = 12;
 // m: the golden section on the deepest overlap stops at this bracket of head radius.
 constexpr double kWitnessRadius = 1e-7;
-// m: a colliding range is halved down to this, the search's own resolution of the cut (a witness
-// costs one run and a few dozen chain solves, so the colliding side reaches the cut cheaply).
-constexpr double kCollidingFinest = tol::pitch;
+// m: a colliding range is halved down to this, a 32nd of the search's resolution of a cut
+// (tol::pitch), so that the colliding side is proved to within that resolution of the cut: a
+// shallow overlap proves a range only some 3.5 times narrower than its distance from the cut
+// (the contest's pair), and each level of halving towards the cut costs a few refined
+// witnesses, no run. Ranges inside the resolution itself are not halved (prove_colliding).
+constexpr double kCollidingFinest = tol::pitch / 32;
 // m: a radius step below this is not tried (far below any cell's use; stops a range that
 // cannot be proved from stepping without end).
 constexpr double kFinestRadiusStep = 1e-12;
@@ -314,8 +318,13 @@ bool witness_holds(const Scenario& s, double p_lo, double p_hi, const Witness& w
 // Proves the range [p_lo, p_hi] of an infeasible interval colliding, halving what one witness
 // cannot cover; adds what it proved to `out`. Each range tries, in order of cost, its parent's
 // witness (its pair and radius, at the range's own middle pitch), one from a scan of its middle
-// pitch's chain, and one from its middle pitch's run.
-void prove_colliding(const Scenario& s, double p_lo, double p_hi, PitchProof& out) {
+// pitch's chain, and one from its middle pitch's run. `cuts`: the infeasible interval's ends that
+// the search found (a change of feasibility, resolved to tol::pitch; NaN for an end of the range
+// searched). A range within tol::pitch of one is not halved: it may hold the feasible pitches
+// the search's resolution leaves on this side of the cut, which a witness cannot cover, and
+// halving it would run the dragon at every level.
+void prove_colliding(const Scenario& s, double p_lo, double p_hi, std::pair<double, double> cuts,
+                     PitchProof& out) {
     Frame f;
     std::vector<double> theta_a, theta_b;
     struct Todo {
@@ -369,7 +378,8 @@ void prove_colliding(const Scenario& s, double p_lo, double p_hi, PitchProof& ou
             continue;
         }
         ++out.subdivisions;
-        if (range.hi - range.lo <= kCollidingFinest) {
+        const bool at_cut = range.lo >= cuts.second - tol::pitch || range.hi <= cuts.first + tol::pitch;
+        if (range.hi - range.lo <= kCollidingFinest || at_cut) {
             out.unproved_colliding.push_back({range.lo, range.hi, false});
             continue;
         }
@@ -401,20 +411,25 @@ PitchProof prove_pitches(const Scenario& s, const std::vector<PitchInterval>& in
             ranges.emplace_back(k == 0 ? iv.lo : iv.lo + (iv.hi - iv.lo) * k / kFirstRanges,
                                 k + 1 == kFirstRanges ? iv.hi : iv.lo + (iv.hi - iv.lo) * (k + 1) / kFirstRanges);
     }
-    // And each infeasible interval's, to be proved colliding.
+    // And each infeasible interval's, to be proved colliding, with its ends that are cuts.
     const size_t feasible_ranges = ranges.size();
+    std::vector<std::pair<double, double>> cuts(feasible_ranges, {NAN, NAN});
     for (const PitchInterval& iv : intervals) {
         if (iv.feasible) continue;
-        for (int k = 0; k < kFirstRanges; ++k)
+        const std::pair<double, double> ends{iv.lo > intervals.front().lo ? iv.lo : NAN,
+                                             iv.hi < intervals.back().hi ? iv.hi : NAN};
+        for (int k = 0; k < kFirstRanges; ++k) {
             ranges.emplace_back(k == 0 ? iv.lo : iv.lo + (iv.hi - iv.lo) * k / kFirstRanges,
                                 k + 1 == kFirstRanges ? iv.hi : iv.lo + (iv.hi - iv.lo) * (k + 1) / kFirstRanges);
+            cuts.push_back(ends);
+        }
     }
     std::vector<PitchProof> parts(ranges.size());
     ex.parallel_for(ranges.size(), [&](size_t k, int) {
         if (k < feasible_ranges)
             march(s.bench, s.path.start_turn, s.path.turn_radius, ranges[k].first, ranges[k].second, parts[k]);
         else
-            prove_colliding(s, ranges[k].first, ranges[k].second, parts[k]);
+            prove_colliding(s, ranges[k].first, ranges[k].second, cuts[k], parts[k]);
     });
     PitchProof out;
     for (const PitchProof& p : parts) {

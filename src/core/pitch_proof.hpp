@@ -35,7 +35,8 @@ namespace dragon {
 
 // m: a feasible range of pitches no wider than this that its cells cannot prove is left
 // unproved (the pitches next to a change of feasibility, where a pair's closest approach falls
-// to zero): the search's own resolution of the cut (tol::pitch), as for a colliding range. Each
+// to zero): the search's own resolution of the cut (tol::pitch; a colliding range is halved
+// finer, up to that resolution from the cut, pitch_proof.cpp's kCollidingFinest). Each
 // feasible interval's least pitch, the search's answer, is marched on its own as well (a range
 // of one pitch, whose cells are steps of that dragon's motion in).
 inline constexpr double kPitchProofFinest = tol::pitch;
