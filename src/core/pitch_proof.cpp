@@ -56,6 +56,13 @@ constexpr double kWitnessRadius = 1e-7;
 // (the contest's pair), and each level of halving towards the cut costs a few refined
 // witnesses, no run. Ranges inside the resolution itself are not halved (prove_colliding).
 constexpr double kCollidingFinest = tol::pitch / 32;
+// Ranges of pitches one march or one colliding proof takes (each of prove_pitches' parts) before
+// it leaves the rest unproved: halving runs out only at the finest widths above, so a part
+// holding a wide stretch its proof cannot cover (a window of collision the search missed,
+// inside a range claimed feasible) would take that width over the finest width in ranges, and
+// minutes. The contest's parts take at most 207 (the colliding one next to the cut); a window
+// of collision a micrometre wide claimed feasible about 2600 (PitchProof's tests), 3 s.
+constexpr int kMaxRangesPerPart = 10000;
 // m: a radius step below this is not tried (far below any cell's use; stops a range that
 // cannot be proved from stepping without end).
 constexpr double kFinestRadiusStep = 1e-12;
@@ -100,9 +107,14 @@ void march(const BenchSpec& spec, double start_turn, double boundary, double p_l
     std::vector<double> theta_a, theta_b;
     contact::SweptWorkspace ws;
     std::vector<Range> todo{{p_lo, p_hi, Spiral(p_hi).b() * kTwoPi * start_turn}};
-    while (!todo.empty()) {
+    for (int taken = 0; !todo.empty(); ++taken) {
         const Range range = todo.back();
         todo.pop_back();
+        if (taken == kMaxRangesPerPart) {  // over budget: this range and those waiting are not proved
+            out.unproved.push_back({range.p_lo, range.p_hi, true});
+            for (const Range& r : todo) out.unproved.push_back({r.p_lo, r.p_hi, true});
+            break;
+        }
         ++out.pitch_ranges;
         // b as the spirals of the range's two ends have it (Spiral::b(): pitch / 2 pi).
         const double b_lo = Spiral(range.p_lo).b(), b_hi = Spiral(range.p_hi).b();
@@ -259,10 +271,13 @@ std::optional<Witness> witness_from_scan(const Scenario& s, double p, double r_m
 
 // A witness for the pitch p from its run: its first contact's pair, at the radius (between the
 // contact, or r_max if nearer the boundary, and the boundary) where that pair's deepest corner
-// is deepest; `clear` says whether the run met neither a contact nor a jam.
-std::optional<Witness> witness_from_run(const Scenario& s, double p, double r_max, Frame& f, bool& clear) {
+// is deepest; `clear` says whether the run met neither a contact nor a jam, `jammed` whether its
+// motion ended first.
+std::optional<Witness> witness_from_run(const Scenario& s, double p, double r_max, Frame& f, bool& clear,
+                                        bool& jammed) {
     const BoundaryRun run = run_to_boundary(s, p);
     clear = run.feasible();
+    jammed = run.jam.has_value();
     if (!run.contact) return std::nullopt;  // a jam (or no contact at all): nothing to take a witness from
     const size_t a = static_cast<size_t>(run.contact->bench_a - 1), b = static_cast<size_t>(run.contact->bench_b - 1);
     Witness w = deepest_between(s.bench, Spiral(p), s.path.turn_radius, std::min(run.contact->head_radius, r_max), a, b, f);
@@ -333,9 +348,14 @@ void prove_colliding(const Scenario& s, double p_lo, double p_hi, std::pair<doub
         bool near_clear = false;      // the parent's middle pitch ran clear to the boundary
     };
     std::vector<Todo> todo{{p_lo, p_hi, std::nullopt, false}};
-    while (!todo.empty()) {
+    for (int taken = 0; !todo.empty(); ++taken) {
         const Todo range = todo.back();
         todo.pop_back();
+        if (taken == kMaxRangesPerPart) {  // over budget: this range and those waiting are not proved
+            out.unproved_colliding.push_back({range.lo, range.hi, false});
+            for (const Todo& t : todo) out.unproved_colliding.push_back({t.lo, t.hi, false});
+            break;
+        }
         ++out.pitch_ranges;
         const double mid = 0.5 * (range.lo + range.hi);
         // m: a witness must lie on every pitch's run, so no farther out than the start of the
@@ -343,6 +363,7 @@ void prove_colliding(const Scenario& s, double p_lo, double p_hi, std::pair<doub
         const double r_max = start_radius(s, range.lo);
         std::optional<Witness> seen;  // the deepest overlap seen at this range's middle pitch
         bool clear = false;           // its run met no contact and no jam
+        bool jammed = false;          // its run's motion ended before any contact
         const auto holds = [&](const std::optional<Witness>& w) {
             if (!w) return false;
             Witness found;
@@ -365,7 +386,7 @@ void prove_colliding(const Scenario& s, double p_lo, double p_hi, std::pair<doub
         // pair (which a run here would find again: the ranges next to the cut).
         const auto from_run = [&]() -> std::optional<Witness> {
             if (seen && seen->from_run) return std::nullopt;
-            return witness_from_run(s, mid, r_max, f, clear);
+            return witness_from_run(s, mid, r_max, f, clear, jammed);
         };
         // The scan, unless the parent's middle pitch ran clear (a range claimed colliding that
         // holds feasible pitches: nothing overlaps near there, and the run decides).
@@ -378,8 +399,14 @@ void prove_colliding(const Scenario& s, double p_lo, double p_hi, std::pair<doub
             continue;
         }
         ++out.subdivisions;
+        // A jam is no contact to take a witness from, at the middle pitch nor (the motion ends
+        // alike nearby) at the pitches around it: the range rests on the runs, not halved.
+        // A middle pitch that runs clear, away from the cuts' resolution: a feasible pitch the
+        // search missed (a window between its grid points); the range rests on the runs. Next
+        // to a cut it is one the resolution left on this side, and the halves go on.
         const bool at_cut = range.lo >= cuts.second - tol::pitch || range.hi <= cuts.first + tol::pitch;
-        if (range.hi - range.lo <= kCollidingFinest || at_cut) {
+        const bool meets_cut = range.hi > cuts.second - tol::pitch || range.lo < cuts.first + tol::pitch;
+        if (range.hi - range.lo <= kCollidingFinest || at_cut || jammed || (clear && !meets_cut)) {
             out.unproved_colliding.push_back({range.lo, range.hi, false});
             continue;
         }

@@ -328,8 +328,8 @@ TEST(PitchProof, OtherDragonsProvedIntervalsAgreeWithRuns) {
 }
 
 // A range claimed colliding that holds feasible pitches (the contest's cut inside it, and half a
-// micrometre of feasible pitches above it, each halved down to tol::pitch with a run: the cost
-// grows with that width): no pitch at or above the cut is proved colliding, and the pitches well
+// micrometre of feasible pitches above it; no cut is named, so a range whose middle pitch runs
+// clear is not halved): no pitch at or above the cut is proved colliding, and the pitches well
 // below it are.
 TEST(PitchProof, NeverProvesFeasiblePitchesColliding) {
     const MinPitch m = min_pitch(Scenario{}, 0.44, 0.46, coarse_grid());
@@ -367,4 +367,48 @@ TEST(PitchProof, NeverProvesAWindowOfCollisionInsideARangeClaimedFeasible) {
     // The rest of the range is proved.
     EXPECT_EQ(p.proved.back().hi, 0.452);
     EXPECT_LT(p.proved.front().lo - cut, 10 * tol::pitch);
+}
+
+// Runs that end in a jam give no contact to take a witness from (a turning space of radius 1 m:
+// every pitch of [0.7, 0.8] m coils in without contact, but the dragon stops following the
+// spiral before its head gets there): each part's range is left to the runs at once. Halving
+// them went on without end (`dragon min-pitch --turn-radius 1 --lo 0.7 --hi 0.8 --grid 0.05
+// --prove` ran for minutes).
+TEST(PitchProof, RangesWhoseRunsJamAreLeftToTheRuns) {
+    Scenario s;
+    s.path.turn_radius = 1.0;
+    ThreadPool pool(2);
+    MinPitchOptions o;
+    o.grid = 0.05;
+    o.executor = &pool;
+    o.prove = true;
+    const MinPitch m = min_pitch(s, 0.7, 0.8, o);
+    ASSERT_TRUE(m.above_range);
+    ASSERT_TRUE(m.jam.has_value());
+    for (const double p : {0.7, 0.7125, 0.75, 0.7875}) {
+        const BoundaryRun run = run_to_boundary(s, p);
+        EXPECT_TRUE(run.jam.has_value() && !run.contact.has_value()) << p;
+    }
+    ASSERT_TRUE(m.proof.has_value());
+    const PitchProof& p = *m.proof;
+    EXPECT_TRUE(p.proved_colliding.empty());
+    ASSERT_EQ(p.unproved_colliding.size(), 1u);
+    EXPECT_EQ(p.unproved_colliding.front().lo, 0.7);
+    EXPECT_EQ(p.unproved_colliding.front().hi, 0.8);
+    EXPECT_LE(p.pitch_ranges, 8);  // one per part: none halved
+    EXPECT_STREQ(p.method(), "enclosure cells, incomplete");
+}
+
+// A range claimed colliding whose middle pitch runs clear, away from any cut, holds feasible
+// pitches the search missed: it is left to the runs, not halved down to the finest width (each
+// half a run). Here the whole of [0.46, 0.55] m is feasible, claimed colliding.
+TEST(PitchProof, ARangeClaimedCollidingThatRunsClearIsLeftToTheRuns) {
+    InlineExecutor serial;
+    const PitchProof p = prove_pitches(Scenario{}, {{0.46, 0.55, false}}, serial);
+    EXPECT_TRUE(p.proved_colliding.empty());
+    ASSERT_EQ(p.unproved_colliding.size(), 1u);
+    EXPECT_EQ(p.unproved_colliding.front().lo, 0.46);
+    EXPECT_EQ(p.unproved_colliding.front().hi, 0.55);
+    EXPECT_LE(p.pitch_ranges, 8);
+    for (const double pitch : {0.46, 0.5, 0.55}) EXPECT_TRUE(run_to_boundary(Scenario{}, pitch).feasible()) << pitch;
 }
