@@ -208,8 +208,9 @@ struct PitchJam {
 // in each `proved_colliding` range meets a contact before it (one bench's corner inside another
 // at one head radius for all of them). The `unproved` parts of the feasible intervals and the
 // `unproved_colliding` parts of the others (within a few times tol::pitch of a change of
-// feasibility, or where a link spans a quarter turn or more, or the runs end in a jam) rest on
-// the runs.
+// feasibility, or where a link spans a quarter turn or more, or the runs end in a jam, or where
+// pitches of the other kind lie between the grid's, or past 10 000 ranges of pitches in one of
+// the proof's parts) rest on the runs.
 struct PitchProof {
     std::vector<PitchInterval> proved;    // m: ranges of pitches proved feasible (feasible = true)
     std::vector<PitchInterval> unproved;  // m: parts of feasible intervals not proved

@@ -399,8 +399,9 @@ void prove_colliding(const Scenario& s, double p_lo, double p_hi, std::pair<doub
             continue;
         }
         ++out.subdivisions;
-        // A jam is no contact to take a witness from, at the middle pitch nor (the motion ends
-        // alike nearby) at the pitches around it: the range rests on the runs, not halved.
+        // A middle pitch whose motion ends first gives no contact to take a witness from (nor,
+        // as a rule, do the pitches around it): the range rests on the runs rather than being
+        // halved across the width of the jams.
         // A middle pitch that runs clear, away from the cuts' resolution: a feasible pitch the
         // search missed (a window between its grid points); the range rests on the runs. Next
         // to a cut it is one the resolution left on this side, and the halves go on.
