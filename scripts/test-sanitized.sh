@@ -19,9 +19,9 @@ export ASAN_OPTIONS=detect_leaks=1:fast_unwind_on_malloc=0:detect_stack_use_afte
 export LSAN_OPTIONS=suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
-# Every test runs sanitized. (Until 2026-11-27 four were left out for time; since the proofs'
-# second-order enclosures the slowest of them, PitchProof.NeverProvesFeasiblePitchesColliding,
-# takes about 70 s under ASan, within the tests' 240 s timeout.)
+# Every test runs sanitized. (Until 2026-11-27 four were left out for time.) The slowest under
+# ASan, on a machine at half speed (2026-11-28): CliSweepResume.KilledThenResumedEqualsAnUninterruptedRun
+# 110-140 s and Q2.EveryStepDeclaredSafeIsSafe 100 s, within the tests' 240 s timeout.
 ctest --test-dir build-asan --output-on-failure -j"$(nproc)"
 echo "test-sanitized: ASan/UBSan build and tests took $((SECONDS - start)) s"
 
