@@ -22,9 +22,6 @@ namespace dragon {
 
 namespace {
 
-// rad: a link's polar span must stay below a quarter turn for the monotonicity of the cell's
-// bounds (pitch_proof.hpp), by a margin far above the rounding of the chain's angles (~1e-14).
-constexpr double kMaxSpan = 0.5 * std::numbers::pi - 1e-9;
 // Each feasible interval is cut into this many ranges of pitches at first, marched on their own
 // (in parallel); a range its cells cannot prove is halved.
 constexpr int kFirstRanges = 8;
@@ -80,15 +77,11 @@ void front_at(const BenchSpec& spec, double r0, double pitch, size_t benches, Fr
     solve_chain_front(spiral, spec, spiral.arc({0, r0 / spiral.b()}), 1.0, static_cast<int>(benches) + 1, f);
 }
 
-// Whether the cell's bounds hold (pitch_proof.hpp): in theta_b, the chain with the largest spans
-// and least radii, every link spans at most kMaxSpan and its front's radius exceeds
-// b_hi tan(alpha / 2).
+// Whether the cell's bounds hold (pitch_proof.hpp) in theta_b, the chain with the largest spans
+// and least radii: every link keeps them (contact::link_keeps_cell_bounds).
 bool bounds_hold(const std::vector<double>& theta_b, double b_lo, double b_hi) {
-    for (size_t m = 0; m + 1 < theta_b.size(); ++m) {
-        const double alpha = theta_b[m + 1] - theta_b[m];
-        if (!(alpha > 0.0) || !(alpha < kMaxSpan)) return false;
-        if (!(b_lo * theta_b[m] > b_hi * math::tan(0.5 * alpha))) return false;
-    }
+    for (size_t m = 0; m + 1 < theta_b.size(); ++m)
+        if (!contact::link_keeps_cell_bounds(theta_b[m], theta_b[m + 1], b_lo, b_hi)) return false;
     return true;
 }
 

@@ -478,6 +478,22 @@ StepProof prove_by_speed_bounds(const Path& path, const BenchSpec& spec, const F
     return separate_enclosures(spec, f0, f1, 1, false, no_turning, kNotSeparately, ws, apart_by);
 }
 
+// A cell's second order (prove_spiral_cell_second_order), proved also `apart_by` (m); with
+// `reach_known`, ws.reach holds every bench's offsets from the spiral over the cell
+// (spiral_cell_benches) and pairs they keep apart are not looked at.
+StepProof cell_second_order(const BenchSpec& spec, const SpiralCell& cell, SweptWorkspace& ws, bool reach_known,
+                            double apart_by);
+
+// Whether a step of the motion on the spiral of parameter b (m/rad), from f0 to f1 (every handle
+// on it at both ends), is a cell of one pitch: the head's angle falls from f0's to f1's, and the
+// cell's bounds hold in f1, the chain with the largest spans and the least radii.
+bool step_is_spiral_cell(const Frame& f0, const Frame& f1, double b) {
+    if (!(f1.handles[0].place.u < f0.handles[0].place.u)) return false;
+    for (size_t m = 0; m + 1 < f1.handles.size(); ++m)
+        if (!link_keeps_cell_bounds(f1.handles[m].place.u, f1.handles[m + 1].place.u, b, b)) return false;
+    return true;
+}
+
 }  // namespace
 
 StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, const Frame& f1, SweptWorkspace& ws,
@@ -492,6 +508,31 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
     bool turned = spiral != nullptr;
     for (size_t i = 0; turned && i < nh; ++i)
         turned = f0.handles[i].place.piece == 0 && f1.handles[i].place.piece == 0;
+    // 0. The second order in the frame turned with the head, on the spiral (swept_proof.hpp,
+    // item 6): a step of the motion there is a cell of one pitch (pitch_proof.hpp), the head's
+    // radius falling from f0's to f1's, when the cell's bounds hold at its inner end f1 (every
+    // link's span below a quarter turn, its front's radius above b tan(span / 2)): every chain
+    // of the step is then the chain at some head radius between the two, and
+    // prove_spiral_cell_second_order's proof (methods.md 8.1, Propositions P5 and P6) holds for
+    // it. In that frame the chain's common turning is gone: each corner moves and bends only as
+    // the chain's shape changes, near the head some 25 times slower than in the fixed frame at
+    // Q2's contact (b / r0 as far per metre of travel), so it proves steps there about three
+    // times as long as the fixed frame's second order (3b below). No handle need move forward
+    // for it, so it is tried before item 1's conditions.
+    const auto second_order_turned = [&]() -> StepProof {
+        const double b = spiral->b();
+        const double r1 = b * f1.handles[0].place.u, r0 = b * f0.handles[0].place.u;
+        const SpiralCell cell{f1, f1, f0, f0, r1, r0, b, b};
+        StepProof p = cell_second_order(spec, cell, ws, false, apart_by);
+        p.second_order = true;
+        return p;
+    };
+    // A cell's step is proved by it or not at all: the other enclosures (items 1-3) proved none of
+    // the 126 steps it failed on (too long, or near a contact) in the first-contact searches at
+    // pitches 0.45, 0.5 and 0.55 m, and a failed try costs about as much as a proof.
+    const bool cell = turned && step_is_spiral_cell(f0, f1, spiral->b());
+    if (cell && which != Enclosures::first_order && which != Enclosures::second_order) return second_order_turned();
+    if (which == Enclosures::second_order_turned) return {StepVerdict::not_monotone, -INFINITY, 0, 0};
     ws.arc0.resize(nh);  // the tangent's angle at the start (spiral only)
     ws.arc1.resize(nh);  // and at the end
     if (turned)
@@ -558,7 +599,9 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
     // (b) Second order: each corner within h^2 / 8 max|c''| of the chord between its end places
     // at every moment (handle_accel.hpp bounds c''), a pair's gap along axes that turn with the
     // boards between the ends at least the lesser of its end gaps less that (rotating_pair_gap):
-    // its looseness falls with the step's square, right for short steps near a contact.
+    // its looseness falls with the step's square, right for short steps near a contact. (On a
+    // cell of the spiral the turned frame's, item 0, proves every step of the contest's Q2 this
+    // one does, and more.)
     const auto second_order = [&]() -> std::optional<StepProof> {
         if (!handle_accel_bounds(path, spec, f0, f1, ws.hull, ws.own, ws.accel, ws.speed)) return std::nullopt;
         const double h = std::abs(f1.head_arc - f0.head_arc);
@@ -568,9 +611,6 @@ StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, c
         proof.second_order = true;
         return proof;
     };
-    // The second order first: tried first on every step of the contest's Q2 it is as fast as
-    // the first order tried first on steps over a few centimetres (5.2 ms against 5.5 for the
-    // search).
     if (which == Enclosures::first_order) return first_order();
     if (which == Enclosures::either_first_order_first) {
         const StepProof first = first_order();
@@ -658,9 +698,12 @@ size_t spiral_cell_benches(const BenchSpec& spec, const std::vector<double>& the
 namespace {
 
 // A cell's pairs apart (separate_enclosures on ws.benches' `sets` sets): fa and fb are the chains
-// with the least and the largest polar offsets, T_min and b_lo the least head angle and b.
+// with the least and the largest polar offsets, T_min and b_lo the least head angle and b; with
+// `reach_known` the pairs ws.reach's offsets keep apart are not looked at; each pair proved more
+// than `apart_by` apart.
 StepProof separate_cell(const BenchSpec& spec, const Frame& fa, const Frame& fb, double T_min, double b_lo, size_t sets,
-                        SweptWorkspace& ws, const Rotating* rotating = nullptr) {
+                        SweptWorkspace& ws, const Rotating* rotating = nullptr, bool reach_known = true,
+                        double apart_by = 0.0) {
     // The turning from handle `rear` to handle `front` anywhere in the cell: the polar span
     // between them, at most its value in fb (every link's span is largest there), plus the
     // change of atan(theta) over it, at most the span over 1 + theta^2 at the front's least theta.
@@ -675,7 +718,8 @@ StepProof separate_cell(const BenchSpec& spec, const Frame& fa, const Frame& fb,
         return offsets_apart(fa.handles[j].place.u - fa.handles[i + 1].place.u,
                              fb.handles[j + 1].place.u - fb.handles[i].place.u, ws.reach[i], ws.reach[j], pitch_lo);
     };
-    return separate_enclosures(spec, fa, fb, sets, true, turning, apart, ws, 0.0, rotating);
+    if (!reach_known) return separate_enclosures(spec, fa, fb, sets, true, turning, kNotSeparately, ws, apart_by, rotating);
+    return separate_enclosures(spec, fa, fb, sets, true, turning, apart, ws, apart_by, rotating);
 }
 
 }  // namespace
@@ -688,7 +732,10 @@ StepProof prove_spiral_cell(const BenchSpec& spec, const Frame& fa, const Frame&
     return separate_cell(spec, fa, fb, T_min, b_lo, corners.size(), ws);
 }
 
-StepProof prove_spiral_cell_second_order(const BenchSpec& spec, const SpiralCell& cell, SweptWorkspace& ws) {
+namespace {
+
+StepProof cell_second_order(const BenchSpec& spec, const SpiralCell& cell, SweptWorkspace& ws, bool reach_known,
+                            double apart_by) {
     const Frame& least = cell.outer_hi;  // the least polar offsets: the largest head radius and b
     const Frame& most = cell.inner_lo;   // the largest: the least of both
     if (!shape_rate_bounds(least, most, cell.b_lo, cell.b_hi, ws.speed, ws.accel))
@@ -718,7 +765,14 @@ StepProof prove_spiral_cell_second_order(const BenchSpec& spec, const SpiralCell
     grow_boxes(2 * per_end, nb, h, ws);
     // The axes from the chains at b_hi, turned by their heads' angles into the head's frame.
     const Rotating rotating{h, per_end, {&cell.inner_hi, &cell.outer_hi}, {turn[0], turn[1]}};
-    return separate_cell(spec, least, most, cell.r_lo / cell.b_hi, cell.b_lo, 2 * per_end, ws, &rotating);
+    return separate_cell(spec, least, most, cell.r_lo / cell.b_hi, cell.b_lo, 2 * per_end, ws, &rotating, reach_known,
+                         apart_by);
+}
+
+}  // namespace
+
+StepProof prove_spiral_cell_second_order(const BenchSpec& spec, const SpiralCell& cell, SweptWorkspace& ws) {
+    return cell_second_order(spec, cell, ws, true, 0.0);
 }
 
 }  // namespace dragon::contact

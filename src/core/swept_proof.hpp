@@ -22,6 +22,12 @@
 //    bounds c'' in head travel), so along axes turning at a constant rate from one end's to the
 //    other's, two benches are at least their lesser end gap apart less what that allows
 //    (methods.md 6.1, Propositions 7-8). Tried first; the first order where it fails.
+// 6. On the plain spiral a step is a cell of one pitch (pitch_proof.hpp): the chains of its
+//    travels are those with the head at the radii between its ends'. Where the cell's bounds
+//    hold, the second order in the frame turned with the head (prove_spiral_cell_second_order,
+//    methods.md 6.1 Proposition 9, 8.1 P5-P6) proves it far more tightly than item 5 (its longest
+//    proved steps near Q2's contact are about three times as long), and needs no handle to move
+//    forward: there it is the only proof tried.
 #pragma once
 
 #include <array>
@@ -33,6 +39,7 @@
 #include "gentle_link.hpp"
 #include "dragon/chain.hpp"
 #include "dragon/path.hpp"
+#include "dragon/portable_math.hpp"
 #include "dragon/scenario.hpp"
 #include "speed_bound.hpp"
 #include "untouched_tail.hpp"
@@ -105,12 +112,13 @@ struct SweptWorkspace {
     std::vector<speed::HandleArc> arcs;
 };
 
-// Which enclosures prove a step that every handle moves forward over (swept_proof.cpp, item 3):
-// the first order (long steps), the second order (short steps near a contact), or either, the
-// second order tried first or the first (the same verdict: a search tries first the one that
-// proved its last step, since a failed try costs about as much as a proof). Tests choose one to
-// check each on its own.
-enum class Enclosures { either, either_first_order_first, first_order, second_order };
+// Which enclosures prove a step (items 3, 5 and 6 above): the first order (long steps),
+// the second order (short steps near a contact; on the spiral, in the frame turned with the head
+// where the step is a cell of one pitch, second_order_turned, else in the fixed frame), or
+// either, the second order tried first or the first (the same verdict: a search tries first the
+// one that proved its last step, since a failed try costs about as much as a proof). Tests
+// choose one to check each on its own: second_order is then the fixed frame's on the spiral too.
+enum class Enclosures { either, either_first_order_first, first_order, second_order, second_order_turned };
 
 // The enclosures a search tries first on the step after one `last` proved: the order that proved it.
 inline Enclosures tried_first_after(const StepProof& last) {
@@ -123,6 +131,19 @@ inline Enclosures tried_first_after(const StepProof& last) {
 // comes within apart_by of another (a lower bound on the least clearance over the step).
 StepProof prove_step(const Path& path, const BenchSpec& spec, const Frame& f0, const Frame& f1, SweptWorkspace& ws,
                      double apart_by = 0.0, Enclosures which = Enclosures::either);
+
+// rad: a link's polar span must stay below a quarter turn for the monotonicity of a cell's
+// bounds (pitch_proof.hpp), by a margin far above the rounding of the chain's angles (~1e-14).
+inline constexpr double kMaxCellSpan = 0.5 * std::numbers::pi - 1e-9;
+
+// Whether a link whose front handle is at angle theta_front (rad) on the plain spiral and rear
+// handle at theta_rear, in the chain of a cell with the largest spans and the least radii (its
+// least head radius and b), keeps the cell's bounds for b in [b_lo, b_hi] (m/rad): its span is
+// positive and below kMaxCellSpan, and its front's radius at b_lo exceeds b_hi tan(span / 2).
+inline bool link_keeps_cell_bounds(double theta_front, double theta_rear, double b_lo, double b_hi) {
+    const double alpha = theta_rear - theta_front;
+    return alpha > 0.0 && alpha < kMaxCellSpan && b_lo * theta_front > b_hi * math::tan(0.5 * alpha);
+}
 
 // A value of the plain spiral's parameters at which benches are enclosed: the head's angle T
 // (rad) and the spiral's b (pitch / 2 pi, m/rad). A handle at polar offset D from the head lies
