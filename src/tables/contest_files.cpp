@@ -50,7 +50,10 @@ void ContestFiles::finish(const ContestAnswers& answers, const std::string& summ
     if (format_) {
         const std::vector<PaperTable> tables = contest_tables(answers, language_);
         for (auto& [id, file] : tables_) {
-            const auto t = std::find_if(tables.begin(), tables.end(), [&](const PaperTable& p) { return p.id == id; });
+            // (The binding captured by name: clang before 16, the fuzzers' compiler, refuses a
+            // structured binding captured by a lambda's default capture.)
+            const auto t =
+                std::find_if(tables.begin(), tables.end(), [&key = id](const PaperTable& p) { return p.id == key; });
             write_text_file(*file, t != tables.end() ? format_table(*t, *format_) : "");
         }
     }

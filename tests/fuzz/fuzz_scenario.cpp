@@ -85,7 +85,8 @@ void fuzz_flags(const std::vector<std::string>& words) {
     CLI::App app{"fuzz"};
     CLI::App* sub = app.add_subcommand("simulate", "");
     cli::ScenarioFlags flags;
-    flags.add_to(sub, cli::ScenarioUse::either_path());  // simulate's: every flag, either path
+    cli::Registry reg;  // where the command would keep its reason for flags it does not take
+    flags.add_to(sub, cli::ScenarioUse::either_path(), reg);  // simulate's: every flag, either path
     std::vector<std::string> args = {"dragon", "simulate"};
     args.insert(args.end(), words.begin(), words.end());
     std::vector<char*> argv;
