@@ -37,11 +37,12 @@ const SweepSetup& setup() {
     static const SweepSetup s = [] {
         CLI::App app{"fuzz"};
         ScenarioFlags flags;
-        flags.add_to(app.add_subcommand("sweep", ""), ScenarioUse::both_paths(""));
+        Registry reg;
+        flags.add_to(app.add_subcommand("sweep", ""), ScenarioUse::both_paths(""), reg);
         SweepRequest req;
         req.vary = {"arc-ratio=1,1.5,2", "turn-pitch=1.5,1.7"};
         req.measures = {"turnaround", "max-speed"};
-        return make_setup(req, flags);
+        return make_setup(req, flags, nullptr);  // no run: the fuzzer reads rows, writes no outputs
     }();
     return s;
 }
