@@ -715,10 +715,10 @@ StepProof separate_cell(const BenchSpec& spec, const Frame& fa, const Frame& fb,
     };
     const double pitch_lo = kTwoPi * b_lo;
     const auto apart = [&](size_t i, size_t j) {
-        return offsets_apart(fa.handles[j].place.u - fa.handles[i + 1].place.u,
-                             fb.handles[j + 1].place.u - fb.handles[i].place.u, ws.reach[i], ws.reach[j], pitch_lo);
+        return reach_known && offsets_apart(fa.handles[j].place.u - fa.handles[i + 1].place.u,
+                                            fb.handles[j + 1].place.u - fb.handles[i].place.u, ws.reach[i], ws.reach[j],
+                                            pitch_lo);
     };
-    if (!reach_known) return separate_enclosures(spec, fa, fb, sets, true, turning, kNotSeparately, ws, apart_by, rotating);
     return separate_enclosures(spec, fa, fb, sets, true, turning, apart, ws, apart_by, rotating);
 }
 
